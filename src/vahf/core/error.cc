@@ -1,0 +1,34 @@
+#include "vahf/core/error.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace vahf {
+namespace {
+
+std::string Compose(const std::string& file, const std::string& where,
+                    const std::string& value, const std::string& rule) {
+  std::string out = file.empty() ? std::string("<input>") : file;
+  if (!where.empty()) out += ": " + where;
+  if (!value.empty()) out += " = " + value;
+  return out + ": " + rule;
+}
+
+}  // namespace
+
+InputError::InputError(std::string file, std::string where, std::string value,
+                       std::string rule)
+    : std::runtime_error(Compose(file, where, value, rule)),
+      file_(std::move(file)),
+      where_(std::move(where)),
+      value_(std::move(value)),
+      rule_(std::move(rule)) {}
+
+void CheckFailed(const char* condition, const char* file, int line,
+                 const std::string& message) {
+  std::fprintf(stderr, "vahf: internal error (a bug): %s:%d: check '%s' failed: %s\n",
+               file, line, condition, message.c_str());
+  std::abort();
+}
+
+}  // namespace vahf

@@ -1,0 +1,51 @@
+// Part geometry: a solid of revolution about the part frame's z axis, given by
+// a closed profile polygon in the (r, z) half-plane r >= 0 (rods, bores,
+// chamfers, sleeves, rings), or a box centred on the part frame origin.
+// Lengths in metres, in the part's own frame.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace vahf::geometry {
+
+struct ProfilePoint {
+  double r;  // radius, m, >= 0
+  double z;  // along the axis of revolution, m
+};
+
+struct RevolvedProfile {
+  // Vertices of a simple polygon, counter-clockwise in the (r, z) plane,
+  // without repeating the first vertex at the end.
+  std::vector<ProfilePoint> vertices;
+};
+
+struct Box {
+  Eigen::Vector3d size;  // full edge lengths along x, y, z, m
+};
+
+using Shape = std::variant<RevolvedProfile, Box>;
+
+// Checks a profile as written in a file: a list of points whose last equals its
+// first (closed), at least three distinct vertices, r >= 0, finite, no
+// repeated consecutive points, no self-crossing or folding edge, non-zero
+// area. On success returns the polygon without the closing repeat, oriented
+// counter-clockwise; on failure throws std::invalid_argument whose message
+// starts with "point K: " (or "profile: ") and states the rule.
+RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& closed_points);
+
+// Mass properties of a uniform solid, in the part frame.
+struct MassProperties {
+  double volume = 0.0;                  // m^3
+  Eigen::Vector3d centroid{0, 0, 0};    // m
+  // Inertia per unit density about the centroid, along the part axes
+  // (principal for both shapes): m^5, multiply by density for kg m^2.
+  Eigen::Vector3d inertia_per_density{0, 0, 0};
+  double bounding_radius = 0.0;  // radius of a sphere about the part origin holding it, m
+};
+
+MassProperties ComputeMassProperties(const Shape& shape);
+
+}  // namespace vahf::geometry

@@ -1,0 +1,47 @@
+// The one table of every model parameter: its place in the scene file
+// ("parameters"/GROUP/KEY), unit, rule, meaning and default. The loader reads
+// overrides through it, `vahf params` prints it, and docs/parameters.md is its
+// output, checked by a test.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "vahf/scene/parameters.h"
+
+namespace vahf::scene {
+
+enum class ParamRule {
+  kPositive,     // > 0
+  kNonNegative,  // >= 0
+  kUnit,         // in [0, 1]
+  kAngle,        // degrees in [0, 180]
+  kCount,        // integer >= 1
+  kChoice,       // one of `choices`
+};
+
+struct ParamSpec {
+  const char* group;
+  const char* key;
+  const char* unit;
+  ParamRule rule;
+  const char* meaning;
+  // Exactly one accessor is set, by the kind of value.
+  double& (*real)(Parameters&) = nullptr;
+  int& (*count)(Parameters&) = nullptr;
+  std::string& (*text)(Parameters&) = nullptr;
+  std::vector<std::string> choices = {};
+};
+
+const std::vector<ParamSpec>& ParameterTable();
+
+// The value of a parameter in `p`, as text.
+std::string ParamValueText(const ParamSpec& spec, const Parameters& p);
+
+// A Markdown table of every parameter with its default.
+std::string ParameterTableMarkdown();
+
+// Integrator names a scene may choose.
+const std::vector<std::string>& IntegratorNames();
+
+}  // namespace vahf::scene

@@ -1,0 +1,45 @@
+// Every model parameter a scene can set, grouped as in the scene file's
+// "parameters" object. Defaults are the member initialisers; docs/parameters.md
+// is generated from parameter_table.cc (`vahf params`) and tested against it.
+#pragma once
+
+#include <string>
+
+#include "vahf/contact/contact_params.h"
+#include "vahf/guidance/assembly_force.h"
+#include "vahf/human/factor_curves.h"
+#include "vahf/human/fatigue.h"
+#include "vahf/visibility/visibility_params.h"
+
+namespace vahf::scene {
+
+// The operator's control loop and how a trial ends (DESIGN.md decisions 1, 8).
+struct SimulationParams {
+  // Interval between the operator's decisions, s: human factors and the Eq. 5
+  // draws are evaluated at t_i = i * decision_interval and held in between.
+  // 0.1 s is of the order of the visual feedback delay of aimed hand movements
+  // (Keele and Posner, J. Exp. Psychol. 77 (1968) 155-158: 190-260 ms; Elliott
+  // et al., Psychol. Bull. 127 (2001) 342-357: about 100 ms).
+  double decision_interval = 0.1;
+  double time_limit = 30.0;              // s: status timeout past it
+  double completion_distance = 1e-3;     // d_th of Sec. 3.1, m
+  double completion_angle_deg = 2.0;     // angle to the target orientation, deg
+  double jam_time = 2.0;                 // s in contact without progress: jammed
+  double jam_progress = 1e-4;            // m of approach that counts as progress
+  std::string integrator = "RungeKuttaMerson";
+  double accuracy = 1e-4;                // integrator relative accuracy
+  double fixed_step = 1e-4;              // s, for integrator "FixedStep"
+};
+
+struct Parameters {
+  human::PlateauCurve sight = human::DefaultSightCurve();    // f, Fig. 3
+  human::PlateauCurve glance = human::DefaultGlanceCurve();  // g, Fig. 5
+  human::ReachCurve reach;                                   // r, Fig. 4
+  human::FatigueParams fatigue;
+  guidance::GuidanceParams guidance;
+  contact::ContactParams contact;
+  visibility::VisibilityParams visibility;
+  SimulationParams simulation;
+};
+
+}  // namespace vahf::scene

@@ -1,0 +1,54 @@
+// The validated scene: parts, the operator, every model parameter and the
+// assembly sequence. SI units (m, kg, s, N, rad in code, degrees in files);
+// world frame z up. See docs/scene-format.md.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "vahf/geometry/shape.h"
+#include "vahf/human/operator_model.h"
+#include "vahf/scene/parameters.h"
+
+namespace vahf::scene {
+
+enum class Role {
+  kBase,        // fixed, the part everything is assembled onto
+  kAssembling,  // moved by the operator, in the order of the sequence
+  kAssembled,   // already in place: fixed at its target pose
+};
+
+const char* RoleName(Role role);
+
+// A part frame's pose in the world: position of its origin, and orientation as
+// body-fixed X-Y-Z rotations (Simbody's BodyRotationSequence XYZ), degrees.
+struct Pose {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rotation_xyz_deg = Eigen::Vector3d::Zero();
+};
+
+struct Part {
+  std::string name;
+  Role role = Role::kBase;
+  geometry::Shape shape;
+  geometry::MassProperties mass_properties;  // computed from shape
+  double mass = 0.0;     // kg: given, or density * volume
+  double density = 0.0;  // kg/m^3: given, or mass / volume
+  double friction = 0.0; // Coulomb coefficient, dimensionless
+  Pose initial;          // for base and assembled parts: where they are
+  Pose target;           // the assembled pose (T_t); equals initial when fixed
+};
+
+struct Scene {
+  std::string file;  // where it was read from, for messages
+  std::string name;
+  std::string description;
+  Eigen::Vector3d gravity{0.0, 0.0, -9.80665};  // m/s^2, standard gravity (ISO 80000-3)
+  human::Operator op;
+  std::vector<Part> parts;
+  std::vector<int> sequence;  // indices into parts, in assembly order
+  Parameters params;
+};
+
+}  // namespace vahf::scene

@@ -1,0 +1,258 @@
+#include "vahf/scene/scene_loader.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+
+#include "vahf/core/error.h"
+#include "vahf/scene/json_reader.h"
+#include "vahf/scene/parameter_table.h"
+
+namespace vahf::scene {
+namespace {
+
+Pose ReadPose(const JsonNode& node) {
+  node.ExpectObject({"position", "rotation_xyz_deg"});
+  Pose pose;
+  pose.position = node.Required("position").Vector3();
+  if (auto rot = node.Optional("rotation_xyz_deg")) pose.rotation_xyz_deg = rot->Vector3();
+  return pose;
+}
+
+geometry::Shape ReadShape(const JsonNode& node) {
+  const std::string type = node.Required("type").Choice({"revolution", "box"});
+  if (type == "box") {
+    node.ExpectObject({"type", "size"});
+    const JsonNode size = node.Required("size");
+    const Eigen::Vector3d s = size.Vector3();
+    for (int k = 0; k < 3; ++k)
+      if (!(s[k] > 0))
+        size.Fail("a box needs three positive edge lengths (m); a zero or negative edge "
+                  "makes it degenerate");
+    return geometry::Box{s};
+  }
+  node.ExpectObject({"type", "profile"});
+  const JsonNode profile = node.Required("profile");
+  const std::size_t n = profile.ArraySize();
+  std::vector<geometry::ProfilePoint> points;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Vector2d rz = profile.At(k).Vector2();
+    points.push_back({rz.x(), rz.y()});
+  }
+  try {
+    return geometry::MakeRevolvedProfile(points);
+  } catch (const std::invalid_argument& e) {
+    // "point K: rule" names a vertex; anything else is about the whole profile.
+    const std::string message = e.what();
+    std::size_t k = 0;
+    if (std::sscanf(message.c_str(), "point %zu:", &k) == 1 && k < n) {
+      profile.At(k).Fail(message.substr(message.find(':') + 2));
+    }
+    profile.Fail(message.substr(message.find(':') + 2));
+  }
+}
+
+Role ReadRole(const JsonNode& node) {
+  const std::string s = node.Choice({"base", "assembling", "assembled"});
+  if (s == "base") return Role::kBase;
+  if (s == "assembling") return Role::kAssembling;
+  return Role::kAssembled;
+}
+
+Part ReadPart(const JsonNode& node) {
+  node.ExpectObject({"name", "role", "geometry", "density", "mass", "friction", "pose",
+                     "target", "description"});
+  Part part;
+  part.name = node.Required("name").String();
+  if (part.name.empty()) node.Required("name").Fail("a part needs a non-empty name");
+  part.role = ReadRole(node.Required("role"));
+  part.shape = ReadShape(node.Required("geometry"));
+  part.mass_properties = geometry::ComputeMassProperties(part.shape);
+  const double volume = part.mass_properties.volume;
+  const auto density = node.Optional("density");
+  const auto mass = node.Optional("mass");
+  if (density && mass)
+    node.Fail("give a part's 'density' or its 'mass', not both");
+  if (!density && !mass)
+    throw InputError(node.file(), node.path() + "/mass", "(missing)",
+                     "a part needs its 'mass' (kg) or its 'density' (kg/m^3)");
+  if (density) {
+    part.density = density->Positive();
+    part.mass = part.density * volume;
+  } else {
+    part.mass = mass->Positive();
+    part.density = part.mass / volume;
+  }
+  part.friction = node.Required("friction").NonNegative();
+  part.initial = ReadPose(node.Required("pose"));
+  if (part.role == Role::kAssembling) {
+    part.target = ReadPose(node.Required("target"));
+  } else {
+    if (auto target = node.Optional("target"))
+      target->Fail(std::string("a ") + RoleName(part.role) +
+                   " part is fixed where its 'pose' puts it; 'target' is only for "
+                   "assembling parts");
+    part.target = part.initial;
+  }
+  return part;
+}
+
+human::Operator ReadOperator(const JsonNode& node) {
+  node.ExpectObject({"height", "arm_length", "position", "facing_deg", "sex"});
+  human::Operator op;
+  // Stature of adults lies well inside 1.0-2.5 m (GB/T 10000-1988 1st-99th
+  // percentiles: 1.45-1.81 m); anything outside is a unit mistake.
+  op.height = node.Required("height").InRange(1.0, 2.5);
+  op.arm_length = node.Required("arm_length").InRange(0.3, 1.2);
+  op.position = node.Required("position").Vector2();
+  op.facing_deg = node.Required("facing_deg").InRange(-360.0, 360.0);
+  if (auto sex = node.Optional("sex")) op.sex = sex->Choice({"male", "female", "unspecified"});
+  return op;
+}
+
+void ReadParameters(const JsonNode& node, Parameters* p) {
+  std::vector<std::string> groups;
+  for (const ParamSpec& s : ParameterTable())
+    if (std::find(groups.begin(), groups.end(), s.group) == groups.end())
+      groups.push_back(s.group);
+  node.ExpectObject(groups);
+  for (const std::string& group : groups) {
+    const auto g = node.Optional(group);
+    if (!g) continue;
+    std::vector<std::string> keys;
+    for (const ParamSpec& s : ParameterTable())
+      if (group == s.group) keys.push_back(s.key);
+    g->ExpectObject(keys);
+    for (const ParamSpec& s : ParameterTable()) {
+      if (group != s.group) continue;
+      const auto v = g->Optional(s.key);
+      if (!v) continue;
+      switch (s.rule) {
+        case ParamRule::kPositive: s.real(*p) = v->Positive(); break;
+        case ParamRule::kNonNegative: s.real(*p) = v->NonNegative(); break;
+        case ParamRule::kUnit: s.real(*p) = v->InRange(0.0, 1.0); break;
+        case ParamRule::kAngle: s.real(*p) = v->InRange(0.0, 180.0); break;
+        case ParamRule::kCount:
+          s.count(*p) = static_cast<int>(v->Integer(1, 1 << 16));
+          break;
+        case ParamRule::kChoice: s.text(*p) = v->Choice(s.choices); break;
+      }
+    }
+  }
+  // Rules that tie parameters together.
+  for (const char* group : {"sight", "glance"}) {
+    const human::PlateauCurve& c = std::string(group) == "sight" ? p->sight : p->glance;
+    const std::string violation = c.Violation();
+    if (!violation.empty()) {
+      const auto g = node.Optional(group);
+      (g ? *g : node).Fail(violation);
+    }
+  }
+}
+
+}  // namespace
+
+const char* RoleName(Role role) {
+  switch (role) {
+    case Role::kBase: return "base";
+    case Role::kAssembling: return "assembling";
+    case Role::kAssembled: return "assembled";
+  }
+  return "?";
+}
+
+Scene ParseScene(const nlohmann::json& document, const std::string& file) {
+  const JsonNode root(document, file);
+  root.ExpectObject({"format", "name", "description", "gravity", "operator", "parts",
+                     "sequence", "parameters"});
+  const JsonNode format = root.Required("format");
+  if (format.String() != kSceneFormat)
+    format.Fail(std::string("a scene file declares \"format\": \"") + kSceneFormat + "\"");
+  Scene scene;
+  scene.file = file;
+  scene.name = root.Required("name").String();
+  if (auto d = root.Optional("description")) scene.description = d->String();
+  if (auto g = root.Optional("gravity")) scene.gravity = g->Vector3();
+  scene.op = ReadOperator(root.Required("operator"));
+
+  const JsonNode parts = root.Required("parts");
+  const std::size_t n = parts.ArraySize(1);
+  std::map<std::string, int> index_of;
+  for (std::size_t k = 0; k < n; ++k) {
+    Part part = ReadPart(parts.At(k));
+    if (!index_of.emplace(part.name, static_cast<int>(k)).second)
+      parts.At(k).Required("name").Fail("part names must be unique");
+    scene.parts.push_back(std::move(part));
+  }
+
+  const JsonNode sequence = root.Required("sequence");
+  const std::size_t m = sequence.ArraySize();
+  if (m == 0) sequence.Fail("the assembly sequence is empty: name at least one part");
+  for (std::size_t k = 0; k < m; ++k) {
+    const JsonNode item = sequence.At(k);
+    const std::string name = item.String();
+    const auto it = index_of.find(name);
+    if (it == index_of.end()) item.Fail("names no part of this scene");
+    if (scene.parts[it->second].role != Role::kAssembling)
+      item.Fail(std::string("names a ") + RoleName(scene.parts[it->second].role) +
+                " part; the sequence lists assembling parts");
+    if (std::find(scene.sequence.begin(), scene.sequence.end(), it->second) !=
+        scene.sequence.end())
+      item.Fail("names a part twice");
+    scene.sequence.push_back(it->second);
+  }
+  for (std::size_t k = 0; k < n; ++k)
+    if (scene.parts[k].role == Role::kAssembling &&
+        std::find(scene.sequence.begin(), scene.sequence.end(), static_cast<int>(k)) ==
+            scene.sequence.end())
+      parts.At(k).Required("role").Fail("an assembling part must appear in the sequence");
+
+  if (auto params = root.Optional("parameters")) ReadParameters(*params, &scene.params);
+  const std::string reach =
+      scene.params.reach.Violation(scene.op.arm_length, scene.op.height);
+  if (!reach.empty()) {
+    const JsonNode op = root.Required("operator");
+    throw InputError(file, op.path(),
+                     fmt::format("height {} m, arm_length {} m", scene.op.height,
+                                 scene.op.arm_length),
+                     reach);
+  }
+  return scene;
+}
+
+Scene LoadScene(const std::string& path) { return ParseScene(ReadJsonFile(path), path); }
+
+std::string DescribeScene(const Scene& s) {
+  std::string out = fmt::format("scene '{}' ({})\n", s.name, s.file);
+  if (!s.description.empty()) out += "  " + s.description + "\n";
+  const human::ReachCurve::Breakpoints d =
+      s.params.reach.BreakpointsFor(s.op.arm_length, s.op.height);
+  out += fmt::format(
+      "operator: {}, height {} m, arm length {} m, at ({}, {}) m facing {} deg; "
+      "reach D1 {:.3f} m, D2 {:.3f} m, D3 {:.3f} m\n",
+      s.op.sex, s.op.height, s.op.arm_length, s.op.position.x(), s.op.position.y(),
+      s.op.facing_deg, d.d1, d.d2, d.d3);
+  out += fmt::format("gravity: ({}, {}, {}) m/s^2\n", s.gravity.x(), s.gravity.y(),
+                     s.gravity.z());
+  out += fmt::format("parts ({}):\n", s.parts.size());
+  for (const Part& p : s.parts) {
+    const bool revolved = std::holds_alternative<geometry::RevolvedProfile>(p.shape);
+    out += fmt::format(
+        "  {:<14} {:<10} {:<10} mass {:.4g} kg, volume {:.4g} m^3, density {:.4g} kg/m^3, "
+        "friction {}\n",
+        p.name, RoleName(p.role), revolved ? "revolution" : "box", p.mass,
+        p.mass_properties.volume, p.density, p.friction);
+  }
+  out += "sequence:";
+  for (int i : s.sequence) out += " " + s.parts[i].name;
+  out += "\nparameters (defaults unless the scene sets them):\n";
+  for (const ParamSpec& spec : ParameterTable())
+    out += fmt::format("  {}/{} = {} {}\n", spec.group, spec.key,
+                       ParamValueText(spec, s.params), spec.unit);
+  return out;
+}
+
+}  // namespace vahf::scene

@@ -1,0 +1,22 @@
+// Loads and validates a scene file (docs/scene-format.md). Any violation is one
+// vahf::InputError naming the file, the JSON path, the value and the rule.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "vahf/scene/scene.h"
+
+namespace vahf::scene {
+
+inline constexpr const char* kSceneFormat = "vahf-scene/1";
+
+Scene LoadScene(const std::string& path);
+
+// Validates an already parsed document; `file` names it in messages.
+Scene ParseScene(const nlohmann::json& document, const std::string& file);
+
+// A human-readable account of what a scene holds (`vahf check`).
+std::string DescribeScene(const Scene& scene);
+
+}  // namespace vahf::scene
