@@ -1,0 +1,114 @@
+// Eq. 5 (estimated target), E_i, Eq. 7 and Eq. 8. Deterministic cases by hand;
+// the statistical ones (N = 100000 draws, bounds of 5 standard errors) check
+// the mean of T' and the anisotropy of E_i.
+#include "vahf/guidance/assembly_force.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace vahf::guidance {
+namespace {
+
+const Eigen::Vector3d kTarget(0.0, 0.0, 0.9);
+const Eigen::Vector3d kPosition(0.1, -0.2, 1.1);
+
+TEST(EstimatedTarget, Eq5ByHand) {
+  const Eigen::Vector3d none = Eigen::Vector3d::Zero();
+  // c = 0: the operator aims at the target itself.
+  EXPECT_EQ(EstimatedTarget(kTarget, kPosition, 0.3, 0.9, Eigen::Vector3d::Zero(), none),
+            kTarget);
+  // c = 1 and lambda_c = Psi_c: T' is the current position.
+  EXPECT_NEAR((EstimatedTarget(kTarget, kPosition, 0.5, 0.5, Eigen::Vector3d::Ones(), none) -
+               kPosition).norm(), 0.0, 1e-15);
+  // Componentwise c, and E_i adds.
+  const Eigen::Vector3d t = EstimatedTarget(kTarget, kPosition, 0.2, 0.8,
+                                            Eigen::Vector3d(1.0, 0.5, 0.0),
+                                            Eigen::Vector3d(0.01, 0, 0));
+  EXPECT_NEAR(t.x(), 0.25 * 0.1 + 0.01, 1e-15);
+  EXPECT_NEAR(t.y(), 0.25 * 0.5 * -0.2, 1e-15);
+  EXPECT_NEAR(t.z(), 0.9, 1e-15);
+}
+
+TEST(EstimatedTargetDeathTest, PsiZeroIsABug) {
+  EXPECT_DEATH(EstimatedTarget(kTarget, kPosition, 0.3, 0.0, Eigen::Vector3d::Zero(),
+                               Eigen::Vector3d::Zero()),
+               "divides by Psi_c");
+}
+
+TEST(DrawEstimatedTarget, MeanIsHalfwayScaledByLambdaOverPsi) {
+  // E[c] = 1/2 and E[E_i] = 0: E[T'] = T_t + lambda_c / Psi_c / 2 (T - T_t).
+  const GuidanceParams params;
+  const double lambda = 0.6, psi = 0.8;
+  const int n = 100000;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int i = 0; i < n; ++i)
+    mean += DrawEstimatedTarget(params, {17, static_cast<std::uint64_t>(i)}, 0, kTarget,
+                                kPosition, Eigen::Vector3d(0, 1, -1), 0.5, lambda, psi);
+  mean /= n;
+  const Eigen::Vector3d expected = kTarget + lambda / psi / 2 * (kPosition - kTarget);
+  for (int k = 0; k < 3; ++k) {
+    // sd of c_k (x_k - x_t) lambda/psi is |x_k - x_t| lambda/psi / sqrt(12); plus E_i.
+    const double sd = std::abs(kPosition[k] - kTarget[k]) * lambda / psi / std::sqrt(12.0) +
+                      0.5 * params.vision_sigma_depth;
+    EXPECT_NEAR(mean[k], expected[k], 5 * sd / std::sqrt(n)) << "axis " << k;
+  }
+}
+
+TEST(DrawEstimatedTarget, KeyedByTrialAndDecision) {
+  const GuidanceParams params;
+  const auto draw = [&](std::uint64_t trial, std::uint64_t decision) {
+    return DrawEstimatedTarget(params, {1, trial}, decision, kTarget, kPosition,
+                               Eigen::Vector3d(0, 1, 0), 0.4, 0.3, 0.9);
+  };
+  EXPECT_EQ(draw(3, 5), draw(3, 5));
+  EXPECT_NE(draw(3, 5), draw(3, 6));
+  EXPECT_NE(draw(3, 5), draw(4, 5));
+}
+
+TEST(VisionError, DeeperAlongTheSightLine) {
+  const Eigen::Vector3d sight = Eigen::Vector3d(0, 1, -1).normalized();
+  const Eigen::Vector3d across(1, 0, 0);
+  const double eta = 0.8, sd = 0.02, sl = 0.004;
+  const int n = 100000;
+  double along2 = 0, across2 = 0;
+  rng::Stream s({2, 0}, 0, rng::Purpose::kTest);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d z(s.Normal(), s.Normal(), s.Normal());
+    const Eigen::Vector3d e = VisionError(eta, sight, sd, sl, z);
+    along2 += std::pow(e.dot(sight), 2);
+    across2 += std::pow(e.dot(across), 2);
+  }
+  along2 /= n, across2 /= n;
+  const double v_along = std::pow(eta * sd, 2), v_across = std::pow(eta * sl, 2);
+  EXPECT_NEAR(along2, v_along, 5 * v_along * std::sqrt(2.0 / n));
+  EXPECT_NEAR(across2, v_across, 5 * v_across * std::sqrt(2.0 / n));
+  EXPECT_EQ(VisionError(0.0, sight, sd, sl, Eigen::Vector3d(1, 1, 1)), Eigen::Vector3d::Zero());
+}
+
+TEST(FreeAssemblyForce, Eq7) {
+  const Eigen::Vector3d tp(0.0, 0.0, 1.0);
+  const Eigen::Vector3d f = FreeAssemblyForce(400.0, 0.9, kPosition, tp);
+  EXPECT_NEAR(f.norm(), 400.0 * 0.9 * (tp - kPosition).norm(), 1e-12);  // kappa Psi D_i
+  EXPECT_NEAR(f.normalized().dot((tp - kPosition).normalized()), 1.0, 1e-15);
+}
+
+TEST(ContactAssemblyForce, Eq8PerpendicularToContactPlusFriction) {
+  const Eigen::Vector3d tp = kPosition + Eigen::Vector3d(0.03, 0.0, -0.04);
+  const Eigen::Vector3d contact(0.0, 0.0, 5.0);  // contact pushes up
+  const Eigen::Vector3d f = ContactAssemblyForce(400.0, 0.9, kPosition, tp, contact, 2.0);
+  EXPECT_NEAR(f.dot(contact), 0.0, 1e-12);
+  EXPECT_NEAR(f.norm(), 400.0 * 0.9 * 0.03 + 2.0, 1e-12);
+  EXPECT_GT(f.x(), 0.0);
+  // T_i T' along the contact normal leaves no direction to push in.
+  EXPECT_EQ(ContactAssemblyForce(400.0, 0.9, kPosition, kPosition + Eigen::Vector3d(0, 0, -0.1),
+                                 contact, 2.0),
+            Eigen::Vector3d::Zero());
+  // No contact force: Eq. 8 is Eq. 7 plus friction along the same direction.
+  const Eigen::Vector3d free = ContactAssemblyForce(400.0, 0.9, kPosition, tp,
+                                                   Eigen::Vector3d::Zero(), 0.0);
+  EXPECT_NEAR((free - FreeAssemblyForce(400.0, 0.9, kPosition, tp)).norm(), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace vahf::guidance
