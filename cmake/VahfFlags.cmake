@@ -1,10 +1,11 @@
 # Compiler flags for bit-for-bit reproducible floating point.
 #
-# - no -ffast-math / -Ofast: they let the compiler reassociate and drop NaN
-#   checks, which changes results between builds;
+# - no fast-math of any kind (-fno-fast-math is explicit): it lets the
+#   compiler reassociate and drop NaN checks, which changes results between builds;
 # - -ffp-contract=off: no fused multiply-add contraction, so a*b+c rounds the
 #   same whatever the optimiser decides;
-# - baseline x86-64 (no -march=native): the same instructions on every machine.
+# - baseline x86-64, never tuned to the build host's CPU: the same
+#   instructions on every machine.
 add_library(vahf_flags INTERFACE)
 target_compile_options(vahf_flags INTERFACE
   -ffp-contract=off -fno-fast-math -Wall -Wextra -Wpedantic -Wshadow

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -32,6 +33,19 @@ std::string TypeName(const nlohmann::json& j) {
   return j.type_name();
 }
 
+// Compact JSON for a message, shortened; non-finite numbers (which JSON text
+// cannot hold but a document built in code can) are shown as nan or inf
+// rather than nlohmann's "null".
+std::string Shown(const nlohmann::json& j) {
+  if (j.is_number_float() && !std::isfinite(j.get<double>())) {
+    const double v = j.get<double>();
+    return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
+  }
+  std::string text = j.dump();
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  return text;
+}
+
 std::string Joined(const std::vector<std::string>& items) {
   std::string out;
   for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
@@ -41,6 +55,8 @@ std::string Joined(const std::vector<std::string>& items) {
 }  // namespace
 
 nlohmann::json ReadJsonFile(const std::string& path) {
+  if (std::filesystem::is_directory(path))
+    throw InputError(path, "", "", "is a directory, not a JSON file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "", "cannot open the file for reading");
   std::stringstream buffer;
@@ -48,10 +64,13 @@ nlohmann::json ReadJsonFile(const std::string& path) {
   try {
     return nlohmann::json::parse(buffer.str());
   } catch (const nlohmann::json::parse_error& e) {
-    // e.what() carries "line L, column C"; NaN and Infinity land here too.
+    // e.what() carries "line L, column C". NaN and Infinity land here as an
+    // invalid literal: say why, since other tools write them.
+    const std::string what = e.what();
+    const bool literal = what.find("invalid literal") != std::string::npos;
     throw InputError(path, "", "",
-                     fmt::format("not valid JSON (NaN and Infinity are not JSON numbers): {}",
-                                 e.what()));
+                     fmt::format("not valid JSON: {}{}", what,
+                                 literal ? " (NaN and Infinity are not JSON numbers)" : ""));
   } catch (const nlohmann::json::exception& e) {
     throw InputError(path, "", "", fmt::format("not valid JSON: {}", e.what()));
   }
@@ -70,11 +89,7 @@ std::string PointerToken(const std::string& key) {
 JsonNode::JsonNode(const nlohmann::json& json, const std::string& file, std::string path)
     : json_(&json), file_(&file), path_(std::move(path)) {}
 
-std::string JsonNode::ValueText() const {
-  std::string text = json_->dump();
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return text;
-}
+std::string JsonNode::ValueText() const { return Shown(*json_); }
 
 void JsonNode::Fail(const std::string& rule) const {
   throw InputError(*file_, path_.empty() ? "/" : path_, ValueText(), rule);
@@ -96,7 +111,7 @@ void JsonNode::ExpectObject(const std::vector<std::string>& allowed) const {
     }
     const std::string hint =
         nearest.empty() ? "known keys: " + Joined(allowed) : "did you mean '" + nearest + "'?";
-    throw InputError(*file_, path_ + "/" + PointerToken(item.key()), item.value().dump(),
+    throw InputError(*file_, path_ + "/" + PointerToken(item.key()), Shown(item.value()),
                      "unknown key '" + item.key() + "' (" + hint + ")");
   }
 }

@@ -1,0 +1,186 @@
+#!/usr/bin/env bash
+# Tests of the vahf command's exit status and output: `check` on a valid scene,
+# a malformed scene (one-line error naming the file, JSON pointer and rule,
+# exit 2), a missing file and invalid JSON (exit 2); `reference`; `--help`; and
+# bad options (exit 2).
+#
+# Usage: cli_test.sh VAHF_EXECUTABLE REPO_ROOT
+set -uo pipefail
+
+if [[ $# -ne 2 ]]; then
+  echo "usage: $0 VAHF_EXECUTABLE REPO_ROOT" >&2
+  exit 2
+fi
+vahf=$1
+root=$2
+if [[ ! -x "$vahf" ]]; then
+  echo "$0: $vahf is not an executable" >&2
+  exit 2
+fi
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/vahf_cli_test.XXXXXX") || exit 1
+trap 'rm -rf -- "$tmp"' EXIT
+
+passed=0
+failed=0
+out=$tmp/stdout
+err=$tmp/stderr
+
+pass() {
+  passed=$((passed + 1))
+  echo "PASS: $1"
+}
+
+fail() {
+  failed=$((failed + 1))
+  echo "FAIL: $1"
+  echo "  --- stdout:"
+  sed 's/^/  | /' "$out"
+  echo "  --- stderr:"
+  sed 's/^/  | /' "$err"
+}
+
+# run ARGS...: runs vahf, leaving its output in $out and $err and its exit
+# status in $status.
+run() {
+  "$vahf" "$@" >"$out" 2>"$err"
+  status=$?
+}
+
+# expect_status NAME WANT: checks the last run's exit status.
+expect_status() {
+  if [[ $status -eq $2 ]]; then
+    pass "$1: exit status $2"
+  else
+    fail "$1: exit status $status, want $2"
+  fi
+}
+
+# expect_in NAME FILE TEXT: FILE ($out or $err) contains TEXT literally.
+expect_in() {
+  if grep -qF -- "$3" "$2"; then
+    pass "$1: $(basename "$2") has '$3'"
+  else
+    fail "$1: $(basename "$2") lacks '$3'"
+  fi
+}
+
+# expect_lines NAME FILE N: FILE has exactly N lines.
+expect_lines() {
+  local n
+  n=$(wc -l <"$2")
+  if [[ $n -eq $3 ]]; then
+    pass "$1: $(basename "$2") has $3 line(s)"
+  else
+    fail "$1: $(basename "$2") has $n lines, want $3"
+  fi
+}
+
+# --- check: the example scene is valid.
+scene=$root/experiments/scenes/peg_in_hole.json
+run check "$scene"
+expect_status "check valid scene" 0
+expect_in "check valid scene" "$out" "valid scene"
+expect_lines "check valid scene" "$err" 0
+
+# --- check: a scene whose peg has a negative mass.
+bad=$tmp/negative_mass.json
+cat >"$bad" <<'EOF'
+{
+  "format": "vahf-scene/1",
+  "name": "negative_mass",
+  "operator": {"height": 1.75, "arm_length": 0.74, "position": [0.0, -0.45],
+               "facing_deg": 90},
+  "parts": [
+    {
+      "name": "bore",
+      "role": "base",
+      "geometry": {"type": "revolution", "profile": [
+        [0.0, -0.05], [0.03, -0.05], [0.03, 0.0], [0.01, 0.0], [0.01, -0.04],
+        [0.0, -0.04], [0.0, -0.05]]},
+      "density": 7850,
+      "friction": 0.15,
+      "pose": {"position": [0.0, 0.0, 0.95]}
+    },
+    {
+      "name": "peg",
+      "role": "assembling",
+      "geometry": {"type": "revolution", "profile": [
+        [0.0, 0.0], [0.0095, 0.0], [0.0095, 0.05], [0.0, 0.05], [0.0, 0.0]]},
+      "mass": -0.1,
+      "friction": 0.15,
+      "pose": {"position": [0.0, 0.0, 0.97]},
+      "target": {"position": [0.0, 0.0, 0.91]}
+    }
+  ],
+  "sequence": ["peg"]
+}
+EOF
+run check "$bad"
+expect_status "check negative mass" 2
+expect_lines "check negative mass" "$err" 1
+expect_in "check negative mass" "$err" "$bad"
+expect_in "check negative mass" "$err" "/parts/1/mass"
+expect_in "check negative mass" "$err" "-0.1"
+expect_in "check negative mass" "$err" "must be > 0"
+if [[ -s $out ]]; then
+  fail "check negative mass: prints nothing on stdout"
+else
+  pass "check negative mass: prints nothing on stdout"
+fi
+
+# --- check: a file that does not exist.
+missing=$tmp/no_such_scene.json
+run check "$missing"
+expect_status "check missing file" 2
+expect_lines "check missing file" "$err" 1
+expect_in "check missing file" "$err" "$missing"
+
+# --- check: a file that is not JSON (NaN is not a JSON number).
+nan=$tmp/nan.json
+printf '{"format": NaN}\n' >"$nan"
+run check "$nan"
+expect_status "check invalid JSON" 2
+expect_lines "check invalid JSON" "$err" 1
+expect_in "check invalid JSON" "$err" "$nan"
+expect_in "check invalid JSON" "$err" "not valid JSON"
+
+# --- check: an experiment file naming the example scene.
+experiment=$tmp/experiment.json
+cat >"$experiment" <<EOF
+{"format": "vahf-experiment/1", "name": "cli_test", "kind": "table1",
+ "scene": "$scene", "seed": 3, "trials": 2}
+EOF
+run check "$experiment"
+expect_status "check experiment" 0
+expect_in "check experiment" "$out" "valid experiment"
+
+# --- check without a file is a usage error.
+run check
+expect_status "check without FILE" 2
+
+# --- reference: the paper's Table 1.
+run reference --table "$root/reference/paper/table1.json"
+expect_status "reference --table" 0
+if [[ -s $out ]]; then
+  pass "reference --table: prints the table check"
+else
+  fail "reference --table: prints nothing"
+fi
+
+# --- help and bad options.
+run --help
+expect_status "--help" 0
+expect_in "--help" "$out" "check"
+
+run --no-such-option
+expect_status "unknown option" 2
+
+run check "$scene" --no-such-option
+expect_status "unknown option after a subcommand" 2
+
+run no-such-command
+expect_status "unknown subcommand" 2
+
+echo "$passed passed, $failed failed"
+[[ $failed -eq 0 ]]
