@@ -11,6 +11,8 @@
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
+#include "vahf/sim/trace_csv.h"
+#include "vahf/sim/trial.h"
 
 namespace {
 
@@ -36,6 +38,34 @@ int Reference(const std::string& table_path) {
   return 0;
 }
 
+struct TrialArgs {
+  std::string scene;
+  std::uint64_t seed = 1;
+  std::uint64_t trial = 0;
+  int position = 0;
+  std::string integrator;
+  double accuracy = 0;
+  std::string trace;
+};
+
+int Trial(const TrialArgs& a) {
+  vahf::scene::Scene scene = vahf::scene::LoadScene(a.scene);
+  if (!a.integrator.empty()) scene.params.simulation.integrator = a.integrator;
+  if (a.accuracy > 0) scene.params.simulation.accuracy = a.accuracy;
+  if (a.position >= static_cast<int>(scene.sequence.size()))
+    throw vahf::InputError("--position", "", std::to_string(a.position),
+                           "the scene's sequence has " +
+                               std::to_string(scene.sequence.size()) + " parts");
+  vahf::sim::TrialOptions options;
+  options.sequence_position = a.position;
+  options.record_trace = !a.trace.empty();
+  const vahf::sim::TrialResult r = vahf::sim::RunTrial(scene, {a.seed, a.trial}, options);
+  if (!a.trace.empty()) vahf::sim::WriteFileAtomically(a.trace, vahf::sim::TraceCsv(r));
+  std::fputs(r.BriefReport().c_str(), stdout);
+  if (!a.trace.empty()) std::printf("trace: %s (%zu rows)\n", a.trace.c_str(), r.trace.size());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,6 +84,26 @@ int main(int argc, char** argv) {
   CLI::App* reference = app.add_subcommand(
       "reference", "Check the paper's Table 1 against Eqs. 2, 3 and 6, side by side");
   reference->add_option("--table", table_path, "Table 1 as JSON")->capture_default_str();
+
+  TrialArgs trial_args;
+  CLI::App* trial = app.add_subcommand(
+      "trial", "Run one seeded trial of a scene's assembling part and print its summary");
+  trial->add_option("SCENE", trial_args.scene, "scene JSON file")->required();
+  trial->add_option("--seed", trial_args.seed, "experiment seed (the stream key)")
+      ->required();
+  trial->add_option("--trial", trial_args.trial, "trial index (the stream key)")
+      ->capture_default_str();
+  trial->add_option("--position", trial_args.position,
+                    "which entry of the scene's sequence to assemble (0 = first)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  trial->add_option("--integrator", trial_args.integrator,
+                    "override simulation/integrator")
+      ->check(CLI::IsMember(vahf::scene::IntegratorNames()));
+  trial->add_option("--accuracy", trial_args.accuracy, "override simulation/accuracy")
+      ->check(CLI::PositiveNumber);
+  trial->add_option("--trace", trial_args.trace,
+                    "write one CSV row per decision instant to this file");
 
   CLI::App* params = app.add_subcommand(
       "params", "Print every model parameter with its unit, rule and default (Markdown)");
@@ -74,6 +124,7 @@ int main(int argc, char** argv) {
   try {
     if (*check) return Check(check_path);
     if (*reference) return Reference(table_path);
+    if (*trial) return Trial(trial_args);
     if (*params) {
       std::fputs(vahf::scene::ParameterTableMarkdown().c_str(), stdout);
       return 0;

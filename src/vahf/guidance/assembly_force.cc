@@ -72,4 +72,20 @@ Eigen::Vector3d ContactAssemblyForce(double kappa, double psi,
   return (kappa * psi * size + friction) * (direction / size);
 }
 
+Eigen::Vector3d ImpedanceForce(const GuidanceParams& params, double psi, double mass,
+                               const Eigen::Vector3d& position,
+                               const Eigen::Vector3d& estimated_target,
+                               const Eigen::Vector3d& velocity, const HeldContact& contact,
+                               const Eigen::Vector3d& weight, double fade_length) {
+  const double b = 2.0 * params.damping_ratio * std::sqrt(params.kappa * psi * mass);
+  Eigen::Vector3d to_target = estimated_target - position;
+  Eigen::Vector3d push = -params.weight_support * weight;
+  if (contact.in_contact) {
+    to_target -= to_target.dot(contact.normal) * contact.normal;
+    push = contact.friction * to_target /
+           std::sqrt(to_target.squaredNorm() + fade_length * fade_length);
+  }
+  return params.kappa * psi * to_target + push - b * velocity;
+}
+
 }  // namespace vahf::guidance

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
 
 #include "vahf/rng/stream.h"
 
@@ -12,9 +13,27 @@ struct GuidanceParams {
   // kappa of Eqs. 7-8, N/m. The paper defers it to its ref. [14], which is not
   // available; a calibration target (issue: calibrate).
   double kappa = 400.0;
-  // Damping b of F = kappa Psi (T' - T) - b v, N s/m (DESIGN.md decision 2:
-  // an extension, without which the part oscillates about T').
-  double damping = 40.0;
+  // "operator": the assembly force and torque act; "none": they do not (a
+  // part left to gravity and contact, as in drop and slide tests).
+  std::string mode = "operator";
+  // Damping of F = kappa Psi (T' - T) - b v as a ratio of critical damping,
+  // b = 2 zeta sqrt(kappa Psi m) (DESIGN.md decision 2: an extension, without
+  // which the part oscillates about T'). 1: a reach without overshoot.
+  double damping_ratio = 1.0;
+  // Fraction of the part's weight the operator carries while it moves freely:
+  // a held part does not sag (feedforward gravity compensation of reaching,
+  // e.g. Wolpert and Ghahramani, Nat. Neurosci. 3 (2000) 1212-1217). In
+  // contact the operator only pushes along Eq. 8 and the weight acts.
+  double weight_support = 1.0;
+  // The assembly torque turns the part toward its held target orientation as
+  // a rotational impedance scaled by the part's inertia I:
+  // tau = I (Psi w^2 theta - 2 zeta w omega), theta the rotation vector to the
+  // held orientation (DESIGN.md decision 3). w in rad/s.
+  double torque_frequency = 20.0;
+  double torque_damping_ratio = 1.0;
+  // Scale of the random error of the held orientation at eta = 1, degrees per
+  // axis (perturbed like Eq. 5's E_i, scaled by eta).
+  double torque_sigma_deg = 2.0;
   // Scales of the vision error E_i, metres at eta = 1 (DESIGN.md decision 4):
   // along the line of sight (depth is hardest to judge) and across it.
   double vision_sigma_depth = 0.010;
@@ -58,5 +77,25 @@ Eigen::Vector3d ContactAssemblyForce(double kappa, double psi,
                                      const Eigen::Vector3d& estimated_target,
                                      const Eigen::Vector3d& contact_force,
                                      double friction);
+
+// The force the operator applies between two decisions: an impedance toward
+// the held estimate T' (DESIGN.md decision 2) whose value at the decision
+// instant, at rest, is Eq. 7 (free) or Eq. 8 (in contact, with the contact
+// normal and friction held from the decision instant):
+//   free:       kappa Psi (T' - T) - b v - s W
+//   in contact: kappa Psi P(T' - T) + friction P(T' - T) / sqrt(|P(T' - T)|^2 + e^2) - b v
+// with P = I - n n^T, b = 2 zeta sqrt(kappa Psi m), W = m g the part's weight
+// (N, world) and s the weight support. The friction term fades
+// within e (m) of T' so the force stays continuous where P(T' - T) turns.
+struct HeldContact {
+  bool in_contact = false;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, of the contact force
+  double friction = 0.0;                               // N
+};
+Eigen::Vector3d ImpedanceForce(const GuidanceParams& params, double psi, double mass,
+                               const Eigen::Vector3d& position,
+                               const Eigen::Vector3d& estimated_target,
+                               const Eigen::Vector3d& velocity, const HeldContact& contact,
+                               const Eigen::Vector3d& weight, double fade_length);
 
 }  // namespace vahf::guidance

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,20 @@ const char* RoleName(Role role);
 struct Pose {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   Eigen::Vector3d rotation_xyz_deg = Eigen::Vector3d::Zero();
+
+  Eigen::Matrix3d Rotation() const {
+    const Eigen::Vector3d a = rotation_xyz_deg * (M_PI / 180.0);
+    return (Eigen::AngleAxisd(a.x(), Eigen::Vector3d::UnitX()) *
+            Eigen::AngleAxisd(a.y(), Eigen::Vector3d::UnitY()) *
+            Eigen::AngleAxisd(a.z(), Eigen::Vector3d::UnitZ()))
+        .toRotationMatrix();
+  }
+  Eigen::Isometry3d Transform() const {
+    Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
+    x.linear() = Rotation();
+    x.translation() = position;
+    return x;
+  }
 };
 
 struct Part {
@@ -38,6 +54,9 @@ struct Part {
   double friction = 0.0; // Coulomb coefficient, dimensionless
   Pose initial;          // for base and assembled parts: where they are
   Pose target;           // the assembled pose (T_t); equals initial when fixed
+  // Where the operator's hand applies the assembly force, part frame, m
+  // (default: the centroid).
+  Eigen::Vector3d grasp = Eigen::Vector3d::Zero();
 };
 
 struct Scene {

@@ -64,7 +64,7 @@ Role ReadRole(const JsonNode& node) {
 
 Part ReadPart(const JsonNode& node) {
   node.ExpectObject({"name", "role", "geometry", "density", "mass", "friction", "pose",
-                     "target", "description"});
+                     "target", "grasp", "description"});
   Part part;
   part.name = node.Required("name").String();
   if (part.name.empty()) node.Required("name").Fail("a part needs a non-empty name");
@@ -87,6 +87,8 @@ Part ReadPart(const JsonNode& node) {
     part.density = part.mass / volume;
   }
   part.friction = node.Required("friction").NonNegative();
+  part.grasp = part.mass_properties.centroid;
+  if (auto grasp = node.Optional("grasp")) part.grasp = grasp->Vector3();
   part.initial = ReadPose(node.Required("pose"));
   if (part.role == Role::kAssembling) {
     part.target = ReadPose(node.Required("target"));

@@ -1,0 +1,71 @@
+#include "vahf/contact/contact_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vahf::contact {
+namespace {
+
+double PairFriction(double a, double b) { return a + b > 0 ? 2 * a * b / (a + b) : 0.0; }
+
+}  // namespace
+
+ContactModel::ContactModel(std::vector<ShellPoint> shell, double shell_bounding_radius,
+                           double moving_friction, std::vector<Obstacle> obstacles,
+                           const ContactParams& params)
+    : shell_(std::move(shell)),
+      shell_radius_(shell_bounding_radius),
+      moving_friction_(moving_friction),
+      obstacles_(std::move(obstacles)),
+      params_(params) {}
+
+double ContactModel::Pressure(const ContactParams& p, double depth, double depth_rate) {
+  if (!(depth > 0)) return 0.0;
+  const double elastic = depth < p.onset_depth
+                             ? p.stiffness * depth * depth / (2 * p.onset_depth)
+                             : p.stiffness * (depth - 0.5 * p.onset_depth);
+  return elastic * std::max(0.0, 1.0 + p.dissipation * depth_rate);
+}
+
+ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
+  ++counters_.evaluations;
+  ContactForces out;
+  for (const Obstacle& o : obstacles_) {
+    // Broad phase: bounding spheres about the two frame origins.
+    const double reach = o.bounding_radius + shell_radius_;
+    if ((m.pose.translation() - o.pose.translation()).squaredNorm() > reach * reach) {
+      ++counters_.pairs_skipped;
+      continue;
+    }
+    const double mu = PairFriction(moving_friction_, o.friction);
+    // Shell points go to the obstacle frame with one transform.
+    const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
+    const Eigen::Matrix3d r_world_obstacle = o.pose.linear();
+    for (const ShellPoint& s : shell_) {
+      ++counters_.point_queries;
+      const Eigen::Vector3d p_o = moving_in_obstacle * s.position;
+      if (!o.field.Inside(p_o)) continue;
+      const Distance d = o.field.At(p_o);
+      const double depth = -d.distance;
+      if (!(depth > 0)) continue;
+      const Eigen::Vector3d n = r_world_obstacle * d.normal;  // out of the obstacle
+      const Eigen::Vector3d r = m.pose.linear() * s.position;  // origin to point, world
+      const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);
+      const double depth_rate = -v.dot(n);
+      const double fn = Pressure(params_, depth, depth_rate) * s.area;
+      if (!(fn > 0)) continue;
+      const Eigen::Vector3d v_t = v - v.dot(n) * n;
+      const double slip = v_t.norm();
+      const Eigen::Vector3d ft =
+          -mu * fn / std::max(slip, params_.friction_transition_speed) * v_t;
+      out.normal_force += fn * n;
+      out.friction_force += ft;
+      out.torque += r.cross(fn * n + ft);
+      ++out.points_in_contact;
+      out.max_depth = std::max(out.max_depth, depth);
+    }
+  }
+  return out;
+}
+
+}  // namespace vahf::contact

@@ -1,0 +1,83 @@
+// Penalty contact between one moving part and the static parts of a scene
+// (DESIGN.md decision 7): the moving part's point shell against each static
+// part's exact signed distance, a normal pressure law that is C1 at contact
+// onset with Hunt-Crossley dissipation, and regularised Coulomb friction.
+//
+// Normal pressure at penetration depth x (m), rate xdot (m/s):
+//   p(x) = k x^2 / (2 x0)          for x < x0   (C1 onset: p(0) = p'(0) = 0)
+//   p(x) = k (x - x0 / 2)          for x >= x0  (linear, slope k)
+//   p    *= max(0, 1 + c xdot)                  (Hunt and Crossley, 1975)
+// Friction on each point opposes its slip velocity v_t:
+//   f = -mu |f_n| v_t / max(|v_t|, v_s)        (Coulomb above v_s, linear below)
+// with the pair coefficient mu = 2 mu1 mu2 / (mu1 + mu2), the combination
+// Simbody's contact forces use (SimTK ContactMaterial, HuntCrossleyForce).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <vector>
+
+#include "vahf/contact/contact_params.h"
+#include "vahf/contact/point_shell.h"
+#include "vahf/contact/signed_distance.h"
+
+namespace vahf::contact {
+
+// A static part: its shape's signed distance and where it stands.
+struct Obstacle {
+  SignedDistance field;
+  Eigen::Isometry3d pose;  // part frame in the world
+  double friction;         // its Coulomb coefficient
+  double bounding_radius;  // about its frame origin, m
+};
+
+// The moving part's motion: its frame in the world, and the velocity of its
+// origin and its angular velocity, both in the world frame.
+struct RigidMotion {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
+};
+
+struct ContactForces {
+  Eigen::Vector3d normal_force = Eigen::Vector3d::Zero();    // N, world
+  Eigen::Vector3d friction_force = Eigen::Vector3d::Zero();  // N, world
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // N m about the moving origin, world
+  int points_in_contact = 0;
+  double max_depth = 0.0;  // m
+  bool in_contact() const { return points_in_contact > 0; }
+};
+
+// Work counters: what the broad phase saved and what the narrow phase did.
+struct ContactCounters {
+  std::uint64_t evaluations = 0;      // calls of Evaluate
+  std::uint64_t pairs_skipped = 0;    // obstacle pairs rejected by bounding spheres
+  std::uint64_t point_queries = 0;    // shell points tested against an obstacle
+};
+
+class ContactModel {
+ public:
+  ContactModel(std::vector<ShellPoint> shell, double shell_bounding_radius,
+               double moving_friction, std::vector<Obstacle> obstacles,
+               const ContactParams& params);
+
+  ContactForces Evaluate(const RigidMotion& motion) const;
+
+  const ContactCounters& counters() const { return counters_; }
+  const std::vector<ShellPoint>& shell() const { return shell_; }
+  std::size_t obstacle_count() const { return obstacles_.size(); }
+
+  // The normal pressure law alone (for tests), Pa.
+  static double Pressure(const ContactParams& params, double depth, double depth_rate);
+
+ private:
+  std::vector<ShellPoint> shell_;
+  double shell_radius_;
+  double moving_friction_;
+  std::vector<Obstacle> obstacles_;
+  ContactParams params_;
+  mutable ContactCounters counters_;
+};
+
+}  // namespace vahf::contact

@@ -1,0 +1,98 @@
+#include "vahf/contact/signed_distance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vahf::contact {
+
+SignedDistance::SignedDistance(const geometry::Shape& shape) {
+  if (const auto* box = std::get_if<geometry::Box>(&shape)) {
+    is_box_ = true;
+    half_ = 0.5 * box->size;
+    lower_ = -half_;
+    upper_ = half_;
+    return;
+  }
+  const auto& v = std::get<geometry::RevolvedProfile>(shape).vertices;
+  double r_max = 0, z_min = std::numeric_limits<double>::infinity(), z_max = -z_min;
+  for (const auto& q : v) {
+    polygon_.emplace_back(q.r, q.z);
+    r_max = std::max(r_max, q.r);
+    z_min = std::min(z_min, q.z);
+    z_max = std::max(z_max, q.z);
+  }
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const Eigen::Vector2d a = polygon_[k], b = polygon_[(k + 1) % v.size()];
+    if (a.x() == 0.0 && b.x() == 0.0) continue;  // on the axis: interior in 3-D
+    const Eigen::Vector2d d = (b - a).normalized();
+    // The polygon is counter-clockwise, so the outward normal is d turned clockwise.
+    surface_.push_back({a, b, Eigen::Vector2d(d.y(), -d.x())});
+  }
+  lower_ = {-r_max, -r_max, z_min};
+  upper_ = {r_max, r_max, z_max};
+}
+
+bool SignedDistance::InsidePolygon(double r, double z) const {
+  // Crossing number along +r.
+  bool inside = false;
+  const std::size_t n = polygon_.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Eigen::Vector2d& a = polygon_[i];
+    const Eigen::Vector2d& b = polygon_[j];
+    if ((a.y() > z) != (b.y() > z)) {
+      const double r_cross = a.x() + (z - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
+      if (r < r_cross) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+bool SignedDistance::Inside(const Eigen::Vector3d& p) const {
+  if ((p.array() <= lower_.array()).any() || (p.array() >= upper_.array()).any())
+    return false;
+  if (is_box_) return true;
+  return InsidePolygon(std::hypot(p.x(), p.y()), p.z());
+}
+
+Distance SignedDistance::At(const Eigen::Vector3d& p) const {
+  return is_box_ ? OfBox(p) : OfRevolution(p);
+}
+
+Distance SignedDistance::OfRevolution(const Eigen::Vector3d& p) const {
+  const double r = std::hypot(p.x(), p.y());
+  const Eigen::Vector2d q(r, p.z());
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Vector2d nearest = q, edge_normal(1, 0);
+  for (const Edge& e : surface_) {
+    const Eigen::Vector2d ab = e.b - e.a;
+    const double t = std::clamp((q - e.a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    const Eigen::Vector2d c = e.a + t * ab;
+    const double d2 = (q - c).squaredNorm();
+    if (d2 < best) best = d2, nearest = c, edge_normal = e.outward;
+  }
+  const bool inside = InsidePolygon(r, p.z());
+  const double d = std::sqrt(best);
+  Eigen::Vector2d n2 = edge_normal;
+  if (d > 1e-12) n2 = (inside ? nearest - q : q - nearest) / d;
+  const Eigen::Vector2d radial =
+      r > 0 ? Eigen::Vector2d(p.x() / r, p.y() / r) : Eigen::Vector2d(1, 0);
+  return {inside ? -d : d, Eigen::Vector3d(n2.x() * radial.x(), n2.x() * radial.y(), n2.y())};
+}
+
+Distance SignedDistance::OfBox(const Eigen::Vector3d& p) const {
+  const Eigen::Vector3d q = p.cwiseAbs() - half_;
+  if ((q.array() > 0).any()) {  // outside: distance to the nearest box point
+    const Eigen::Vector3d outside = q.cwiseMax(0.0);
+    Eigen::Vector3d n = outside.cwiseProduct(p.cwiseSign());
+    const double d = n.norm();
+    return {d, n / d};
+  }
+  int axis;  // inside: the nearest face
+  const double d = q.maxCoeff(&axis);
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  n[axis] = p[axis] >= 0 ? 1.0 : -1.0;
+  return {d, n};
+}
+
+}  // namespace vahf::contact

@@ -1,0 +1,441 @@
+#include "vahf/sim/trial.h"
+
+#include <Simbody.h>
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "vahf/contact/contact_model.h"
+#include "vahf/core/error.h"
+#include "vahf/guidance/assembly_force.h"
+#include "vahf/guidance/assembly_torque.h"
+#include "vahf/human/factors.h"
+#include "vahf/human/fatigue.h"
+#include "vahf/sim/integrators.h"
+
+namespace vahf::sim {
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+Vector3d ToEigen(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
+SimTK::Vec3 ToSimTK(const Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+Matrix3d ToEigen(const SimTK::Rotation& r) {
+  Matrix3d m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m(i, j) = r[i][j];
+  return m;
+}
+SimTK::Rotation ToSimTK(const Matrix3d& m) {
+  SimTK::Mat33 a;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) a[i][j] = m(i, j);
+  return SimTK::Rotation(a, true);
+}
+
+// What the operator decided at the last decision instant, held until the next
+// (DESIGN.md decision 1). A Simbody discrete variable, so that changing it
+// invalidates the state's dynamics and restarts the integrator cleanly.
+struct Decision {
+  Vector3d estimated_target = Vector3d::Zero();  // T' of Eq. 5
+  Matrix3d held_orientation = Matrix3d::Identity();
+  double psi = 1.0;
+  guidance::HeldContact contact;
+};
+
+// Everything a trial needs at run time, owned for the trial's duration.
+struct TrialContext {
+  explicit TrialContext(human::FactorCurves factor_curves)
+      : curves(std::move(factor_curves)) {}
+
+  const scene::Scene* scene = nullptr;
+  const scene::Part* part = nullptr;
+  rng::StreamKey key;
+  bool operator_acts = true;
+  double mass = 0;
+  Matrix3d inertia_body = Matrix3d::Zero();  // about the centre of mass, part frame
+  Vector3d com = Vector3d::Zero();           // part frame
+  std::optional<contact::ContactModel> contact;
+  human::Posture posture;
+  human::FactorCurves curves;
+  double reach_limit = 0;  // D3, m
+  bool revolved = false;   // orientation about the part's own z axis is free
+
+  // Simbody handles.
+  SimTK::MobilizedBodyIndex body;
+  const SimTK::SimbodyMatterSubsystem* matter = nullptr;
+  const SimTK::GeneralForceSubsystem* forces = nullptr;
+  SimTK::DiscreteVariableIndex decision_index;
+
+  // Accumulators, updated at decision instants.
+  std::int64_t last_decision = -1;
+  double work = 0;
+  Vector3d last_position = Vector3d::Zero();
+  double last_force = 0;
+  double best_distance = 0;
+  double last_progress_time = 0;
+  std::optional<Status> ended;
+  std::string detail;
+  double completion_time = -1;
+  std::vector<TraceRow> trace;
+  bool record_trace = true;
+
+  const SimTK::MobilizedBody& Body() const { return matter->getMobilizedBody(body); }
+
+  // The part's pose (needs Stage::Position), with zero velocities.
+  contact::RigidMotion PoseOf(const SimTK::State& s) const {
+    const SimTK::Transform& x = Body().getBodyTransform(s);
+    contact::RigidMotion m;
+    m.pose.linear() = ToEigen(x.R());
+    m.pose.translation() = ToEigen(x.p());
+    return m;
+  }
+  // Pose and velocities (needs Stage::Velocity).
+  contact::RigidMotion MotionOf(const SimTK::State& s) const {
+    contact::RigidMotion m = PoseOf(s);
+    const SimTK::SpatialVec& v = Body().getBodyVelocity(s);
+    m.angular_velocity = ToEigen(v[0]);
+    m.velocity = ToEigen(v[1]);
+    return m;
+  }
+
+  const Decision& HeldDecision(const SimTK::State& s) const {
+    return SimTK::Value<Decision>::downcast(forces->getDiscreteVariable(s, decision_index))
+        .get();
+  }
+
+  // The operator's force at the grasp point and torque about the origin (world).
+  void OperatorLoad(const contact::RigidMotion& m, const Decision& d, Vector3d* force,
+                    Vector3d* torque) const {
+    *force = Vector3d::Zero();
+    *torque = Vector3d::Zero();
+    if (!operator_acts) return;
+    const Vector3d r_grasp = m.pose.linear() * part->grasp;
+    const Vector3d v_grasp = m.velocity + m.angular_velocity.cross(r_grasp);
+    const auto& g = scene->params.guidance;
+    *force = guidance::ImpedanceForce(g, d.psi, mass, m.pose.translation(),
+                                      d.estimated_target, v_grasp, d.contact,
+                                      mass * scene->gravity,
+                                      scene->params.simulation.completion_distance);
+    const Matrix3d inertia_world =
+        m.pose.linear() * inertia_body * m.pose.linear().transpose();
+    *torque = r_grasp.cross(*force) +
+              guidance::AssemblyTorque(g, d.psi, inertia_world, m.pose.linear(),
+                                       d.held_orientation, m.angular_velocity);
+  }
+
+  // Distance and angle to the target, for completion and progress.
+  double DistanceToTarget(const contact::RigidMotion& m) const {
+    return (m.pose.translation() - part->target.position).norm();
+  }
+  double AngleToTargetDeg(const contact::RigidMotion& m) const {
+    const Matrix3d target = part->target.Rotation();
+    if (revolved)  // a solid of revolution is assembled whatever its spin
+      return human::AngleDeg(m.pose.linear().col(2), target.col(2));
+    return Eigen::AngleAxisd(target.transpose() * m.pose.linear()).angle() * 180.0 / M_PI;
+  }
+};
+
+class OperatorAndContactForce : public SimTK::Force::Custom::Implementation {
+ public:
+  explicit OperatorAndContactForce(TrialContext* c) : c_(c) {}
+
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
+                 SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
+    const contact::RigidMotion m = c_->MotionOf(s);
+    Vector3d force, torque;
+    c_->OperatorLoad(m, c_->HeldDecision(s), &force, &torque);
+    if (c_->contact) {
+      const contact::ContactForces f = c_->contact->Evaluate(m);
+      force += f.normal_force + f.friction_force;
+      torque += f.torque;
+    }
+    body_forces[c_->body] += SimTK::SpatialVec(ToSimTK(torque), ToSimTK(force));
+  }
+  SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+
+  void realizeTopology(SimTK::State& s) const override {
+    c_->decision_index = c_->forces->allocateDiscreteVariable(
+        s, SimTK::Stage::Dynamics, new SimTK::Value<Decision>(Decision{}));
+  }
+
+ private:
+  TrialContext* c_;
+};
+
+// The operator's decision at t_i = i * decision_interval: human factors,
+// fatigue, the outcome checks, the Eq. 5 draws, the trace row.
+void Decide(TrialContext& c, SimTK::State& s) {
+  const auto& p = c.scene->params;
+  const std::int64_t i = std::llround(s.getTime() / p.simulation.decision_interval);
+  if (i <= c.last_decision) return;  // already decided at this instant
+  c.last_decision = i;
+  c.matter->getSystem().realize(s, SimTK::Stage::Velocity);
+  const contact::RigidMotion m = c.MotionOf(s);
+  const Vector3d T = m.pose.translation();
+  for (int k = 0; k < 3; ++k) {
+    if (!std::isfinite(T[k]) || !std::isfinite(m.velocity[k]) ||
+        !std::isfinite(m.angular_velocity[k])) {
+      c.ended = Status::kNumericalFailure;
+      c.detail = fmt::format("non-finite state at decision {} (t = {} s)", i, s.getTime());
+      return;
+    }
+  }
+
+  // Fatigue: Eq. 4 over the last interval's travel with the force held then, Eq. 6.
+  if (i > 0)
+    c.work += human::WorkEq4(c.last_force, human::TravelOf(T - c.last_position),
+                             p.fatigue.k);
+  c.last_position = T;
+  const double psi = human::FatigueCoefficient(c.work, p.fatigue.a_max);
+
+  // Human factors at the part's centre of mass.
+  const Vector3d centre = m.pose * c.com;
+  Vector3d motion = m.velocity;
+  if (motion.norm() < 1e-3) motion = c.part->target.position - T;
+  if (motion.norm() < 1e-12) motion = -Vector3d::UnitZ();
+  double V = 1.0;
+  if (p.visibility.mode == "constant") V = p.visibility.value;
+  const human::FactorValues f = human::EvaluateFactors(c.curves, c.posture, centre, motion, V);
+
+  // Contact now, held for Eq. 8 until the next decision.
+  Decision d;
+  d.psi = psi;
+  contact::ContactForces cf;
+  if (c.contact) cf = c.contact->Evaluate(m);
+  d.contact.in_contact = cf.in_contact() && cf.normal_force.norm() > 0;
+  if (d.contact.in_contact) {
+    d.contact.normal = cf.normal_force.normalized();
+    d.contact.friction = cf.friction_force.norm();
+  }
+
+  // Outcomes decided at this instant, in order of precedence.
+  const double distance = c.DistanceToTarget(m);
+  if (i == 0 || c.best_distance - distance >= p.simulation.jam_progress ||
+      !d.contact.in_contact) {
+    if (i == 0 || distance < c.best_distance) c.best_distance = distance;
+    c.last_progress_time = s.getTime();
+  }
+  if (human::IsExhausted(psi, p.fatigue.psi_floor)) {
+    c.ended = Status::kExhausted;
+    c.detail = fmt::format("Psi_c = {:.4f} <= floor {} at t = {} s (A = {:.6g} J)", psi,
+                           p.fatigue.psi_floor, s.getTime(), c.work);
+  } else if (f.shoulder_distance > c.reach_limit) {
+    c.ended = Status::kUnreachable;
+    c.detail = fmt::format("shoulder distance {:.4f} m > D3 = {:.4f} m at t = {} s",
+                           f.shoulder_distance, c.reach_limit, s.getTime());
+  } else if (d.contact.in_contact &&
+             s.getTime() - c.last_progress_time >= p.simulation.jam_time) {
+    c.ended = Status::kJammed;
+    c.detail = fmt::format(
+        "in contact without {} m of progress since t = {} s; {:.6f} m from the target",
+        p.simulation.jam_progress, c.last_progress_time, distance);
+  }
+
+  // Eq. 5 and the held orientation, keyed by {seed, trial} and decision i.
+  if (!c.ended) {
+    d.estimated_target = guidance::DrawEstimatedTarget(
+        p.guidance, c.key, static_cast<std::uint64_t>(i), c.part->target.position, T,
+        centre - c.posture.eye, f.eta, f.lambda_c, psi);
+    d.held_orientation = guidance::DrawHeldOrientation(
+        p.guidance, c.key, static_cast<std::uint64_t>(i), c.part->target.Rotation(), f.eta);
+  } else {
+    d.estimated_target = T;
+    d.held_orientation = m.pose.linear();
+  }
+  SimTK::Value<Decision>::updDowncast(c.forces->updDiscreteVariable(s, c.decision_index))
+      .upd() = d;
+
+  Vector3d force, torque;
+  c.OperatorLoad(m, d, &force, &torque);
+  c.last_force = force.norm();
+  if (c.record_trace) {
+    TraceRow row;
+    row.time = s.getTime();
+    row.position = T;
+    row.orientation = Eigen::Quaterniond(m.pose.linear());
+    row.velocity = m.velocity;
+    row.angular_velocity = m.angular_velocity;
+    row.assembly_force = force;
+    row.contact_force = cf.normal_force;
+    row.friction_force = cf.friction_force;
+    row.factors = f;
+    row.work = c.work;
+    row.psi = psi;
+    c.trace.push_back(row);
+  }
+}
+
+class DecisionHandler : public SimTK::PeriodicEventHandler {
+ public:
+  DecisionHandler(TrialContext* c, double interval)
+      : SimTK::PeriodicEventHandler(interval), c_(c) {}
+  void handleEvent(SimTK::State& s, SimTK::Real, bool& terminate) const override {
+    Decide(*c_, s);
+    terminate = c_->ended.has_value();
+  }
+
+ private:
+  TrialContext* c_;
+};
+
+// Completion witness: max(|T - T_t| / d_th, angle / angle_th) - 1 falls through
+// zero when both are below their thresholds; Simbody locates that instant.
+class CompletionTrigger : public SimTK::TriggeredEventHandler {
+ public:
+  explicit CompletionTrigger(TrialContext* c)
+      : SimTK::TriggeredEventHandler(SimTK::Stage::Position), c_(c) {
+    getTriggerInfo().setTriggerOnRisingSignTransition(false);
+  }
+  SimTK::Real getValue(const SimTK::State& s) const override {
+    const contact::RigidMotion m = c_->PoseOf(s);
+    const auto& sim = c_->scene->params.simulation;
+    return std::max(c_->DistanceToTarget(m) / sim.completion_distance,
+                    c_->AngleToTargetDeg(m) / sim.completion_angle_deg) -
+           1.0;
+  }
+  void handleEvent(SimTK::State& s, SimTK::Real, bool& terminate) const override {
+    c_->ended = Status::kCompleted;
+    c_->completion_time = s.getTime();
+    c_->detail = fmt::format("within {} m and {} deg of the target",
+                             c_->scene->params.simulation.completion_distance,
+                             c_->scene->params.simulation.completion_angle_deg);
+    terminate = true;
+  }
+
+ private:
+  TrialContext* c_;
+};
+
+std::vector<contact::Obstacle> FixedParts(const scene::Scene& scene, int position) {
+  std::vector<contact::Obstacle> out;
+  for (std::size_t k = 0; k < scene.parts.size(); ++k) {
+    const scene::Part& p = scene.parts[k];
+    const auto seq = std::find(scene.sequence.begin(), scene.sequence.end(), static_cast<int>(k));
+    const bool assembled_earlier =
+        seq != scene.sequence.end() && seq - scene.sequence.begin() < position;
+    if (p.role == scene::Role::kAssembling && !assembled_earlier) continue;
+    const scene::Pose& pose = p.role == scene::Role::kAssembling ? p.target : p.initial;
+    out.push_back({contact::SignedDistance(p.shape), pose.Transform(), p.friction,
+                   p.mass_properties.bounding_radius});
+  }
+  return out;
+}
+
+}  // namespace
+
+TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
+                     const TrialOptions& options) {
+  const auto& params = scene.params;
+  VAHF_CHECK(options.sequence_position >= 0 &&
+                 options.sequence_position < static_cast<int>(scene.sequence.size()),
+             "sequence position out of range");
+  if (params.visibility.mode == "raycast")
+    throw InputError(scene.file, "/parameters/visibility/mode", "\"raycast\"",
+                     "ray-cast visibility is not in this build yet (issue 4); set mode "
+                     "\"constant\" with a value, or \"off\"");
+  const scene::Part& part = scene.parts[scene.sequence[options.sequence_position]];
+
+  TrialContext c({params.sight.Build(),
+                  params.reach.Build(scene.op.arm_length, scene.op.height),
+                  params.glance.Build()});
+  c.scene = &scene;
+  c.part = &part;
+  c.key = key;
+  c.operator_acts = params.guidance.mode == "operator";
+  c.mass = part.mass;
+  c.com = part.mass_properties.centroid;
+  c.inertia_body = (part.density * part.mass_properties.inertia_per_density).asDiagonal();
+  c.revolved = std::holds_alternative<geometry::RevolvedProfile>(part.shape);
+  c.work = options.initial_work;
+  c.record_trace = options.record_trace;
+  c.posture = human::StandingPosture(scene.op);
+  c.reach_limit = params.reach.BreakpointsFor(scene.op.arm_length, scene.op.height).d3;
+  std::vector<contact::Obstacle> fixed = FixedParts(scene, options.sequence_position);
+  TrialCounters counters;
+  if (!fixed.empty()) {  // nothing to touch: no shell, no contact work
+    auto shell = contact::MakePointShell(part.shape, params.contact.shell_spacing);
+    counters.shell_points = static_cast<std::int64_t>(shell.size());
+    c.contact.emplace(std::move(shell), part.mass_properties.bounding_radius, part.friction,
+                      std::move(fixed), params.contact);
+  }
+
+  SimTK::MultibodySystem system;
+  SimTK::SimbodyMatterSubsystem matter(system);
+  SimTK::GeneralForceSubsystem forces(system);
+  SimTK::Force::UniformGravity gravity(forces, matter, ToSimTK(scene.gravity));
+  const SimTK::Inertia inertia_com(SimTK::Vec3(c.inertia_body(0, 0), c.inertia_body(1, 1),
+                                               c.inertia_body(2, 2)));
+  const SimTK::Body::Rigid body(SimTK::MassProperties(
+      part.mass, ToSimTK(c.com), inertia_com.shiftFromMassCenter(-ToSimTK(c.com), part.mass)));
+  SimTK::MobilizedBody::Free mobod(matter.Ground(), SimTK::Transform(), body,
+                                   SimTK::Transform());
+  c.body = mobod.getMobilizedBodyIndex();
+  c.matter = &matter;
+  c.forces = &forces;
+  SimTK::Force::Custom operator_force(forces, new OperatorAndContactForce(&c));
+  system.addEventHandler(new DecisionHandler(&c, params.simulation.decision_interval));
+  system.addEventHandler(new CompletionTrigger(&c));
+
+  SimTK::State state = system.realizeTopology();
+  mobod.setQToFitTransform(
+      state, SimTK::Transform(ToSimTK(part.initial.Rotation()), ToSimTK(part.initial.position)));
+  Decide(c, state);
+
+  const auto integ = MakeIntegrator(params.simulation.integrator, system,
+                                    params.simulation.accuracy, params.simulation.fixed_step);
+  const auto start = std::chrono::steady_clock::now();
+  TrialResult result;
+  double end_time = 0;
+  if (!c.ended) {
+    try {
+      SimTK::TimeStepper ts(system, *integ);
+      ts.initialize(state);
+      ts.stepTo(params.simulation.time_limit);
+      end_time = ts.getTime();
+      if (!c.ended && integ->isSimulationOver() &&
+          integ->getTerminationReason() != SimTK::Integrator::ReachedFinalTime) {
+        c.ended = Status::kNumericalFailure;
+        c.detail = fmt::format("integrator stopped at t = {} s: {}", end_time,
+                               SimTK::Integrator::getTerminationReasonString(
+                                   integ->getTerminationReason()));
+      }
+    } catch (const std::exception& e) {
+      end_time = integ->getTime();
+      c.ended = Status::kNumericalFailure;
+      c.detail = fmt::format("at t = {} s: {}", end_time, e.what());
+    }
+  }
+  result.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.status = c.ended.value_or(Status::kTimeout);
+  if (!c.ended) c.detail = fmt::format("time limit {} s", params.simulation.time_limit);
+  result.detail = c.detail;
+  result.end_time = result.status == Status::kCompleted ? c.completion_time : end_time;
+  result.completion_time = c.completion_time;
+  result.part = part.name;
+  result.integrator = params.simulation.integrator;
+  result.accuracy = params.simulation.accuracy;
+  result.key = key;
+  counters.decisions = c.last_decision + 1;
+  counters.steps_taken = integ->getNumStepsTaken();
+  counters.steps_attempted = integ->getNumStepsAttempted();
+  counters.error_test_failures = integ->getNumErrorTestFailures();
+  counters.realizations = integ->getNumRealizations();
+  if (c.contact) {
+    counters.contact_evaluations = static_cast<std::int64_t>(c.contact->counters().evaluations);
+    counters.contact_point_queries =
+        static_cast<std::int64_t>(c.contact->counters().point_queries);
+    counters.broad_phase_skips = static_cast<std::int64_t>(c.contact->counters().pairs_skipped);
+  }
+  result.counters = counters;
+  result.trace = std::move(c.trace);
+  return result;
+}
+
+}  // namespace vahf::sim

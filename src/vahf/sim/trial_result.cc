@@ -1,0 +1,40 @@
+#include "vahf/sim/trial_result.h"
+
+#include <fmt/format.h>
+
+namespace vahf::sim {
+
+const char* StatusName(Status status) {
+  switch (status) {
+    case Status::kCompleted: return "completed";
+    case Status::kTimeout: return "timeout";
+    case Status::kExhausted: return "exhausted";
+    case Status::kUnreachable: return "unreachable";
+    case Status::kJammed: return "jammed";
+    case Status::kNumericalFailure: return "numerical_failure";
+  }
+  return "?";
+}
+
+std::string TrialResult::BriefReport() const {
+  const TrialCounters& c = counters;
+  std::string out = fmt::format("status: {} ({})\n", StatusName(status), detail);
+  out += fmt::format("part: {}, seed {}, trial {}\n", part, key.seed, key.trial);
+  if (status == Status::kCompleted)
+    out += fmt::format("completion time: {:.6f} s\n", completion_time);
+  out += fmt::format("simulated: {:.6f} s in {:.4f} s wall ({:.1f} x real time)\n", end_time,
+                     wall_seconds, wall_seconds > 0 ? end_time / wall_seconds : 0.0);
+  out += fmt::format(
+      "integrator: {} at accuracy {:g}: {} steps taken, {} attempted, {} error-test "
+      "failures, {} realizations\n",
+      integrator, accuracy, c.steps_taken, c.steps_attempted, c.error_test_failures,
+      c.realizations);
+  out += fmt::format(
+      "contact: {} shell points, {} evaluations, {} point queries, {} pairs skipped by "
+      "the broad phase\n",
+      c.shell_points, c.contact_evaluations, c.contact_point_queries, c.broad_phase_skips);
+  out += fmt::format("decisions: {}, rays cast: {}\n", c.decisions, c.rays_cast);
+  return out;
+}
+
+}  // namespace vahf::sim

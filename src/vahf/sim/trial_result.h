@@ -1,0 +1,71 @@
+// What one trial returns: how it ended and why, when, the work it took, and a
+// trace with one row per decision instant (STYLE.md 9: results are objects
+// with a status).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "vahf/human/factors.h"
+#include "vahf/rng/stream.h"
+
+namespace vahf::sim {
+
+enum class Status {
+  kCompleted,         // |T - T_t| < d_th and the angle to the target < its threshold
+  kTimeout,           // the time limit passed first
+  kExhausted,         // Psi_c fell to its floor (Eq. 6)
+  kUnreachable,       // the part lay beyond D3 from the operator's shoulder
+  kJammed,            // in contact with no progress for jam_time
+  kNumericalFailure,  // NaN in the state or the integrator failed
+};
+
+const char* StatusName(Status status);
+
+struct TraceRow {
+  double time = 0;  // s
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // T, part origin, world, m
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // of the origin, m/s
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s
+  Eigen::Vector3d assembly_force = Eigen::Vector3d::Zero();    // N
+  Eigen::Vector3d contact_force = Eigen::Vector3d::Zero();     // normal part, N
+  Eigen::Vector3d friction_force = Eigen::Vector3d::Zero();    // N
+  human::FactorValues factors;
+  double work = 0;  // A, J (Eq. 4, accumulated)
+  double psi = 1;   // Psi_c (Eq. 6)
+};
+
+struct TrialCounters {
+  std::int64_t decisions = 0;
+  std::int64_t steps_taken = 0;
+  std::int64_t steps_attempted = 0;
+  std::int64_t error_test_failures = 0;
+  std::int64_t realizations = 0;
+  std::int64_t contact_evaluations = 0;
+  std::int64_t contact_point_queries = 0;
+  std::int64_t broad_phase_skips = 0;
+  std::int64_t rays_cast = 0;
+  std::int64_t shell_points = 0;
+};
+
+struct TrialResult {
+  Status status = Status::kTimeout;
+  std::string detail;            // why it ended; where, for a failure
+  double end_time = 0;           // simulated s
+  double completion_time = -1;   // s, for status completed
+  std::string part;              // the assembling part
+  std::string integrator;
+  double accuracy = 0;
+  rng::StreamKey key;
+  TrialCounters counters;
+  double wall_seconds = 0;       // measured, never part of a digest
+  std::vector<TraceRow> trace;
+
+  std::string BriefReport() const;
+};
+
+}  // namespace vahf::sim
