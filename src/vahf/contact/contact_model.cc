@@ -17,7 +17,21 @@ ContactModel::ContactModel(std::vector<ShellPoint> shell, double shell_bounding_
       shell_radius_(shell_bounding_radius),
       moving_friction_(moving_friction),
       obstacles_(std::move(obstacles)),
-      params_(params) {}
+      params_(params) {
+  for (std::size_t begin = 0; begin < shell_.size(); begin += kClusterSize) {
+    const std::size_t end = std::min(shell_.size(), begin + kClusterSize);
+    Eigen::Vector3d lo = shell_[begin].position, hi = lo;
+    for (std::size_t k = begin; k < end; ++k) {
+      lo = lo.cwiseMin(shell_[k].position);
+      hi = hi.cwiseMax(shell_[k].position);
+    }
+    const Eigen::Vector3d centre = 0.5 * (lo + hi);
+    double radius = 0;
+    for (std::size_t k = begin; k < end; ++k)
+      radius = std::max(radius, (shell_[k].position - centre).norm());
+    clusters_.push_back({begin, end, centre, radius});
+  }
+}
 
 double ContactModel::Pressure(const ContactParams& p, double depth, double depth_rate) {
   if (!(depth > 0)) return 0.0;
@@ -41,28 +55,40 @@ ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
     // Shell points go to the obstacle frame with one transform.
     const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
     const Eigen::Matrix3d r_world_obstacle = o.pose.linear();
-    for (const ShellPoint& s : shell_) {
-      ++counters_.point_queries;
-      const Eigen::Vector3d p_o = moving_in_obstacle * s.position;
-      if (!o.field.Inside(p_o)) continue;
-      const Distance d = o.field.At(p_o);
-      const double depth = -d.distance;
-      if (!(depth > 0)) continue;
-      const Eigen::Vector3d n = r_world_obstacle * d.normal;  // out of the obstacle
-      const Eigen::Vector3d r = m.pose.linear() * s.position;  // origin to point, world
-      const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);
-      const double depth_rate = -v.dot(n);
-      const double fn = Pressure(params_, depth, depth_rate) * s.area;
-      if (!(fn > 0)) continue;
-      const Eigen::Vector3d v_t = v - v.dot(n) * n;
-      const double slip = v_t.norm();
-      const Eigen::Vector3d ft =
-          -mu * fn / std::max(slip, params_.friction_transition_speed) * v_t;
-      out.normal_force += fn * n;
-      out.friction_force += ft;
-      out.torque += r.cross(fn * n + ft);
-      ++out.points_in_contact;
-      out.max_depth = std::max(out.max_depth, depth);
+    for (const Cluster& cluster : clusters_) {
+      const Eigen::Vector3d c_o = moving_in_obstacle * cluster.centre;
+      const bool clear =
+          ((c_o.array() + cluster.radius) <= o.field.lower().array()).any() ||
+          ((c_o.array() - cluster.radius) >= o.field.upper().array()).any() ||
+          o.field.At(c_o).distance > cluster.radius;
+      if (clear) {
+        ++counters_.clusters_skipped;
+        continue;
+      }
+      for (std::size_t k = cluster.begin; k < cluster.end; ++k) {
+        const ShellPoint& s = shell_[k];
+        ++counters_.point_queries;
+        const Eigen::Vector3d p_o = moving_in_obstacle * s.position;
+        if (!o.field.Inside(p_o)) continue;
+        const Distance d = o.field.At(p_o);
+        const double depth = -d.distance;
+        if (!(depth > 0)) continue;
+        const Eigen::Vector3d n = r_world_obstacle * d.normal;   // out of the obstacle
+        const Eigen::Vector3d r = m.pose.linear() * s.position;  // origin to point, world
+        const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);
+        const double depth_rate = -v.dot(n);
+        const double fn = Pressure(params_, depth, depth_rate) * s.area;
+        if (!(fn > 0)) continue;
+        const Eigen::Vector3d v_t = v - v.dot(n) * n;
+        const double slip = v_t.norm();
+        const Eigen::Vector3d ft =
+            -mu * fn / std::max(slip, params_.friction_transition_speed) * v_t;
+        out.normal_force += fn * n;
+        out.friction_force += ft;
+        out.torque += r.cross(fn * n + ft);
+        ++out.points_in_contact;
+        out.max_depth = std::max(out.max_depth, depth);
+      }
     }
   }
   return out;

@@ -24,6 +24,10 @@ std::unique_ptr<SimTK::Integrator> MakeIntegrator(const std::string& name,
   else if (name == "SemiExplicitEuler2")
     integ = std::make_unique<SimTK::SemiExplicitEuler2Integrator>(system);
   VAHF_CHECK(integ != nullptr, "unknown integrator " + name + " passed validation");
+  // A trial steps from one decision instant to the next; let the integrator take
+  // as many internal steps as stiff contact needs in between (CPodes' own
+  // default of 500 prints errors and retries).
+  integ->setInternalStepLimit(1000000);
   if (name == "FixedStep")
     integ->setFixedStepSize(fixed_step);
   else

@@ -221,11 +221,12 @@ void Decide(TrialContext& c, SimTK::State& s) {
     if (i == 0 || distance < c.best_distance) c.best_distance = distance;
     c.last_progress_time = s.getTime();
   }
-  if (human::IsExhausted(psi, p.fatigue.psi_floor)) {
+  // Fatigue and reach end a trial only when an operator is guiding the part.
+  if (c.operator_acts && human::IsExhausted(psi, p.fatigue.psi_floor)) {
     c.ended = Status::kExhausted;
     c.detail = fmt::format("Psi_c = {:.4f} <= floor {} at t = {} s (A = {:.6g} J)", psi,
                            p.fatigue.psi_floor, s.getTime(), c.work);
-  } else if (f.shoulder_distance > c.reach_limit) {
+  } else if (c.operator_acts && f.shoulder_distance > c.reach_limit) {
     c.ended = Status::kUnreachable;
     c.detail = fmt::format("shoulder distance {:.4f} m > D3 = {:.4f} m at t = {} s",
                            f.shoulder_distance, c.reach_limit, s.getTime());
@@ -432,6 +433,8 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
     counters.contact_point_queries =
         static_cast<std::int64_t>(c.contact->counters().point_queries);
     counters.broad_phase_skips = static_cast<std::int64_t>(c.contact->counters().pairs_skipped);
+    counters.clusters_skipped =
+        static_cast<std::int64_t>(c.contact->counters().clusters_skipped);
   }
   result.counters = counters;
   result.trace = std::move(c.trace);

@@ -30,9 +30,10 @@ std::string TrialResult::BriefReport() const {
       integrator, accuracy, c.steps_taken, c.steps_attempted, c.error_test_failures,
       c.realizations);
   out += fmt::format(
-      "contact: {} shell points, {} evaluations, {} point queries, {} pairs skipped by "
-      "the broad phase\n",
-      c.shell_points, c.contact_evaluations, c.contact_point_queries, c.broad_phase_skips);
+      "contact: {} shell points, {} evaluations, {} point queries, {} clusters and {} "
+      "pairs skipped by the broad phase\n",
+      c.shell_points, c.contact_evaluations, c.contact_point_queries, c.clusters_skipped,
+      c.broad_phase_skips);
   out += fmt::format("decisions: {}, rays cast: {}\n", c.decisions, c.rays_cast);
   return out;
 }

@@ -48,6 +48,7 @@ struct TrialCounters {
   std::int64_t contact_evaluations = 0;
   std::int64_t contact_point_queries = 0;
   std::int64_t broad_phase_skips = 0;
+  std::int64_t clusters_skipped = 0;
   std::int64_t rays_cast = 0;
   std::int64_t shell_points = 0;
 };

@@ -1,0 +1,198 @@
+// One trial against independent oracles (reference/analytic/README.md):
+// free fall (s = g t^2 / 2), a block sliding down an incline with Coulomb
+// friction (a = g (sin theta - mu cos theta)), resting penetration (weight over
+// total stiffness, plus half the onset depth of the C1 law), a frictionless
+// peg falling into a chamfered bore under gravity alone; determinism (two runs
+// of a seed give the same trace bytes); RungeKuttaMerson and CPodes at tight
+// accuracy agree on the completion time; each outcome status is reachable.
+#include "vahf/sim/trial.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "vahf/core/error.h"
+#include "vahf/scene/scene_loader.h"
+#include "vahf/sim/trace_csv.h"
+
+namespace vahf::sim {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kG = 9.80665;
+
+json Operator() {
+  return {{"height", 1.75}, {"arm_length", 0.74}, {"position", {0.0, -0.35}},
+          {"facing_deg", 90}};
+}
+
+json Box(const std::string& name, const std::string& role, json size, json position,
+         double rot_x_deg = 0.0) {
+  json part = {{"name", name},
+               {"role", role},
+               {"geometry", {{"type", "box"}, {"size", size}}},
+               {"density", 2700},
+               {"friction", 0.2},
+               {"pose", {{"position", position}, {"rotation_xyz_deg", {rot_x_deg, 0, 0}}}}};
+  return part;
+}
+
+scene::Scene Parse(const json& doc) { return scene::ParseScene(doc, "test_scene.json"); }
+
+json Scene(json parts, json sequence, json parameters) {
+  return {{"format", "vahf-scene/1"}, {"name", "test"},   {"operator", Operator()},
+          {"parts", parts},           {"sequence", sequence}, {"parameters", parameters}};
+}
+
+scene::Scene LoadExample(const std::string& name) {
+  return scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + name);
+}
+
+TEST(Trial, FreeFallIsExact) {
+  json block = Box("block", "assembling", {0.04, 0.04, 0.04}, {0.0, 0.0, 1.0});
+  block["target"] = {{"position", {0.0, 0.0, -5.0}}};
+  const scene::Scene s = Parse(Scene(
+      {block}, {"block"},
+      {{"guidance", {{"mode", "none"}}},
+       {"visibility", {{"mode", "off"}}},
+       {"simulation", {{"time_limit", 0.5}, {"decision_interval", 0.05}, {"accuracy", 1e-8}}}}));
+  const TrialResult r = RunTrial(s, {1, 0});
+  EXPECT_EQ(r.status, Status::kTimeout);
+  EXPECT_EQ(r.counters.shell_points, 0);  // nothing to touch: no contact work at all
+  EXPECT_EQ(r.counters.contact_evaluations, 0);
+  ASSERT_EQ(r.trace.size(), 10u);
+  for (const TraceRow& row : r.trace) {
+    // A quadratic is integrated exactly by every Runge-Kutta method: round-off only.
+    EXPECT_NEAR(row.position.z(), 1.0 - 0.5 * kG * row.time * row.time, 1e-12) << row.time;
+    EXPECT_NEAR(row.velocity.z(), -kG * row.time, 1e-12) << row.time;
+    EXPECT_NEAR(row.position.x(), 0.0, 1e-15);
+  }
+}
+
+TEST(Trial, BlockSlidesDownInclineWithCoulombFriction) {
+  const double theta = 20.0, mu = 0.2;  // tan 20 deg = 0.364 > mu: it slides
+  const double t = theta * M_PI / 180.0;
+  const Eigen::Vector3d n(0, -std::sin(t), std::cos(t));  // slab's top normal
+  const Eigen::Vector3d slab_centre(0, 0, 0.5);
+  const Eigen::Vector3d block_centre = slab_centre + (0.025 + 0.02) * n;
+  json slab = Box("slab", "base", {0.6, 1.2, 0.05}, {0.0, 0.0, 0.5}, theta);
+  json block = Box("block", "assembling", {0.04, 0.04, 0.04},
+                   {block_centre.x(), block_centre.y(), block_centre.z()}, theta);
+  slab["friction"] = mu;
+  block["friction"] = mu;  // pair coefficient 2 mu mu / (mu + mu) = mu
+  block["target"] = {{"position", {0.0, 0.4, 2.0}}};
+  const scene::Scene s = Parse(Scene(
+      {slab, block}, {"block"},
+      {{"guidance", {{"mode", "none"}}},
+       {"visibility", {{"mode", "off"}}},
+       {"contact", {{"stiffness", 1e8}, {"shell_spacing", 0.005}, {"dissipation", 20}}},
+       {"simulation", {{"time_limit", 0.5}, {"decision_interval", 0.05}, {"accuracy", 1e-6}}}}));
+  const TrialResult r = RunTrial(s, {1, 0});
+  ASSERT_EQ(r.status, Status::kTimeout) << r.detail;
+  const Eigen::Vector3d down(0, -std::cos(t), -std::sin(t));
+  // Acceleration along the slope from velocities at 0.2 s and 0.45 s, after
+  // the block has settled onto the surface.
+  const TraceRow& a = r.trace[4];
+  const TraceRow& b = r.trace[9];
+  ASSERT_NEAR(a.time, 0.2, 1e-12);
+  ASSERT_NEAR(b.time, 0.45, 1e-12);
+  const double measured = (b.velocity - a.velocity).dot(down) / (b.time - a.time);
+  const double expected = kG * (std::sin(t) - mu * std::cos(t));
+  EXPECT_NEAR(measured, expected, 0.01 * expected);
+  // Distance over time follows the same law: s(t_b) - s(t_a) = v_a dt + a dt^2 / 2.
+  const double dt = b.time - a.time;
+  const double travel = (b.position - a.position).dot(down);
+  EXPECT_NEAR(travel, a.velocity.dot(down) * dt + 0.5 * expected * dt * dt,
+              0.01 * travel);
+}
+
+TEST(Trial, RestingPenetrationIsWeightOverStiffness) {
+  const double k = 1e8, onset = 1e-6;
+  json table = Box("table", "base", {0.4, 0.4, 0.05}, {0.0, 0.0, 0.875});
+  json block = Box("block", "assembling", {0.04, 0.04, 0.04}, {0.0, 0.0, 0.92});
+  block["target"] = {{"position", {0.0, 0.0, 1.5}}};
+  const scene::Scene s = Parse(Scene(
+      {table, block}, {"block"},
+      {{"guidance", {{"mode", "none"}}},
+       {"visibility", {{"mode", "off"}}},
+       {"contact", {{"stiffness", k}, {"onset_depth", onset}, {"shell_spacing", 0.005},
+                    {"dissipation", 50}}},
+       {"simulation", {{"time_limit", 0.6}, {"decision_interval", 0.1}, {"accuracy", 1e-7}}}}));
+  const TrialResult r = RunTrial(s, {1, 0});
+  const double mass = 2700 * 0.04 * 0.04 * 0.04;
+  const double area = 0.04 * 0.04;
+  const double expected = mass * kG / (k * area) + 0.5 * onset;  // linear branch of the law
+  const double depth = 0.92 - r.trace.back().position.z();
+  EXPECT_NEAR(depth, expected, 1e-3 * expected) << "after " << r.trace.back().time << " s";
+  EXPECT_NEAR(r.trace.back().contact_force.z(), mass * kG, 1e-3 * mass * kG);
+}
+
+TEST(Trial, FrictionlessPegFallsIntoChamferedBore) {
+  scene::Scene s = LoadExample("peg_in_hole.json");
+  for (scene::Part& p : s.parts) p.friction = 0.0;
+  scene::Part& peg = s.parts[1];
+  peg.initial.rotation_xyz_deg.setZero();
+  peg.initial.position = {0.0004, 0.0, 0.955};  // off-centre: the chamfer must guide it
+  s.params.guidance.mode = "none";
+  s.params.simulation.time_limit = 1.0;
+  const TrialResult r = RunTrial(s, {1, 0});
+  EXPECT_EQ(r.status, Status::kCompleted) << r.detail;
+  // It falls 45 mm: no faster than free fall.
+  EXPECT_GT(r.completion_time, std::sqrt(2 * 0.044 / kG));
+  EXPECT_GT(r.counters.contact_evaluations, 0);
+}
+
+TEST(Trial, PegInHoleCompletesAndIsDeterministic) {
+  const scene::Scene s = LoadExample("peg_in_hole.json");
+  const TrialResult a = RunTrial(s, {1, 0});
+  const TrialResult b = RunTrial(s, {1, 0});
+  EXPECT_EQ(a.status, Status::kCompleted) << a.detail;
+  EXPECT_EQ(TraceCsv(a), TraceCsv(b));
+  EXPECT_EQ(a.completion_time, b.completion_time);
+  EXPECT_EQ(a.counters.steps_taken, b.counters.steps_taken);
+  const TrialResult other = RunTrial(s, {2, 0});
+  EXPECT_NE(TraceCsv(a), TraceCsv(other));  // the seed matters
+}
+
+TEST(Trial, MersonAndCPodesAgreeAtTightAccuracy) {
+  scene::Scene s = LoadExample("peg_in_hole.json");
+  s.params.simulation.accuracy = 1e-6;
+  s.params.simulation.integrator = "RungeKuttaMerson";
+  const TrialResult rkm = RunTrial(s, {1, 0}, {0, 0.0, false});
+  s.params.simulation.integrator = "CPodes";
+  const TrialResult bdf = RunTrial(s, {1, 0}, {0, 0.0, false});
+  ASSERT_EQ(rkm.status, Status::kCompleted) << rkm.detail;
+  ASSERT_EQ(bdf.status, Status::kCompleted) << bdf.detail;
+  EXPECT_NEAR(rkm.completion_time, bdf.completion_time, 0.01 * rkm.completion_time);
+}
+
+TEST(Trial, UnreachableWhenBeyondD3) {
+  scene::Scene s = LoadExample("free_move.json");
+  s.op.position = {0.0, -3.0};  // three metres away
+  const TrialResult r = RunTrial(s, {1, 0});
+  EXPECT_EQ(r.status, Status::kUnreachable);
+  EXPECT_NE(r.detail.find("> D3"), std::string::npos) << r.detail;
+}
+
+TEST(Trial, ExhaustedAtThePsiFloor) {
+  scene::Scene s = LoadExample("free_move.json");
+  s.params.fatigue.a_max = 20.0;  // J: the first move of 0.3 m exhausts the operator
+  const TrialResult r = RunTrial(s, {1, 0});
+  EXPECT_EQ(r.status, Status::kExhausted) << r.detail;
+}
+
+TEST(Trial, RaycastVisibilityIsNotYetAvailable) {
+  scene::Scene s = LoadExample("free_move.json");
+  s.params.visibility.mode = "raycast";
+  try {
+    RunTrial(s, {1, 0});
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/parameters/visibility/mode");
+  }
+}
+
+}  // namespace
+}  // namespace vahf::sim
