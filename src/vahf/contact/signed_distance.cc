@@ -52,7 +52,7 @@ bool SignedDistance::Inside(const Eigen::Vector3d& p) const {
   if ((p.array() <= lower_.array()).any() || (p.array() >= upper_.array()).any())
     return false;
   if (is_box_) return true;
-  return InsidePolygon(std::hypot(p.x(), p.y()), p.z());
+  return InsidePolygon(std::sqrt(p.x() * p.x() + p.y() * p.y()), p.z());
 }
 
 Distance SignedDistance::At(const Eigen::Vector3d& p) const {
@@ -60,7 +60,7 @@ Distance SignedDistance::At(const Eigen::Vector3d& p) const {
 }
 
 Distance SignedDistance::OfRevolution(const Eigen::Vector3d& p) const {
-  const double r = std::hypot(p.x(), p.y());
+  const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
   const Eigen::Vector2d q(r, p.z());
   double best = std::numeric_limits<double>::infinity();
   Eigen::Vector2d nearest = q, edge_normal(1, 0);
