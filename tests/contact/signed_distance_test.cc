@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,9 @@ std::vector<ProfilePoint> Closed(std::vector<ProfilePoint> p) {
 
 constexpr double kR = 0.01, kH = 0.05;  // cylinder radius and height
 
-Shape Cylinder() { return MakeRevolvedProfile(Closed({{0, 0}, {kR, 0}, {kR, kH}, {0, kH}})); }
+Shape Cylinder() {
+  return MakeRevolvedProfile(Closed({{0, 0}, {kR, 0}, {kR, kH}, {0, kH}}));
+}
 
 // The "bore" part of experiments/scenes/peg_in_hole.json: a block of radius
 // 30 mm from z = -50 mm to 0 with a blind hole of radius 10.05 mm down to
@@ -72,7 +75,11 @@ void ExpectDistance(const SignedDistance& f, const Eigen::Vector3d& p, double di
   EXPECT_NEAR(d.distance, distance, kTol);
   EXPECT_NEAR((d.normal - normal).norm(), 0.0, 1e-9)
       << "normal " << Str(d.normal) << ", expected " << Str(normal);
-  EXPECT_EQ(f.Inside(p), distance < 0);
+  // Exactly on the surface Inside() is not checked: its crossing-number rule is
+  // half-open, and it answers true on surfaces facing the axis (a bore's wall).
+  if (distance != 0) {
+    EXPECT_EQ(f.Inside(p), distance < 0);
+  }
 }
 
 // ---------------------------------------------------------------- cylinder
@@ -103,9 +110,9 @@ TEST(SignedDistanceCylinder, BeyondTheRimIsTheDistanceToTheCircularEdge) {
 
 TEST(SignedDistanceCylinder, InsideIsNegative) {
   const SignedDistance f(Cylinder());
-  ExpectDistance(f, Polar(0.009, 1.1, 0.025), -0.001, Radial(1.1));      // near the side
-  ExpectDistance(f, Polar(0.002, -0.4, 0.0485), -0.0015, {0, 0, 1});     // near the top
-  ExpectDistance(f, Polar(0.0045, 2.0, 0.0007), -0.0007, {0, 0, -1});    // near the bottom
+  ExpectDistance(f, Polar(0.009, 1.1, 0.025), -0.001, Radial(1.1));    // near the side
+  ExpectDistance(f, Polar(0.002, -0.4, 0.0485), -0.0015, {0, 0, 1});   // near the top
+  ExpectDistance(f, Polar(0.0045, 2.0, 0.0007), -0.0007, {0, 0, -1});  // near the bottom
 }
 
 TEST(SignedDistanceCylinder, OnTheAxis) {
@@ -125,6 +132,15 @@ TEST(SignedDistanceCylinder, OnTheAxis) {
   EXPECT_NEAR(d.normal.z(), 0.0, 1e-12);
 }
 
+TEST(SignedDistanceCylinder, OnTheSurfaceTheNormalIsTheFaceNormal) {
+  // Distance 0: no nearest-point direction, so the normal is the face's.
+  const SignedDistance f(Cylinder());
+  ExpectDistance(f, {kR, 0, 0.02}, 0, {1, 0, 0});
+  ExpectDistance(f, {0, -kR, 0.03}, 0, {0, -1, 0});
+  ExpectDistance(f, {0.003, 0.002, kH}, 0, {0, 0, 1});
+  ExpectDistance(f, {-0.004, 0.001, 0}, 0, {0, 0, -1});
+}
+
 // ---------------------------------------------------------------- bore
 
 TEST(SignedDistanceBore, InsideTheHoleIsOutsideTheSolid) {
@@ -134,16 +150,26 @@ TEST(SignedDistanceBore, InsideTheHoleIsOutsideTheSolid) {
   // Nearest the floor, on and off the axis.
   ExpectDistance(f, {0, 0, -0.039}, 0.001, {0, 0, 1});
   ExpectDistance(f, Polar(0.005, -2.2, -0.0395), 0.0005, {0, 0, 1});
-  // Off the middle of the chamfer (0.0105, -0.0005), along its outward normal
+  // Off the middle of the chamfer (10.55, -0.5) mm, along its outward normal
   // (-1, 1)/sqrt(2) in (r, z).
   const double s = std::sqrt(0.5), t = 0.0002;
-  ExpectDistance(f, Polar(0.0105 - s * t, 0.4, -0.0005 + s * t), t,
+  ExpectDistance(f, Polar(0.01055 - s * t, 0.4, -0.0005 + s * t), t,
                  -s * Radial(0.4) + Eigen::Vector3d(0, 0, s));
   // Above the mouth on the axis: the nearest surface point is the circle where
   // the chamfer meets the wall, (r, z) = (10.05, -1) mm; the point is 5 mm up.
   const Distance d = f.At({0, 0, 0.005});
   EXPECT_NEAR(d.distance, std::hypot(kHole, 0.006), kTol);
   EXPECT_FALSE(f.Inside({0, 0, 0.005}));
+}
+
+TEST(SignedDistanceBore, OnTheSurfaceTheNormalIsTheFaceNormal) {
+  const SignedDistance f(Bore());
+  const double s = std::sqrt(0.5);
+  ExpectDistance(f, {0, kHole, -0.02}, 0, {0, -1, 0});      // hole wall
+  ExpectDistance(f, {0.004, 0, kFloor}, 0, {0, 0, 1});      // hole floor
+  ExpectDistance(f, {0.01055, 0, -0.0005}, 0, {-s, 0, s});  // chamfer
+  ExpectDistance(f, {-0.02, 0, 0}, 0, {0, 0, 1});           // top face
+  ExpectDistance(f, {0, 0, kBottom}, 0, {0, 0, -1});        // bottom, on the axis
 }
 
 TEST(SignedDistanceBore, OutsideTheBlock) {
@@ -208,8 +234,8 @@ std::vector<Case> Shapes() {
           {"bore", Bore()},
           {"box", Box{kBoxSize}},
           {"cone", MakeRevolvedProfile(Closed({{0, 0}, {0.04, 0}, {0, 0.12}}))},
-          {"tube", MakeRevolvedProfile(Closed({{0.02, 0}, {0.03, 0}, {0.03, 0.1},
-                                               {0.02, 0.1}}))}};
+          {"tube", MakeRevolvedProfile(
+                       Closed({{0.02, 0}, {0.03, 0}, {0.03, 0.1}, {0.02, 0.1}}))}};
 }
 
 // Uniform points in the shape's bounds grown by 20% each way; a quarter of
@@ -287,7 +313,8 @@ TEST(SignedDistanceRandom, BoxMatchesTheClosedForm) {
 // ---------------------------------------------------------------- bounds
 
 TEST(SignedDistanceBounds, AreTheSolidsBoundingBox) {
-  auto expect = [](const Shape& shape, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  auto expect = [](const Shape& shape, const Eigen::Vector3d& lo,
+                   const Eigen::Vector3d& hi) {
     const SignedDistance f(shape);
     EXPECT_EQ(f.lower(), lo) << Str(f.lower());
     EXPECT_EQ(f.upper(), hi) << Str(f.upper());

@@ -1,0 +1,442 @@
+// ContactModel against closed forms: the pressure law against its defining
+// piecewise formula (quadratic onset, linear with slope k beyond, Hunt-Crossley
+// factor 1 + c xdot: K. H. Hunt and F. R. E. Crossley, J. Appl. Mech. 42 (1975)
+// 440-445); a box pressed flat into a floor against pressure x bottom-face
+// area, with Coulomb friction mu N opposing the slip for the harmonic-mean pair
+// coefficient mu = 2 mu1 mu2 / (mu1 + mu2) (Simbody's SimTK::ContactMaterial
+// combination); a tilted cylinder's rim contact against the integral of the
+// pressure over the circular segment of its bottom face that is below the
+// floor plus the strip of side wall below it (midpoint rule, 4e5 strips), and
+// against itself at finer shell spacings; the broad phase against its
+// counters; and the same physical contact described in two frames (rigid-body
+// velocity and moment transfer).
+#include "vahf/contact/contact_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vahf/contact/point_shell.h"
+#include "vahf/contact/signed_distance.h"
+#include "vahf/geometry/shape.h"
+
+namespace vahf::contact {
+namespace {
+
+using geometry::Box;
+using geometry::MakeRevolvedProfile;
+using geometry::Shape;
+
+constexpr double kMuPart = 0.5, kMuFloor = 0.3;
+constexpr double kMu = 2 * kMuPart * kMuFloor / (kMuPart + kMuFloor);  // 0.375
+
+double BoundingRadius(const Shape& s) {
+  return geometry::ComputeMassProperties(s).bounding_radius;
+}
+
+Obstacle MakeObstacle(const Shape& shape, const Eigen::Isometry3d& pose,
+                      double friction) {
+  return Obstacle{SignedDistance(shape), pose, friction, BoundingRadius(shape)};
+}
+
+Eigen::Isometry3d Translation(const Eigen::Vector3d& t) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = t;
+  return pose;
+}
+
+// A 1 m x 1 m x 0.2 m block whose top face is the plane z = 0.
+Obstacle Floor() {
+  return MakeObstacle(Box{{1.0, 1.0, 0.2}}, Translation({0, 0, -0.1}), kMuFloor);
+}
+
+ContactModel Model(const Shape& part, double spacing, std::vector<Obstacle> obstacles,
+                   const ContactParams& params = ContactParams()) {
+  return ContactModel(MakePointShell(part, spacing), BoundingRadius(part), kMuPart,
+                      std::move(obstacles), params);
+}
+
+// ---------------------------------------------------------------- pressure law
+
+TEST(ContactPressure, ZeroWithoutPenetration) {
+  const ContactParams p;
+  EXPECT_EQ(ContactModel::Pressure(p, 0.0, 0.0), 0.0);
+  EXPECT_EQ(ContactModel::Pressure(p, -1e-6, 0.0), 0.0);
+  EXPECT_EQ(ContactModel::Pressure(p, -1e-3, 10.0), 0.0);
+  EXPECT_EQ(ContactModel::Pressure(p, 0.0, 10.0), 0.0);
+}
+
+TEST(ContactPressure, QuadraticOnsetIsC1AtZero) {
+  const ContactParams p;
+  const double k = p.stiffness, x0 = p.onset_depth;
+  for (double x : {1e-9, 1e-8, 1e-7, 5e-7, 0.999e-6})
+    EXPECT_NEAR(ContactModel::Pressure(p, x, 0.0), k * x * x / (2 * x0), 1e-12 * k * x0)
+        << x;
+  // The value and the forward-difference slope both vanish as the depth does:
+  // slope(h) = k h / x0 (1 + 1/2 from the difference) shrinks linearly with h.
+  for (double h : {1e-8, 1e-10, 1e-12}) {
+    const double value = ContactModel::Pressure(p, h, 0.0);
+    const double slope = (ContactModel::Pressure(p, 2 * h, 0.0) - value) / h;
+    EXPECT_NEAR(slope, 1.5 * k * h / x0, 1e-6 * k * h / x0) << h;
+    EXPECT_LT(slope, 2 * k * h / x0) << h;
+    EXPECT_LE(value, k * h * h / x0) << h;
+  }
+}
+
+TEST(ContactPressure, ContinuousWithSlopeKAtTheOnsetDepthAndLinearBeyond) {
+  const ContactParams p;
+  const double k = p.stiffness, x0 = p.onset_depth;
+  EXPECT_NEAR(ContactModel::Pressure(p, x0, 0.0), k * x0 / 2, 1e-9 * k * x0);
+  const double h = 1e-12;
+  const double below = ContactModel::Pressure(p, x0 - h, 0.0);
+  const double above = ContactModel::Pressure(p, x0 + h, 0.0);
+  EXPECT_NEAR(below, k * x0 / 2, 2 * k * h);  // continuous
+  EXPECT_NEAR(above, k * x0 / 2, 2 * k * h);
+  // One-sided slopes over 1 nm: k (1 - h / (2 x0)) on the left, k on the right.
+  const double d = 1e-9;
+  const double at = ContactModel::Pressure(p, x0, 0.0);
+  EXPECT_NEAR((at - ContactModel::Pressure(p, x0 - d, 0.0)) / d, k, 1e-3 * k);
+  EXPECT_NEAR((ContactModel::Pressure(p, x0 + d, 0.0) - at) / d, k, 1e-6 * k);
+  // Linear beyond, with slope k and offset x0 / 2.
+  for (double x : {2e-6, 1e-5, 1e-4, 1e-3})
+    EXPECT_NEAR(ContactModel::Pressure(p, x, 0.0), k * (x - x0 / 2), 1e-12 * k * x) << x;
+}
+
+TEST(ContactPressure, HuntCrossleyFactorClampedAtZero) {
+  ContactParams p;
+  p.dissipation = 0.5;
+  for (double x : {5e-7, 2e-5}) {
+    const double elastic = ContactModel::Pressure(p, x, 0.0);
+    for (double rate : {0.3, 1.0, 10.0, -0.3, -1.0, -1.9})
+      EXPECT_NEAR(ContactModel::Pressure(p, x, rate), elastic * (1 + 0.5 * rate),
+                  1e-12 * elastic)
+          << "depth " << x << ", rate " << rate;
+    // Separating faster than 1/c = 2 m/s: no pull, exactly zero.
+    for (double rate : {-2.0, -2.5, -100.0})
+      EXPECT_EQ(ContactModel::Pressure(p, x, rate), 0.0) << "rate " << rate;
+  }
+}
+
+// ---------------------------------------------------------------- flat box on a floor
+
+// A 40 x 40 x 20 mm box whose bottom face is pressed d into the floor, turned
+// about z (still flat) and placed off the floor's centre.
+const Eigen::Vector3d kPartSize(0.04, 0.04, 0.02);
+constexpr double kBottomArea = 0.04 * 0.04;
+constexpr double kDepth = 2e-5;  // 20 x onset_depth
+
+Eigen::Isometry3d FlatPose(double depth) {
+  Eigen::Isometry3d pose = Translation({0.1, -0.05, kPartSize.z() / 2 - depth});
+  pose.rotate(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
+  return pose;
+}
+
+TEST(ContactModelFlat, NormalForceIsPressureTimesArea) {
+  const ContactModel model = Model(Box{kPartSize}, 1e-3, {Floor()});
+  RigidMotion m;
+  m.pose = FlatPose(kDepth);
+  const ContactForces f = model.Evaluate(m);
+  const double n = ContactModel::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
+  EXPECT_NEAR(f.normal_force.x(), 0.0, 1e-12 * n);
+  EXPECT_NEAR(f.normal_force.y(), 0.0, 1e-12 * n);
+  // Uniform pressure on a face centred under the origin: no moment.
+  EXPECT_NEAR(f.torque.norm(), 0.0, 1e-9 * n * 0.03);
+  EXPECT_EQ(f.friction_force, Eigen::Vector3d::Zero());
+  EXPECT_EQ(f.points_in_contact, 40 * 40);
+  EXPECT_NEAR(f.max_depth, kDepth, 1e-15);
+  EXPECT_TRUE(f.in_contact());
+}
+
+TEST(ContactModelFlat, ForceDoesNotDependOnShellSpacing) {
+  const double n = ContactModel::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  for (double s : {4e-3, 3e-3, 7e-4}) {
+    RigidMotion m;
+    m.pose = FlatPose(kDepth);
+    const ContactForces f = Model(Box{kPartSize}, s, {Floor()}).Evaluate(m);
+    EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9) << "spacing " << s;
+  }
+}
+
+TEST(ContactModelFlat, HuntCrossleyDampingFromTheApproachSpeed) {
+  const ContactModel model = Model(Box{kPartSize}, 1e-3, {Floor()});
+  RigidMotion m;
+  m.pose = FlatPose(kDepth);
+  m.velocity = {0, 0, -0.2};  // pressing in at 0.2 m/s: factor 1 + 0.5 * 0.2
+  const double n = ContactModel::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  EXPECT_NEAR(model.Evaluate(m).normal_force.z() / n, 1.1, 1e-9);
+  m.velocity = {0, 0, 3.0};  // separating faster than 1/c: no force at all
+  const ContactForces f = model.Evaluate(m);
+  EXPECT_EQ(f.normal_force, Eigen::Vector3d::Zero());
+  EXPECT_EQ(f.friction_force, Eigen::Vector3d::Zero());
+  EXPECT_FALSE(f.in_contact());
+}
+
+TEST(ContactModelFlat, SlidingFrictionIsMuTimesNormalAgainstTheSlip) {
+  const ContactModel model = Model(Box{kPartSize}, 1e-3, {Floor()});
+  const ContactParams params;
+  ASSERT_GT(0.05, 10 * params.friction_transition_speed);
+  for (double angle : {0.0, 0.8, -2.4}) {
+    RigidMotion m;
+    m.pose = FlatPose(kDepth);
+    const Eigen::Vector3d dir(std::cos(angle), std::sin(angle), 0);
+    m.velocity = 0.05 * dir;
+    const ContactForces f = model.Evaluate(m);
+    const double n = ContactModel::Pressure(params, kDepth, 0.0) * kBottomArea;
+    EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
+    EXPECT_NEAR((f.friction_force - (-kMu * n * dir)).norm(), 0.0, 1e-9 * kMu * n)
+        << "friction (" << f.friction_force.transpose() << ")";
+    // Friction acts on the bottom face, whose centre is 10 mm under the origin.
+    const Eigen::Vector3d moment =
+        Eigen::Vector3d(0, 0, -kPartSize.z() / 2).cross(f.friction_force);
+    EXPECT_NEAR((f.torque - moment).norm(), 0.0, 1e-9 * n * 0.03);
+  }
+}
+
+TEST(ContactModelFlat, FrictionIsLinearInSlipBelowTheTransitionSpeed) {
+  const ContactModel model = Model(Box{kPartSize}, 1e-3, {Floor()});
+  const ContactParams params;
+  const double vs = params.friction_transition_speed;
+  const double n = ContactModel::Pressure(params, kDepth, 0.0) * kBottomArea;
+  const Eigen::Vector3d dir(0.6, -0.8, 0);
+  for (double speed : {1e-5, 2e-4, 4e-4, 0.999e-3}) {
+    RigidMotion m;
+    m.pose = FlatPose(kDepth);
+    m.velocity = speed * dir;
+    const ContactForces f = model.Evaluate(m);
+    const Eigen::Vector3d expected = -kMu * n * (speed / vs) * dir;
+    EXPECT_NEAR((f.friction_force - expected).norm(), 0.0, 1e-9 * kMu * n)
+        << "speed " << speed << ": friction (" << f.friction_force.transpose() << ")";
+  }
+}
+
+// ---------------------------------------------------------------- tilted peg
+
+constexpr double kPegRadius = 0.01, kPegLength = 0.05;
+// A contact: the peg tilted by `tilt` (rad) with its lowest rim point `depth`
+// (m) under the floor. The contact patch on the bottom face is depth / sin(tilt)
+// wide.
+struct TiltedContact {
+  double tilt, depth;
+};
+
+Shape Peg() {
+  return MakeRevolvedProfile(
+      {{0, 0}, {kPegRadius, 0}, {kPegRadius, kPegLength}, {0, kPegLength}, {0, 0}});
+}
+
+// Tilted by c.tilt about x; the lowest point of the bottom rim, (0, -R, 0) in
+// the peg frame, is c.depth under the floor.
+Eigen::Isometry3d PegPose(const TiltedContact& c) {
+  Eigen::Isometry3d pose =
+      Translation({0.01, 0.02, kPegRadius * std::sin(c.tilt) - c.depth});
+  pose.rotate(Eigen::AngleAxisd(c.tilt, Eigen::Vector3d::UnitX()));
+  return pose;
+}
+
+// The continuum normal force, along +z. A bottom-face point (x, y) is
+// delta - (y + R) sin(theta) deep, so the face is in contact on the circular
+// segment y < -R + delta / sin(theta): the integral of the pressure over it
+// (chord 2 sqrt(R^2 - y^2)) by the midpoint rule. A side-wall point at azimuth
+// phi and height z is D(phi) - z cos(theta) deep, D = delta - R (1 + sin phi)
+// sin(theta), and the model presses it along the floor's normal too, so the wall
+// adds the integral over phi of R Q(D) / cos(theta), where
+// Q(x) = int_0^x p(u) du = k x^3 / (6 x0) below x0, k x0^2 / 6 + k (x^2 - x0 x) / 2
+// beyond (the pressure law integrated once).
+double ContinuumPegForce(const ContactParams& params, const TiltedContact& c) {
+  const double kTilt = c.tilt, kPegDepth = c.depth;
+  const double k = params.stiffness, x0 = params.onset_depth, r = kPegRadius;
+  const double a = kPegDepth / std::sin(kTilt);
+  const int n = 400000;
+  double cap = 0;
+  for (int i = 0; i < n; ++i) {
+    const double y = -r + (i + 0.5) * a / n;
+    const double depth = kPegDepth - (y + r) * std::sin(kTilt);
+    cap += 2 * std::sqrt(r * r - y * y) * ContactModel::Pressure(params, depth, 0.0);
+  }
+  cap *= a / n;
+  auto q = [&](double x) {
+    return x < x0 ? k * x * x * x / (6 * x0) : k * x0 * x0 / 6 + k * (x * x - x0 * x) / 2;
+  };
+  double wall = 0;
+  for (int i = 0; i < n; ++i) {
+    const double phi = -M_PI + (i + 0.5) * M_PI / n;
+    const double d = kPegDepth - r * (1 + std::sin(phi)) * std::sin(kTilt);
+    if (d > 0) wall += r * q(d) / std::cos(kTilt);
+  }
+  wall *= M_PI / n;
+  std::printf(
+      "tilted peg, %.0f um deep: continuum normal force %.6g N (bottom face %.6g N, "
+      "side wall %.6g N)\n",
+      kPegDepth * 1e6, cap + wall, cap, wall);
+  return cap + wall;
+}
+
+// Normal force at shell spacings 1, 0.5 and 0.25 mm, printed against the
+// continuum value; returns the three forces.
+std::vector<double> RefinementSeries(const TiltedContact& c, double* continuum) {
+  const ContactParams params;
+  *continuum = ContinuumPegForce(params, c);
+  std::vector<double> forces;
+  for (double s : {1e-3, 0.5e-3, 0.25e-3}) {
+    RigidMotion m;
+    m.pose = PegPose(c);
+    const ContactForces f = Model(Peg(), s, {Floor()}, params).Evaluate(m);
+    const double force = f.normal_force.z();
+    std::printf(
+        "  spacing %.2f mm: normal force %.6g N (%+.2f%% of continuum), "
+        "%d points in contact, max depth %.3g um\n",
+        s * 1e3, force, 100 * (force / *continuum - 1), f.points_in_contact,
+        f.max_depth * 1e6);
+    EXPECT_GT(force, 0.0) << "spacing " << s;
+    EXPECT_NEAR(f.normal_force.x(), 0.0, 1e-12 * force);
+    EXPECT_NEAR(f.normal_force.y(), 0.0, 1e-12 * force);
+    forces.push_back(force);
+  }
+  return forces;
+}
+
+TEST(ContactModelPeg, NormalForceConvergesUnderShellRefinement) {
+  // Tilted 0.5 deg, 50 um deep: a 5.7 mm wide patch, resolved by a 1 mm shell.
+  // Refining the shell twice over changes the force by under 1% each time.
+  double continuum = 0;
+  const auto f = RefinementSeries({0.5 * M_PI / 180, 50e-6}, &continuum);
+  EXPECT_NEAR(f[1] / f[0], 1.0, 0.01);
+  EXPECT_NEAR(f[2] / f[1], 1.0, 0.01);
+  EXPECT_NEAR(f[2] / continuum, 1.0, 0.01);
+}
+
+TEST(ContactModelPeg, PatchNarrowerThanTheShellIsUnderResolved) {
+  // A known limit, recorded rather than hidden: tilted 2 deg and 20 um deep
+  // the patch is 0.57 mm wide, narrower than the default 1 mm spacing, and the
+  // force is far off (-84% at 1 mm); it converges as the spacing falls below
+  // the patch width. Edge contacts in a tight bore are like this.
+  double continuum = 0;
+  const auto f = RefinementSeries({2.0 * M_PI / 180, 20e-6}, &continuum);
+  const double e0 = std::abs(f[0] / continuum - 1), e1 = std::abs(f[1] / continuum - 1),
+               e2 = std::abs(f[2] / continuum - 1);
+  EXPECT_GT(e0, 0.5);  // under-resolved at the default spacing
+  EXPECT_LT(e1, e0);
+  EXPECT_LT(e2, e1);
+  EXPECT_LT(e2, 0.1);
+}
+
+// ---------------------------------------------------------------- broad phase
+
+TEST(ContactModelBroadPhase, FarObstacleIsSkippedWithoutPointQueries) {
+  const Shape part = Box{kPartSize};
+  const Shape block = Box{{0.1, 0.1, 0.1}};
+  // Origins 0.5 m apart; the spheres reach 0.03 + 0.0866 m.
+  const ContactModel model =
+      Model(part, 1e-3, {MakeObstacle(block, Translation({0.5, 0, 0}), kMuFloor)});
+  RigidMotion m;
+  m.velocity = {0.1, 0, -0.1};
+  const ContactCounters before = model.counters();
+  const ContactForces f = model.Evaluate(m);
+  const ContactCounters& after = model.counters();
+  EXPECT_EQ(after.evaluations, before.evaluations + 1);
+  EXPECT_EQ(after.pairs_skipped, before.pairs_skipped + 1);
+  EXPECT_EQ(after.point_queries, before.point_queries);
+  EXPECT_EQ(f.normal_force, Eigen::Vector3d::Zero());
+  EXPECT_EQ(f.friction_force, Eigen::Vector3d::Zero());
+  EXPECT_EQ(f.torque, Eigen::Vector3d::Zero());
+  EXPECT_FALSE(f.in_contact());
+  model.Evaluate(m);
+  EXPECT_EQ(model.counters().pairs_skipped, before.pairs_skipped + 2);
+  EXPECT_EQ(model.counters().point_queries, before.point_queries);
+}
+
+TEST(ContactModelBroadPhase, FarObstacleDoesNotChangeANearContact) {
+  const Shape part = Box{kPartSize};
+  const Obstacle far =
+      MakeObstacle(Box{{0.1, 0.1, 0.1}}, Translation({0.1, 2.0, 0}), kMuFloor);
+  const ContactModel alone = Model(part, 1e-3, {Floor()});
+  const ContactModel both = Model(part, 1e-3, {Floor(), far});
+  RigidMotion m;
+  m.pose = FlatPose(kDepth);
+  m.velocity = {0.02, -0.01, 0};
+  const ContactForces a = alone.Evaluate(m);
+  const ContactForces b = both.Evaluate(m);
+  EXPECT_EQ(a.normal_force, b.normal_force);
+  EXPECT_EQ(a.friction_force, b.friction_force);
+  EXPECT_EQ(a.torque, b.torque);
+  EXPECT_EQ(a.points_in_contact, b.points_in_contact);
+  EXPECT_EQ(both.counters().pairs_skipped, 1u);  // the far block only
+  EXPECT_EQ(alone.counters().pairs_skipped, 0u);
+  EXPECT_GT(both.counters().point_queries, 0u);
+  EXPECT_LE(both.counters().point_queries, both.shell().size());
+}
+
+TEST(ContactModelBroadPhase, ContactAtTheEdgeOfTheBoundingSpheresIsKept) {
+  // A 3 m x 3 m floor (bounding radius 2.124 m) whose corner (1.5, 1.5) the box
+  // overhangs: a 10 mm x 10 mm square of its bottom face, 1 mm grid, is pressed
+  // d into the floor. The origins are 2.138 m apart: outside the floor's sphere,
+  // inside the sum of the two radii.
+  const Obstacle floor =
+      MakeObstacle(Box{{3.0, 3.0, 0.2}}, Translation({0, 0, -0.1}), kMuFloor);
+  const ContactModel model = Model(Box{kPartSize}, 1e-3, {floor});
+  RigidMotion m;
+  m.pose = Translation({1.51, 1.51, kPartSize.z() / 2 - kDepth});
+  const double apart = (m.pose.translation() - floor.pose.translation()).norm();
+  ASSERT_GT(apart, floor.bounding_radius);
+  ASSERT_LT(apart, floor.bounding_radius + BoundingRadius(Box{kPartSize}));
+  const ContactForces f = model.Evaluate(m);
+  EXPECT_EQ(model.counters().pairs_skipped, 0u);
+  EXPECT_EQ(f.points_in_contact, 10 * 10);
+  const double n = ContactModel::Pressure(ContactParams(), kDepth, 0.0) * 0.01 * 0.01;
+  EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
+}
+
+TEST(ContactModelBroadPhase, SeparatedButOverlappingSpheresGiveNoForce) {
+  // Bounding spheres overlap (origins 0.1 m apart, reach 0.03 + 0.0866 m) but
+  // the solids are 5 mm apart.
+  const ContactModel model =
+      Model(Box{kPartSize}, 1e-3,
+            {MakeObstacle(Box{{0.1, 0.1, 0.1}}, Translation({0, 0, -0.065}), 0.3)});
+  const ContactForces f = model.Evaluate(RigidMotion());
+  EXPECT_FALSE(f.in_contact());
+  EXPECT_EQ(f.normal_force, Eigen::Vector3d::Zero());
+}
+
+// ---------------------------------------------------------------- frame choice
+
+TEST(ContactModelFrame, OriginOffsetFromTheCentroidDoesNotMatter) {
+  // Frame A: the peg's own frame (origin at the bottom centre). Frame B: origin
+  // at g in A's coordinates, so a point's B coordinates are its A coordinates
+  // minus g and pose_B = pose_A * translation(g). B's origin moves with
+  // v + w x (R g), and moments about it are tau_A - (R g) x F.
+  const Eigen::Vector3d g(0.003, -0.002, 0.025);
+  const Shape peg = Peg();
+  std::vector<ShellPoint> shell_a = MakePointShell(peg, 0.5e-3), shell_b = shell_a;
+  for (ShellPoint& p : shell_b) p.position -= g;
+  const double radius_a = BoundingRadius(peg);
+  const ContactModel a(shell_a, radius_a, kMuPart, {Floor()}, ContactParams());
+  const ContactModel b(shell_b, radius_a + g.norm(), kMuPart, {Floor()}, ContactParams());
+
+  RigidMotion ma;
+  ma.pose = PegPose({2.0 * M_PI / 180, 20e-6});
+  ma.velocity = {0.0004, -0.02, -0.001};
+  ma.angular_velocity = {0.1, -0.2, 0.3};
+  RigidMotion mb = ma;
+  mb.pose = ma.pose * Translation(g);
+  const Eigen::Vector3d rg = ma.pose.linear() * g;
+  mb.velocity = ma.velocity + ma.angular_velocity.cross(rg);
+
+  const ContactForces fa = a.Evaluate(ma), fb = b.Evaluate(mb);
+  ASSERT_TRUE(fa.in_contact());
+  const double scale = fa.normal_force.norm();
+  EXPECT_NEAR((fb.normal_force - fa.normal_force).norm(), 0.0, 1e-9 * scale);
+  EXPECT_NEAR((fb.friction_force - fa.friction_force).norm(), 0.0, 1e-9 * scale);
+  EXPECT_GT(fa.friction_force.norm(), 0.1 * kMu * scale);  // friction is exercised
+  const Eigen::Vector3d total = fa.normal_force + fa.friction_force;
+  EXPECT_NEAR((fb.torque - (fa.torque - rg.cross(total))).norm(), 0.0,
+              1e-9 * scale * 0.05);
+  EXPECT_NEAR(fb.max_depth, fa.max_depth, 1e-15);
+}
+
+}  // namespace
+}  // namespace vahf::contact
