@@ -168,6 +168,26 @@ else
   fail "reference --table: prints nothing"
 fi
 
+# --- trial: the peg scene completes, and two runs of a seed write the same bytes.
+trace_a="$tmp/peg_a.csv"
+trace_b="$tmp/peg_b.csv"
+run trial "$scene" --seed 1 --trace "$trace_a"
+expect_status "trial peg seed 1" 0
+expect_in "trial peg seed 1" "$out" "status: completed"
+run trial "$scene" --seed 1 --trace "$trace_b"
+if cmp -s "$trace_a" "$trace_b"; then
+  pass "trial peg seed 1: identical trace bytes on a second run"
+else
+  fail "trial peg seed 1: traces differ between two runs"
+fi
+if [[ ! -e "$trace_a.partial" ]]; then
+  pass "trial: no partial file left behind"
+else
+  fail "trial: a .partial file was left behind"
+fi
+run trial "$scene" --seed 1 --integrator NoSuchIntegrator
+expect_status "trial with an unknown integrator" 2
+
 # --- help and bad options.
 run --help
 expect_status "--help" 0
