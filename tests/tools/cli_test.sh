@@ -185,6 +185,9 @@ if [[ ! -e "$trace_a.partial" ]]; then
 else
   fail "trial: a .partial file was left behind"
 fi
+run trial "$scene" --seed 1 --trace "$tmp/no_such_dir/peg.csv"
+expect_status "trial with an unwritable trace path" 2
+expect_in "trial with an unwritable trace path" "$err" "no_such_dir/peg.csv"
 run trial "$scene" --seed 1 --integrator NoSuchIntegrator
 expect_status "trial with an unknown integrator" 2
 

@@ -6,9 +6,11 @@
 #include <exception>
 #include <string>
 
+#include "vahf/core/atomic_file.h"
 #include "vahf/core/error.h"
 #include "vahf/experiment/table1_reference.h"
 #include "vahf/scene/experiment_file.h"
+#include "vahf/scene/json_reader.h"
 #include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/sim/trace_csv.h"
@@ -17,11 +19,13 @@
 namespace {
 
 int Check(const std::string& path) {
-  const std::string format = vahf::scene::FileFormatOf(path);
+  const nlohmann::json document = vahf::scene::ReadJsonFile(path);  // read once
+  const std::string format = vahf::scene::FormatOf(document, path);
   if (format == "scene") {
-    std::fputs(vahf::scene::DescribeScene(vahf::scene::LoadScene(path)).c_str(), stdout);
+    std::fputs(vahf::scene::DescribeScene(vahf::scene::ParseScene(document, path)).c_str(),
+               stdout);
   } else {
-    const vahf::scene::ExperimentFile e = vahf::scene::LoadExperiment(path);
+    const vahf::scene::ExperimentFile e = vahf::scene::ParseExperiment(document, path);
     std::printf("experiment '%s' (%s): kind %s, seed %llu, %d trials\n", e.name.c_str(),
                 e.file.c_str(), e.kind.c_str(), static_cast<unsigned long long>(e.seed),
                 e.trials);
@@ -60,7 +64,7 @@ int Trial(const TrialArgs& a) {
   options.sequence_position = a.position;
   options.record_trace = !a.trace.empty();
   const vahf::sim::TrialResult r = vahf::sim::RunTrial(scene, {a.seed, a.trial}, options);
-  if (!a.trace.empty()) vahf::sim::WriteFileAtomically(a.trace, vahf::sim::TraceCsv(r));
+  if (!a.trace.empty()) vahf::WriteFileAtomically(a.trace, vahf::sim::TraceCsv(r));
   std::fputs(r.BriefReport().c_str(), stdout);
   if (!a.trace.empty()) std::printf("trace: %s (%zu rows)\n", a.trace.c_str(), r.trace.size());
   return 0;

@@ -15,7 +15,10 @@ const std::vector<std::string>& ExperimentKinds() {
 }
 
 ExperimentFile LoadExperiment(const std::string& path) {
-  const nlohmann::json document = ReadJsonFile(path);
+  return ParseExperiment(ReadJsonFile(path), path);
+}
+
+ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string& path) {
   const JsonNode root(document, path);
   root.ExpectObject({"format", "name", "description", "kind", "scene", "seed", "trials"});
   const JsonNode format = root.Required("format");
@@ -42,7 +45,10 @@ ExperimentFile LoadExperiment(const std::string& path) {
 }
 
 std::string FileFormatOf(const std::string& path) {
-  const nlohmann::json document = ReadJsonFile(path);
+  return FormatOf(ReadJsonFile(path), path);
+}
+
+std::string FormatOf(const nlohmann::json& document, const std::string& path) {
   const JsonNode root(document, path);
   if (!document.is_object()) root.Fail("a vahf file is a JSON object");
   const JsonNode format = root.Required("format");

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,13 @@ struct ExperimentFile {
 // Loads the experiment and the scene it names; errors name whichever file
 // holds the fault.
 ExperimentFile LoadExperiment(const std::string& path);
+// The same for an already parsed document read from `path`.
+ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string& path);
 
-// "scene" or "experiment" by the file's "format" field; an InputError otherwise.
+// "scene" or "experiment" by the document's "format" field; an InputError
+// naming `file` otherwise.
+std::string FormatOf(const nlohmann::json& document, const std::string& file);
+// The same, reading the file.
 std::string FileFormatOf(const std::string& path);
 
 }  // namespace vahf::scene

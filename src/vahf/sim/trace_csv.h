@@ -11,8 +11,4 @@ namespace vahf::sim {
 
 std::string TraceCsv(const TrialResult& result);
 
-// Writes `text` to `path` whole or not at all (a temporary file renamed into
-// place). An unwritable path is an InputError naming it.
-void WriteFileAtomically(const std::string& path, const std::string& text);
-
 }  // namespace vahf::sim
