@@ -402,6 +402,35 @@ TEST(ContactModelBroadPhase, SeparatedButOverlappingSpheresGiveNoForce) {
   EXPECT_EQ(f.normal_force, Eigen::Vector3d::Zero());
 }
 
+TEST(ContactModelBroadPhase, ShellTreeCullsWithoutLosingAContactPoint) {
+  // A tilted peg whose rim touches the floor: the sphere tree must skip most of
+  // the shell, yet the force must be the sum over every shell point (computed
+  // here by brute force with the signed distance and the pressure law).
+  const Shape peg = Peg();
+  const std::vector<ShellPoint> shell = MakePointShell(peg, 0.5e-3);
+  const Obstacle floor = Floor();
+  const ContactModel model(shell, BoundingRadius(peg), kMuPart, {floor}, ContactParams());
+  RigidMotion m;
+  m.pose = PegPose({0.5 * M_PI / 180, 50e-6});  // a 5.7 mm wide patch
+  const ContactForces f = model.Evaluate(m);
+
+  Eigen::Vector3d brute = Eigen::Vector3d::Zero();
+  int touching = 0;
+  const Eigen::Isometry3d to_floor = floor.pose.inverse() * m.pose;
+  for (const ShellPoint& p : shell) {
+    const Distance d = floor.field.At(to_floor * p.position);
+    if (!(d.distance < 0)) continue;
+    brute += ContactModel::Pressure(ContactParams(), -d.distance, 0.0) * p.area *
+             (floor.pose.linear() * d.normal);
+    ++touching;
+  }
+  ASSERT_GT(touching, 10);
+  EXPECT_EQ(f.points_in_contact, touching);
+  EXPECT_NEAR((f.normal_force - brute).norm(), 0.0, 1e-12 * brute.norm());
+  EXPECT_GT(model.counters().clusters_skipped, 0u);
+  EXPECT_LT(model.counters().point_queries, shell.size() / 4);
+}
+
 // ---------------------------------------------------------------- frame choice
 
 TEST(ContactModelFrame, OriginOffsetFromTheCentroidDoesNotMatter) {

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+
+#include "vahf/core/error.h"
 
 namespace vahf::contact {
 namespace {
@@ -18,19 +21,37 @@ ContactModel::ContactModel(std::vector<ShellPoint> shell, double shell_bounding_
       moving_friction_(moving_friction),
       obstacles_(std::move(obstacles)),
       params_(params) {
-  for (std::size_t begin = 0; begin < shell_.size(); begin += kClusterSize) {
-    const std::size_t end = std::min(shell_.size(), begin + kClusterSize);
-    Eigen::Vector3d lo = shell_[begin].position, hi = lo;
-    for (std::size_t k = begin; k < end; ++k) {
-      lo = lo.cwiseMin(shell_[k].position);
-      hi = hi.cwiseMax(shell_[k].position);
-    }
-    const Eigen::Vector3d centre = 0.5 * (lo + hi);
-    double radius = 0;
-    for (std::size_t k = begin; k < end; ++k)
-      radius = std::max(radius, (shell_[k].position - centre).norm());
-    clusters_.push_back({begin, end, centre, radius});
+  VAHF_CHECK(shell_.size() < (std::size_t{1} << 31), "point shell too large");
+  if (!shell_.empty()) BuildTree(0, shell_.size());
+}
+
+void ContactModel::BuildTree(std::size_t begin, std::size_t end) {
+  Eigen::Vector3d lo = shell_[begin].position, hi = lo;
+  for (std::size_t k = begin; k < end; ++k) {
+    lo = lo.cwiseMin(shell_[k].position);
+    hi = hi.cwiseMax(shell_[k].position);
   }
+  const Eigen::Vector3d centre = 0.5 * (lo + hi);
+  double radius = 0;
+  for (std::size_t k = begin; k < end; ++k)
+    radius = std::max(radius, (shell_[k].position - centre).norm());
+  const std::size_t index = nodes_.size();
+  nodes_.push_back({centre, radius, static_cast<std::uint32_t>(begin),
+                    static_cast<std::uint32_t>(end), 0});
+  if (end - begin > kLeafSize) {
+    int axis;
+    (hi - lo).maxCoeff(&axis);
+    const std::size_t mid = begin + (end - begin) / 2;
+    // A total order (coordinate, then original position) makes the split,
+    // and so the summation order, independent of the library's sort.
+    std::stable_sort(shell_.begin() + begin, shell_.begin() + end,
+                     [axis](const ShellPoint& a, const ShellPoint& b) {
+                       return a.position[axis] < b.position[axis];
+                     });
+    BuildTree(begin, mid);
+    BuildTree(mid, end);
+  }
+  nodes_[index].escape = static_cast<std::uint32_t>(nodes_.size());
 }
 
 double ContactModel::Pressure(const ContactParams& p, double depth, double depth_rate) {
@@ -55,25 +76,31 @@ ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
     // Shell points go to the obstacle frame with one transform.
     const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
     const Eigen::Matrix3d r_world_obstacle = o.pose.linear();
-    for (const Cluster& cluster : clusters_) {
-      const Eigen::Vector3d c_o = moving_in_obstacle * cluster.centre;
-      const bool clear =
-          ((c_o.array() + cluster.radius) <= o.field.lower().array()).any() ||
-          ((c_o.array() - cluster.radius) >= o.field.upper().array()).any() ||
-          o.field.At(c_o).distance > cluster.radius;
+    for (std::size_t i = 0; i < nodes_.size();) {
+      const Node& node = nodes_[i];
+      const Eigen::Vector3d c_o = moving_in_obstacle * node.centre;
+      const bool clear = ((c_o.array() + node.radius) <= o.field.lower().array()).any() ||
+                         ((c_o.array() - node.radius) >= o.field.upper().array()).any() ||
+                         o.field.At(c_o).distance > node.radius;
       if (clear) {
         ++counters_.clusters_skipped;
+        i = node.escape;
         continue;
       }
-      for (std::size_t k = cluster.begin; k < cluster.end; ++k) {
+      if (node.end - node.begin > kLeafSize) {  // descend
+        ++i;
+        continue;
+      }
+      i = node.escape;
+      for (std::size_t k = node.begin; k < node.end; ++k) {
         const ShellPoint& s = shell_[k];
         ++counters_.point_queries;
         const Eigen::Vector3d p_o = moving_in_obstacle * s.position;
-        if (!o.field.Inside(p_o)) continue;
-        const Distance d = o.field.At(p_o);
-        const double depth = -d.distance;
+        const std::optional<Distance> d = o.field.Penetration(p_o);
+        if (!d) continue;
+        const double depth = -d->distance;
         if (!(depth > 0)) continue;
-        const Eigen::Vector3d n = r_world_obstacle * d.normal;   // out of the obstacle
+        const Eigen::Vector3d n = r_world_obstacle * d->normal;  // out of the obstacle
         const Eigen::Vector3d r = m.pose.linear() * s.position;  // origin to point, world
         const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);
         const double depth_rate = -v.dot(n);

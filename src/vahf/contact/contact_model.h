@@ -51,10 +51,10 @@ struct ContactForces {
 
 // Work counters: what the broad phase saved and what the narrow phase did.
 struct ContactCounters {
-  std::uint64_t evaluations = 0;      // calls of Evaluate
-  std::uint64_t pairs_skipped = 0;    // obstacle pairs rejected by bounding spheres
-  std::uint64_t point_queries = 0;    // shell points tested against an obstacle
-  std::uint64_t clusters_skipped = 0; // point clusters proven clear of an obstacle
+  std::uint64_t evaluations = 0;       // calls of Evaluate
+  std::uint64_t pairs_skipped = 0;     // obstacle pairs rejected by bounding spheres
+  std::uint64_t point_queries = 0;     // shell points tested against an obstacle
+  std::uint64_t clusters_skipped = 0;  // shell tree nodes proven clear of an obstacle
 };
 
 class ContactModel {
@@ -73,20 +73,24 @@ class ContactModel {
   static double Pressure(const ContactParams& params, double depth, double depth_rate);
 
  private:
-  // Runs of consecutive shell points with a bounding sphere (part frame). The
-  // signed distance is 1-Lipschitz, so a cluster whose centre lies farther
-  // from an obstacle than its radius has no point inside it and is skipped.
-  // Points are still visited in shell order, so culling never changes a bit
-  // of the result.
-  struct Cluster {
-    std::size_t begin, end;
+  // A bounding-sphere tree over the shell points (part frame), built once by
+  // median splits along the longest box axis, stored in depth-first order
+  // with an escape index, and the shell reordered so that every node covers a
+  // contiguous run [begin, end). The signed distance is 1-Lipschitz, so a node
+  // whose centre lies farther from an obstacle than its radius has no point
+  // inside it and is skipped whole. Points are visited in (reordered) shell
+  // order either way, so culling never changes a bit of the result.
+  struct Node {
     Eigen::Vector3d centre;
     double radius;
+    std::uint32_t begin, end;  // shell points covered
+    std::uint32_t escape;      // next node when this one is skipped
   };
-  static constexpr std::size_t kClusterSize = 16;
+  static constexpr std::size_t kLeafSize = 32;
+  void BuildTree(std::size_t begin, std::size_t end);
 
   std::vector<ShellPoint> shell_;
-  std::vector<Cluster> clusters_;
+  std::vector<Node> nodes_;
   double shell_radius_;
   double moving_friction_;
   std::vector<Obstacle> obstacles_;

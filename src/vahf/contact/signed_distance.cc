@@ -17,13 +17,13 @@ SignedDistance::SignedDistance(const geometry::Shape& shape) {
   const auto& v = std::get<geometry::RevolvedProfile>(shape).vertices;
   double r_max = 0, z_min = std::numeric_limits<double>::infinity(), z_max = -z_min;
   for (const auto& q : v) {
-    polygon_.emplace_back(q.r, q.z);
     r_max = std::max(r_max, q.r);
     z_min = std::min(z_min, q.z);
     z_max = std::max(z_max, q.z);
   }
   for (std::size_t k = 0; k < v.size(); ++k) {
-    const Eigen::Vector2d a = polygon_[k], b = polygon_[(k + 1) % v.size()];
+    const Eigen::Vector2d a(v[k].r, v[k].z);
+    const Eigen::Vector2d b(v[(k + 1) % v.size()].r, v[(k + 1) % v.size()].z);
     if (a.x() == 0.0 && b.x() == 0.0) continue;  // on the axis: interior in 3-D
     const Eigen::Vector2d d = (b - a).normalized();
     // The polygon is counter-clockwise, so the outward normal is d turned clockwise.
@@ -34,33 +34,45 @@ SignedDistance::SignedDistance(const geometry::Shape& shape) {
 }
 
 bool SignedDistance::InsidePolygon(double r, double z) const {
-  // Crossing number along +r.
+  // Crossing number along +r. Edges on the axis (r = 0) are never crossed by a
+  // ray from r >= 0, so the surface edges suffice.
   bool inside = false;
-  const std::size_t n = polygon_.size();
-  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Eigen::Vector2d& a = polygon_[i];
-    const Eigen::Vector2d& b = polygon_[j];
-    if ((a.y() > z) != (b.y() > z)) {
-      const double r_cross = a.x() + (z - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
+  for (const Edge& e : surface_) {
+    if ((e.a.y() > z) != (e.b.y() > z)) {
+      const double r_cross =
+          e.a.x() + (z - e.a.y()) / (e.b.y() - e.a.y()) * (e.b.x() - e.a.x());
       if (r < r_cross) inside = !inside;
     }
   }
   return inside;
 }
 
+bool SignedDistance::InBounds(const Eigen::Vector3d& p) const {
+  return (p.array() > lower_.array()).all() && (p.array() < upper_.array()).all();
+}
+
 bool SignedDistance::Inside(const Eigen::Vector3d& p) const {
-  if ((p.array() <= lower_.array()).any() || (p.array() >= upper_.array()).any())
-    return false;
+  if (!InBounds(p)) return false;
   if (is_box_) return true;
   return InsidePolygon(std::sqrt(p.x() * p.x() + p.y() * p.y()), p.z());
 }
 
-Distance SignedDistance::At(const Eigen::Vector3d& p) const {
-  return is_box_ ? OfBox(p) : OfRevolution(p);
+std::optional<Distance> SignedDistance::Penetration(const Eigen::Vector3d& p) const {
+  if (!InBounds(p)) return std::nullopt;
+  if (is_box_) return OfBox(p);
+  const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+  if (!InsidePolygon(r, p.z())) return std::nullopt;
+  return OfRevolution(p, r, true);
 }
 
-Distance SignedDistance::OfRevolution(const Eigen::Vector3d& p) const {
+Distance SignedDistance::At(const Eigen::Vector3d& p) const {
+  if (is_box_) return OfBox(p);
   const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+  return OfRevolution(p, r, InsidePolygon(r, p.z()));
+}
+
+Distance SignedDistance::OfRevolution(const Eigen::Vector3d& p, double r,
+                                      bool inside) const {
   const Eigen::Vector2d q(r, p.z());
   double best = std::numeric_limits<double>::infinity();
   Eigen::Vector2d nearest = q, edge_normal(1, 0);
@@ -71,13 +83,13 @@ Distance SignedDistance::OfRevolution(const Eigen::Vector3d& p) const {
     const double d2 = (q - c).squaredNorm();
     if (d2 < best) best = d2, nearest = c, edge_normal = e.outward;
   }
-  const bool inside = InsidePolygon(r, p.z());
   const double d = std::sqrt(best);
   Eigen::Vector2d n2 = edge_normal;
   if (d > 1e-12) n2 = (inside ? nearest - q : q - nearest) / d;
   const Eigen::Vector2d radial =
       r > 0 ? Eigen::Vector2d(p.x() / r, p.y() / r) : Eigen::Vector2d(1, 0);
-  return {inside ? -d : d, Eigen::Vector3d(n2.x() * radial.x(), n2.x() * radial.y(), n2.y())};
+  return {inside ? -d : d,
+          Eigen::Vector3d(n2.x() * radial.x(), n2.x() * radial.y(), n2.y())};
 }
 
 Distance SignedDistance::OfBox(const Eigen::Vector3d& p) const {

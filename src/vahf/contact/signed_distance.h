@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "vahf/geometry/shape.h"
@@ -27,6 +28,9 @@ class SignedDistance {
   Distance At(const Eigen::Vector3d& p) const;
   // True when p (shape frame) is strictly inside the solid: cheaper than At().
   bool Inside(const Eigen::Vector3d& p) const;
+  // The contact query: At(p) when p is strictly inside the solid, nothing
+  // otherwise. One inside test and, only for points inside, one distance pass.
+  std::optional<Distance> Penetration(const Eigen::Vector3d& p) const;
 
   // Axis-aligned bounds of the solid in its frame, m.
   const Eigen::Vector3d& lower() const { return lower_; }
@@ -34,17 +38,17 @@ class SignedDistance {
 
  private:
   struct Edge {
-    Eigen::Vector2d a, b;   // (r, z) endpoints
+    Eigen::Vector2d a, b;     // (r, z) endpoints
     Eigen::Vector2d outward;  // unit outward normal of the edge in (r, z)
   };
-  Distance OfRevolution(const Eigen::Vector3d& p) const;
+  Distance OfRevolution(const Eigen::Vector3d& p, double r, bool inside) const;
   Distance OfBox(const Eigen::Vector3d& p) const;
   bool InsidePolygon(double r, double z) const;
+  bool InBounds(const Eigen::Vector3d& p) const;
 
   bool is_box_ = false;
-  Eigen::Vector3d half_;           // box half extents
-  std::vector<Eigen::Vector2d> polygon_;  // counter-clockwise (r, z) vertices
-  std::vector<Edge> surface_;      // edges not on the axis
+  Eigen::Vector3d half_;       // box half extents
+  std::vector<Edge> surface_;  // edges not on the axis, counter-clockwise
   Eigen::Vector3d lower_, upper_;
 };
 
