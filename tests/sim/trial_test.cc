@@ -4,12 +4,14 @@
 // total stiffness, plus half the onset depth of the C1 law), a frictionless
 // peg falling into a chamfered bore under gravity alone; determinism (two runs
 // of a seed give the same trace bytes); RungeKuttaMerson and CPodes at tight
-// accuracy agree on the completion time; each outcome status is reachable.
+// accuracy agree on the completion time; Whitney's wedging condition for a
+// peg in two-point contact; each outcome status is reachable.
 #include "vahf/sim/trial.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "vahf/core/error.h"
@@ -24,25 +26,28 @@ using nlohmann::json;
 constexpr double kG = 9.80665;
 
 json Operator() {
-  return {{"height", 1.75}, {"arm_length", 0.74}, {"position", {0.0, -0.35}},
+  return {{"height", 1.75},
+          {"arm_length", 0.74},
+          {"position", {0.0, -0.35}},
           {"facing_deg", 90}};
 }
 
 json Box(const std::string& name, const std::string& role, json size, json position,
          double rot_x_deg = 0.0) {
-  json part = {{"name", name},
-               {"role", role},
-               {"geometry", {{"type", "box"}, {"size", size}}},
-               {"density", 2700},
-               {"friction", 0.2},
-               {"pose", {{"position", position}, {"rotation_xyz_deg", {rot_x_deg, 0, 0}}}}};
+  json part = {
+      {"name", name},
+      {"role", role},
+      {"geometry", {{"type", "box"}, {"size", size}}},
+      {"density", 2700},
+      {"friction", 0.2},
+      {"pose", {{"position", position}, {"rotation_xyz_deg", {rot_x_deg, 0, 0}}}}};
   return part;
 }
 
 scene::Scene Parse(const json& doc) { return scene::ParseScene(doc, "test_scene.json"); }
 
 json Scene(json parts, json sequence, json parameters) {
-  return {{"format", "vahf-scene/1"}, {"name", "test"},   {"operator", Operator()},
+  return {{"format", "vahf-scene/1"}, {"name", "test"},       {"operator", Operator()},
           {"parts", parts},           {"sequence", sequence}, {"parameters", parameters}};
 }
 
@@ -53,11 +58,12 @@ scene::Scene LoadExample(const std::string& name) {
 TEST(Trial, FreeFallIsExact) {
   json block = Box("block", "assembling", {0.04, 0.04, 0.04}, {0.0, 0.0, 1.0});
   block["target"] = {{"position", {0.0, 0.0, -5.0}}};
-  const scene::Scene s = Parse(Scene(
-      {block}, {"block"},
-      {{"guidance", {{"mode", "none"}}},
-       {"visibility", {{"mode", "off"}}},
-       {"simulation", {{"time_limit", 0.5}, {"decision_interval", 0.05}, {"accuracy", 1e-8}}}}));
+  const scene::Scene s = Parse(
+      Scene({block}, {"block"},
+            {{"guidance", {{"mode", "none"}}},
+             {"visibility", {{"mode", "off"}}},
+             {"simulation",
+              {{"time_limit", 0.5}, {"decision_interval", 0.05}, {"accuracy", 1e-8}}}}));
   const TrialResult r = RunTrial(s, {1, 0});
   EXPECT_EQ(r.status, Status::kTimeout);
   EXPECT_EQ(r.counters.shell_points, 0);  // nothing to touch: no contact work at all
@@ -65,7 +71,8 @@ TEST(Trial, FreeFallIsExact) {
   ASSERT_EQ(r.trace.size(), 10u);
   for (const TraceRow& row : r.trace) {
     // A quadratic is integrated exactly by every Runge-Kutta method: round-off only.
-    EXPECT_NEAR(row.position.z(), 1.0 - 0.5 * kG * row.time * row.time, 1e-12) << row.time;
+    EXPECT_NEAR(row.position.z(), 1.0 - 0.5 * kG * row.time * row.time, 1e-12)
+        << row.time;
     EXPECT_NEAR(row.velocity.z(), -kG * row.time, 1e-12) << row.time;
     EXPECT_NEAR(row.position.x(), 0.0, 1e-15);
   }
@@ -88,7 +95,8 @@ TEST(Trial, BlockSlidesDownInclineWithCoulombFriction) {
       {{"guidance", {{"mode", "none"}}},
        {"visibility", {{"mode", "off"}}},
        {"contact", {{"stiffness", 1e8}, {"shell_spacing", 0.005}, {"dissipation", 20}}},
-       {"simulation", {{"time_limit", 0.5}, {"decision_interval", 0.05}, {"accuracy", 1e-6}}}}));
+       {"simulation",
+        {{"time_limit", 0.5}, {"decision_interval", 0.05}, {"accuracy", 1e-6}}}}));
   const TrialResult r = RunTrial(s, {1, 0});
   ASSERT_EQ(r.status, Status::kTimeout) << r.detail;
   const Eigen::Vector3d down(0, -std::cos(t), -std::sin(t));
@@ -113,19 +121,25 @@ TEST(Trial, RestingPenetrationIsWeightOverStiffness) {
   json table = Box("table", "base", {0.4, 0.4, 0.05}, {0.0, 0.0, 0.875});
   json block = Box("block", "assembling", {0.04, 0.04, 0.04}, {0.0, 0.0, 0.92});
   block["target"] = {{"position", {0.0, 0.0, 1.5}}};
-  const scene::Scene s = Parse(Scene(
-      {table, block}, {"block"},
-      {{"guidance", {{"mode", "none"}}},
-       {"visibility", {{"mode", "off"}}},
-       {"contact", {{"stiffness", k}, {"onset_depth", onset}, {"shell_spacing", 0.005},
-                    {"dissipation", 50}}},
-       {"simulation", {{"time_limit", 0.6}, {"decision_interval", 0.1}, {"accuracy", 1e-7}}}}));
+  const scene::Scene s = Parse(
+      Scene({table, block}, {"block"},
+            {{"guidance", {{"mode", "none"}}},
+             {"visibility", {{"mode", "off"}}},
+             {"contact",
+              {{"stiffness", k},
+               {"onset_depth", onset},
+               {"shell_spacing", 0.005},
+               {"dissipation", 50}}},
+             {"simulation",
+              {{"time_limit", 0.6}, {"decision_interval", 0.1}, {"accuracy", 1e-7}}}}));
   const TrialResult r = RunTrial(s, {1, 0});
   const double mass = 2700 * 0.04 * 0.04 * 0.04;
   const double area = 0.04 * 0.04;
-  const double expected = mass * kG / (k * area) + 0.5 * onset;  // linear branch of the law
+  const double expected =
+      mass * kG / (k * area) + 0.5 * onset;  // linear branch of the law
   const double depth = 0.92 - r.trace.back().position.z();
-  EXPECT_NEAR(depth, expected, 1e-3 * expected) << "after " << r.trace.back().time << " s";
+  EXPECT_NEAR(depth, expected, 1e-3 * expected)
+      << "after " << r.trace.back().time << " s";
   EXPECT_NEAR(r.trace.back().contact_force.z(), mass * kG, 1e-3 * mass * kG);
 }
 
@@ -168,6 +182,112 @@ TEST(Trial, MersonAndCPodesAgreeAtTightAccuracy) {
   EXPECT_NEAR(rkm.completion_time, bdf.completion_time, 0.01 * rkm.completion_time);
 }
 
+// Whitney's wedging condition (D. E. Whitney, "Quasi-static assembly of
+// compliantly supported rigid parts", J. Dyn. Sys. Meas. Control 104 (1982)
+// 65-77): a peg of diameter d in two-point contact in a hole of diameter D,
+// with l the insertion depth between the two contacts along the peg, can be
+// wedged when l / D < mu: the two contact forces are then an internal pair
+// along the line joining the contacts, whose angle to the wall normal,
+// atan(l / D), lies inside both friction cones. When l / D > mu the pair
+// cannot be held, and the peg slides in, relieving the squeeze.
+//
+// The peg is placed in two-point contact with a 20 um interference (the squeeze
+// left by the push that wedged it), then let go: no operator, and gravity set
+// aside so that the pair is the only load, as in Whitney's analysis. Geometry:
+// sharp-edged bore of D = 20.1 mm (50 um radial clearance), peg d = 20 mm,
+// l sin(theta) + d cos(theta) = D + interference for the tilt theta.
+struct WhitneyCase {
+  double l_over_d, mu;
+};
+
+TrialResult RunWhitney(const WhitneyCase& w, double* depth_change, double* tilt_change) {
+  const double r = 0.01, rh = 0.01005, d = 2 * r, hole = 2 * rh, squeeze = 20e-6;
+  const double l = w.l_over_d * hole;
+  double lo = 0, hi = 0.3;  // the small root of l sin t + d cos t = D + squeeze
+  for (int k = 0; k < 100; ++k) {
+    const double t = 0.5 * (lo + hi);
+    (l * std::sin(t) + d * std::cos(t) < hole + squeeze ? lo : hi) = t;
+  }
+  const double theta = 0.5 * (lo + hi);
+  // Rim point at phi = +90 deg on the +y wall; the -y side line through the edge.
+  const double oy = rh + squeeze / 2 - r * std::cos(theta);
+  const double oz = r * std::sin(theta) - l * std::cos(theta);
+  json bore = {{"name", "bore"},
+               {"role", "base"},
+               {"geometry",
+                {{"type", "revolution"},
+                 {"profile",
+                  {{0, -0.05},
+                   {0.03, -0.05},
+                   {0.03, 0},
+                   {rh, 0},
+                   {rh, -0.04},
+                   {0, -0.04},
+                   {0, -0.05}}}}},
+               {"density", 7850},
+               {"friction", w.mu},
+               {"pose", {{"position", {0, 0, 0}}}}};
+  json peg = {
+      {"name", "peg"},
+      {"role", "assembling"},
+      {"geometry",
+       {{"type", "revolution"},
+        {"profile", {{0, 0}, {r, 0}, {r, 0.05}, {0, 0.05}, {0, 0}}}}},
+      {"density", 7850},
+      {"friction", w.mu},  // pair coefficient 2 mu mu / (mu + mu) = mu
+      {"pose",
+       {{"position", {0, oy, oz}}, {"rotation_xyz_deg", {theta * 180 / M_PI, 0, 0}}}},
+      {"target", {{"position", {0, 0, -0.04}}}}};
+  json doc = Scene(
+      {bore, peg}, {"peg"},
+      {{"guidance", {{"mode", "none"}}},
+       {"visibility", {{"mode", "off"}}},
+       // Sticking needs a slip regularisation far below any sliding speed;
+       // the stiff friction law that results is CPodes' domain.
+       {"contact", {{"shell_spacing", 0.25e-3}, {"friction_transition_speed", 1e-5}}},
+       {"simulation",
+        {{"integrator", "CPodes"},
+         {"time_limit", 0.3},
+         {"jam_time", 0.25},
+         {"decision_interval", 0.05}}}});
+  doc["gravity"] = {0, 0, 0};
+  const TrialResult result = RunTrial(Parse(doc), {1, 0});
+  const TraceRow& first = result.trace.front();
+  const TraceRow& last = result.trace.back();
+  *depth_change = first.position.z() - last.position.z();  // > 0: deeper
+  *tilt_change = 2 * (std::asin(std::abs(last.orientation.x())) -
+                      std::asin(std::abs(first.orientation.x())));
+  return result;
+}
+
+TEST(Trial, TwoPointContactWedgesWhenWhitneysConditionHolds) {
+  for (const WhitneyCase w : {WhitneyCase{0.15, 0.3}, WhitneyCase{0.3, 0.6}}) {
+    double depth_change = 0, tilt_change = 0;
+    const TrialResult r = RunWhitney(w, &depth_change, &tilt_change);
+    SCOPED_TRACE(::testing::Message() << "l/D = " << w.l_over_d << ", mu = " << w.mu);
+    EXPECT_EQ(r.status, Status::kJammed) << r.detail;
+    // Held: the contacts settle elastically by well under a micrometre and
+    // 0.02 deg, against tens of micrometres and tenths of a degree when it slides.
+    EXPECT_LT(std::abs(depth_change), 1e-6);
+    EXPECT_LT(std::abs(tilt_change), 0.02 * M_PI / 180);
+    std::printf("l/D %.2f mu %.2f: %.3f um deeper, tilt %+.4f deg, %s\n", w.l_over_d,
+                w.mu, depth_change * 1e6, tilt_change * 180 / M_PI, StatusName(r.status));
+  }
+}
+
+TEST(Trial, TwoPointContactSlidesInWhenWhitneysConditionFails) {
+  for (const WhitneyCase w : {WhitneyCase{0.6, 0.3}, WhitneyCase{0.3, 0.15}}) {
+    double depth_change = 0, tilt_change = 0;
+    const TrialResult r = RunWhitney(w, &depth_change, &tilt_change);
+    SCOPED_TRACE(::testing::Message() << "l/D = " << w.l_over_d << ", mu = " << w.mu);
+    EXPECT_NE(r.status, Status::kJammed) << r.detail;
+    EXPECT_GT(depth_change, 10e-6);  // it slides in
+    EXPECT_LT(tilt_change, -1e-4);   // and straightens, releasing the squeeze
+    std::printf("l/D %.2f mu %.2f: %.1f um deeper, tilt %+.4f deg, %s\n", w.l_over_d,
+                w.mu, depth_change * 1e6, tilt_change * 180 / M_PI, StatusName(r.status));
+  }
+}
+
 TEST(Trial, UnreachableWhenBeyondD3) {
   scene::Scene s = LoadExample("free_move.json");
   s.op.position = {0.0, -3.0};  // three metres away
@@ -181,6 +301,21 @@ TEST(Trial, ExhaustedAtThePsiFloor) {
   s.params.fatigue.a_max = 20.0;  // J: the first move of 0.3 m exhausts the operator
   const TrialResult r = RunTrial(s, {1, 0});
   EXPECT_EQ(r.status, Status::kExhausted) << r.detail;
+}
+
+TEST(Trial, DivergedIntegrationIsANumericalFailureNotACrash) {
+  // A fixed 5 ms step is far beyond the stability limit of the stiff contact
+  // (about 0.1 ms): the state blows up, and the trial says where.
+  scene::Scene s = LoadExample("peg_in_hole.json");
+  s.params.simulation.integrator = "FixedStep";
+  s.params.simulation.fixed_step = 5e-3;
+  const TrialResult r = RunTrial(s, {1, 0});
+  EXPECT_EQ(r.status, Status::kNumericalFailure);
+  EXPECT_NE(r.detail.find("diverged"), std::string::npos) << r.detail;
+  EXPECT_NE(r.detail.find("at decision"), std::string::npos) << r.detail;
+  // The same scene at the default step completes.
+  s.params.simulation.fixed_step = 1e-4;
+  EXPECT_EQ(RunTrial(s, {1, 0}, {0, 0.0, false}).status, Status::kCompleted);
 }
 
 TEST(Trial, RaycastVisibilityIsNotYetAvailable) {

@@ -190,6 +190,12 @@ expect_status "trial with an unwritable trace path" 2
 expect_in "trial with an unwritable trace path" "$err" "no_such_dir/peg.csv"
 run trial "$scene" --seed 1 --integrator NoSuchIntegrator
 expect_status "trial with an unknown integrator" 2
+for position in 1 -1; do
+  run trial "$scene" --seed 1 --position "$position"
+  expect_status "trial --position $position (one part in the sequence)" 2
+  expect_in "trial --position $position" "$err" "--position = $position: must be 0 to 0"
+  expect_lines "trial --position $position" "$err" 1
+done
 
 # --- help and bad options.
 run --help

@@ -22,8 +22,9 @@ int Check(const std::string& path) {
   const nlohmann::json document = vahf::scene::ReadJsonFile(path);  // read once
   const std::string format = vahf::scene::FormatOf(document, path);
   if (format == "scene") {
-    std::fputs(vahf::scene::DescribeScene(vahf::scene::ParseScene(document, path)).c_str(),
-               stdout);
+    std::fputs(
+        vahf::scene::DescribeScene(vahf::scene::ParseScene(document, path)).c_str(),
+        stdout);
   } else {
     const vahf::scene::ExperimentFile e = vahf::scene::ParseExperiment(document, path);
     std::printf("experiment '%s' (%s): kind %s, seed %llu, %d trials\n", e.name.c_str(),
@@ -56,9 +57,10 @@ int Trial(const TrialArgs& a) {
   vahf::scene::Scene scene = vahf::scene::LoadScene(a.scene);
   if (!a.integrator.empty()) scene.params.simulation.integrator = a.integrator;
   if (a.accuracy > 0) scene.params.simulation.accuracy = a.accuracy;
-  if (a.position >= static_cast<int>(scene.sequence.size()))
+  if (a.position < 0 || a.position >= static_cast<int>(scene.sequence.size()))
     throw vahf::InputError("--position", "", std::to_string(a.position),
-                           "the scene's sequence has " +
+                           "must be 0 to " + std::to_string(scene.sequence.size() - 1) +
+                               ": the scene's sequence has " +
                                std::to_string(scene.sequence.size()) + " parts");
   vahf::sim::TrialOptions options;
   options.sequence_position = a.position;
@@ -66,7 +68,8 @@ int Trial(const TrialArgs& a) {
   const vahf::sim::TrialResult r = vahf::sim::RunTrial(scene, {a.seed, a.trial}, options);
   if (!a.trace.empty()) vahf::WriteFileAtomically(a.trace, vahf::sim::TraceCsv(r));
   std::fputs(r.BriefReport().c_str(), stdout);
-  if (!a.trace.empty()) std::printf("trace: %s (%zu rows)\n", a.trace.c_str(), r.trace.size());
+  if (!a.trace.empty())
+    std::printf("trace: %s (%zu rows)\n", a.trace.c_str(), r.trace.size());
   return 0;
 }
 
@@ -97,12 +100,13 @@ int main(int argc, char** argv) {
       ->required();
   trial->add_option("--trial", trial_args.trial, "trial index (the stream key)")
       ->capture_default_str();
-  trial->add_option("--position", trial_args.position,
-                    "which entry of the scene's sequence to assemble (0 = first)")
-      ->check(CLI::NonNegativeNumber)
+  trial
+      ->add_option("--position", trial_args.position,
+                   "which entry of the scene's sequence to assemble (0 = first)")
       ->capture_default_str();
-  trial->add_option("--integrator", trial_args.integrator,
-                    "override simulation/integrator")
+  trial
+      ->add_option("--integrator", trial_args.integrator,
+                   "override simulation/integrator")
       ->check(CLI::IsMember(vahf::scene::IntegratorNames()));
   trial->add_option("--accuracy", trial_args.accuracy, "override simulation/accuracy")
       ->check(CLI::PositiveNumber);

@@ -63,6 +63,7 @@ std::vector<ParamSpec> MakeTable() {
       {"simulation", "completion_angle_deg", "deg", R::kAngle, "and the angle to the target orientation is below it", VAHF_REAL(simulation.completion_angle_deg)},
       {"simulation", "jam_time", "s", R::kPositive, "in contact this long without progress: jammed", VAHF_REAL(simulation.jam_time)},
       {"simulation", "jam_progress", "m", R::kPositive, "approach to the target that counts as progress", VAHF_REAL(simulation.jam_progress)},
+      {"simulation", "divergence_speed", "m/s", R::kPositive, "a part point faster than this: the integration diverged (numerical_failure)", VAHF_REAL(simulation.divergence_speed)},
       {"simulation", "integrator", "-", R::kChoice, "Simbody integrator", nullptr, nullptr, VAHF_TEXT(simulation.integrator), IntegratorNames()},
       {"simulation", "accuracy", "1", R::kPositive, "integrator relative accuracy", VAHF_REAL(simulation.accuracy)},
       {"simulation", "fixed_step", "s", R::kPositive, "step of the FixedStep integrator", VAHF_REAL(simulation.fixed_step)},

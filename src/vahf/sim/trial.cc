@@ -62,8 +62,9 @@ struct TrialContext {
   std::optional<contact::ContactModel> contact;
   human::Posture posture;
   human::FactorCurves curves;
-  double reach_limit = 0;  // D3, m
-  bool revolved = false;   // orientation about the part's own z axis is free
+  double reach_limit = 0;      // D3, m
+  bool revolved = false;       // orientation about the part's own z axis is free
+  double bounding_radius = 0;  // of the part about its frame origin, m
 
   // Simbody handles.
   SimTK::MobilizedBodyIndex body;
@@ -187,6 +188,16 @@ void Decide(TrialContext& c, SimTK::State& s) {
           fmt::format("non-finite state at decision {} (t = {} s)", i, s.getTime());
       return;
     }
+  }
+  // The fastest point of the part's bounding sphere, a bound on any point's speed.
+  const double speed = m.velocity.norm() + m.angular_velocity.norm() * c.bounding_radius;
+  if (speed > p.simulation.divergence_speed) {
+    c.ended = Status::kNumericalFailure;
+    c.detail = fmt::format(
+        "diverged: a point of the part moves at up to {:.6g} m/s > divergence_speed {} "
+        "m/s at decision {} (t = {} s, position {:.6g} {:.6g} {:.6g} m)",
+        speed, p.simulation.divergence_speed, i, s.getTime(), T.x(), T.y(), T.z());
+    return;
   }
 
   // Fatigue: Eq. 4 over the last interval's travel with the force held then, Eq. 6.
@@ -357,6 +368,7 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   c.mass = part.mass;
   c.com = part.mass_properties.centroid;
   c.inertia_body = (part.density * part.mass_properties.inertia_per_density).asDiagonal();
+  c.bounding_radius = part.mass_properties.bounding_radius;
   c.revolved = std::holds_alternative<geometry::RevolvedProfile>(part.shape);
   c.work = options.initial_work;
   c.record_trace = options.record_trace;
