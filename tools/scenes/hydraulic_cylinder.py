@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""Writes experiments/scenes/hydraulic_cylinder.json (run from the repository root).
+
+Dimensions: bore 63 mm with rod 36 mm, a bore/rod pair of ISO 6020-2 (16 MPa
+compact series). Fits: ISO 286-2 H8/f7 at mid-tolerance -- for 50-65 mm H8 is
+0..+46 um and f7 -30..-60 um; for 30-50 mm H8 is 0..+39 um and f7 -25..-50 um.
+Chamfers 1 mm x 45 deg. Densities: steel 7850 kg/m^3, PTFE 2200 kg/m^3.
+"""
+import json
+import sys
+mm = 1e-3
+bench = 0.70                       # workbench top, m
+bore_r = (63.0 + 0.023) / 2 * mm   # H8: 0..+46 um -> mid +23
+piston_r = (63.0 - 0.045) / 2 * mm # f7: -30..-60 um -> mid -45
+rod_r = (36.0 - 0.0375) / 2 * mm   # f7: -25..-50 -> mid -37.5
+sleeve_in_r = (36.0 + 0.0195) / 2 * mm  # H8: 0..+39 -> mid +19.5
+barrel_out = 40 * mm; barrel_len = 300 * mm; floor_t = 10 * mm
+ch = 1.0 * mm                      # 1 mm x 45 deg chamfers
+def r6(x): return round(x, 7)
+def prof(points): return [[r6(r), r6(z)] for r, z in points]
+barrel = [(0, 0), (barrel_out, 0), (barrel_out, barrel_len), (bore_r + ch, barrel_len),
+          (bore_r, barrel_len - ch), (bore_r, floor_t), (0, floor_t), (0, 0)]
+piston_len = 40 * mm; rod_len = 330 * mm
+rod = [(0, 0), (piston_r - ch, 0), (piston_r, ch), (piston_r, piston_len), (rod_r, piston_len),
+       (rod_r, piston_len + rod_len - ch), (rod_r - ch, piston_len + rod_len), (0, piston_len + rod_len), (0, 0)]
+sl_len = 50 * mm
+sleeve = [(sleeve_in_r + ch, 0), (piston_r - ch, 0), (piston_r, ch), (piston_r, sl_len),
+          (sleeve_in_r, sl_len), (sleeve_in_r, ch), (sleeve_in_r + ch, 0)]
+seal_in = 36.2 / 2 * mm; seal_out = 28 * mm; seal_t = 8 * mm
+seal = [(seal_in, 0), (seal_out, 0), (seal_out, seal_t), (seal_in, seal_t), (seal_in, 0)]
+top = bench + barrel_len
+rod_target = bench + floor_t
+scene = {
+ "format": "vahf-scene/1",
+ "name": "hydraulic_cylinder",
+ "description": ("A medium-scale hydraulic cylinder (about 9 kg): bore 63 mm with rod 36 mm, a bore/rod pair of ISO 6020-2; "
+   "piston in barrel and guide sleeve on rod and in barrel with ISO 286 H8/f7 clearance fits at mid-tolerance "
+   "(34 and 28 micrometres radial); 1 mm x 45 deg chamfers; steel 7850 kg/m^3, PTFE seal ring 2200 kg/m^3. "
+   "The barrel stands on a 0.70 m workbench; sequence piston rod, guide sleeve, seal ring (paper Fig. 9)."),
+ "operator": {"height": 1.75, "arm_length": 0.74, "position": [0.0, -0.40], "facing_deg": 90, "sex": "male"},
+ "parts": [
+  {"name": "barrel", "role": "base", "geometry": {"type": "revolution", "profile": prof(barrel)},
+   "density": 7850, "friction": 0.15, "pose": {"position": [0.0, 0.0, bench]}},
+  {"name": "piston_rod", "role": "assembling", "geometry": {"type": "revolution", "profile": prof(rod)},
+   "density": 7850, "friction": 0.15,
+   "pose": {"position": [0.004, -0.02, r6(top + 0.03)], "rotation_xyz_deg": [3.0, 0.0, 0.0]},
+   "grasp": [0.0, 0.0, r6(piston_len + rod_len - 0.03)],
+   "target": {"position": [0.0, 0.0, r6(rod_target)]}},
+  {"name": "guide_sleeve", "role": "assembling", "geometry": {"type": "revolution", "profile": prof(sleeve)},
+   "density": 7850, "friction": 0.15,
+   "pose": {"position": [0.0005, -0.0003, r6(rod_target + piston_len + rod_len + 0.02)], "rotation_xyz_deg": [1.0, 0.0, 0.0]},
+   "target": {"position": [0.0, 0.0, r6(top - sl_len)]}},
+  {"name": "seal_ring", "role": "assembling", "geometry": {"type": "revolution", "profile": prof(seal)},
+   "density": 2200, "friction": 0.08,
+   "pose": {"position": [0.0004, -0.0003, r6(rod_target + piston_len + rod_len + 0.02)], "rotation_xyz_deg": [1.0, 0.0, 0.0]},
+   "target": {"position": [0.0, 0.0, r6(top)]}}
+ ],
+ "sequence": ["piston_rod", "guide_sleeve", "seal_ring"],
+ "parameters": {"contact": {"shell_spacing": 0.002}}
+}
+out = sys.argv[1] if len(sys.argv) > 1 else "experiments/scenes/hydraulic_cylinder.json"
+with open(out, "w") as f:
+    json.dump(scene, f, indent=1)
+    f.write("\n")
