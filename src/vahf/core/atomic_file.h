@@ -7,7 +7,8 @@
 
 namespace vahf {
 
-// An unwritable path is an InputError naming it; no .partial file remains.
+// An unwritable path is an InputError naming it and the operating system's
+// reason; no .partial file remains.
 void WriteFileAtomically(const std::string& path, const std::string& text);
 
 }  // namespace vahf

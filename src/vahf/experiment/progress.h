@@ -1,0 +1,45 @@
+// The progress line of a long Monte Carlo run on a terminal:
+//   "label: 120/500 trials, 35.2 trials/s, about 11 s left"
+// rewritten in place with a carriage return, at most twice a second and only
+// once the run has lasted more than 2 s, so short runs print nothing. Time is
+// passed in, not read, so the rules are testable without waiting.
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+#include <string>
+
+namespace vahf::experiment {
+
+// The line for `done` of `total` trials after `elapsed_s` seconds; without the
+// "label: " prefix when the label is empty.
+std::string FormatProgress(const std::string& label, std::size_t done, std::size_t total,
+                           double elapsed_s);
+
+class ProgressMeter {
+ public:
+  static constexpr double kQuietSeconds = 2.0;     // nothing before this
+  static constexpr double kIntervalSeconds = 0.5;  // at most twice a second
+
+  // A null stream or enabled = false prints nothing.
+  ProgressMeter(std::string label, std::size_t total, bool enabled, std::FILE* stream);
+
+  // Rewrites the line if the rules above allow it.
+  void Update(std::size_t done, double elapsed_s);
+  // Writes the final state ("finished in" or "stopped after") and a newline,
+  // only if Update printed anything.
+  void Finish(std::size_t done, double elapsed_s);
+
+  bool printed() const { return printed_width_ > 0; }
+
+ private:
+  void Print(const std::string& line, bool final_line);
+
+  std::string label_;
+  std::size_t total_;
+  std::FILE* stream_;
+  double last_print_s_ = -1.0;
+  std::size_t printed_width_ = 0;  // length of the last line, to blank its tail
+};
+
+}  // namespace vahf::experiment

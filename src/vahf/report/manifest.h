@@ -1,0 +1,62 @@
+// The manifest of a run (docs/outputs.md): everything needed to re-run it -
+// input files and their digests, seed, trial count, every model parameter,
+// what built the program - and one digest of the results, which two runs of
+// the same inputs must share whatever their thread count or wall time.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "vahf/report/build_info.h"
+#include "vahf/scene/parameters.h"
+
+namespace vahf::report {
+
+inline constexpr const char* kManifestFormat = "vahf-manifest/1";
+
+// An input file as the user named it, and the SHA-256 of its bytes.
+struct InputFile {
+  std::string path;
+  std::string sha256;
+};
+// Reads and digests `path` (an InputError if unreadable).
+InputFile DescribeInputFile(const std::string& path);
+
+// Every model parameter as group -> key -> value, with the groups and keys of
+// a scene file's "parameters" object (scene/parameter_table.h): a scene that
+// sets this object reproduces `p` exactly. Numbers are JSON numbers (doubles
+// round-trip), choices strings.
+nlohmann::json ParametersToJson(const scene::Parameters& p);
+
+// The results digest: SHA-256 over the files in name order (std::string
+// order of the names), each contributing its name, a NUL byte, its bytes and
+// a NUL byte. Only result files enter it (CSV tables, summary.json): never
+// the manifest, wall times, or plots whose bytes depend on the renderer.
+std::string ResultsDigest(const std::map<std::string, std::string>& files);
+// The same over files read from `root`/name (InputError if one is unreadable).
+std::string ResultsDigestOfFiles(const std::string& root,
+                                 const std::vector<std::string>& names);
+
+struct ManifestFields {
+  InputFile experiment;
+  InputFile scene;
+  std::uint64_t seed = 0;
+  std::int64_t trials = 0;
+  int threads = 1;
+  scene::Parameters parameters;  // the scene's, after its overrides
+  BuildInfo build = GetBuildInfo();
+  std::vector<std::string> result_files;  // the names ResultsDigest covered
+  std::string results_digest;
+};
+
+// {"format": "vahf-manifest/1", "experiment": {"path", "sha256"}, "scene":
+// {...}, "seed", "trials", "threads", "parameters": ParametersToJson,
+// "build": {"version", "git_describe", "compiler", "compiler_version",
+// "build_type", "cxx_flags"}, "result_files": [...], "results_digest"}.
+// Keys are sorted, so dump() is deterministic.
+nlohmann::json ManifestJson(const ManifestFields& fields);
+
+}  // namespace vahf::report

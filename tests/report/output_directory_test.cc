@@ -1,0 +1,158 @@
+// The output directory appears whole at Commit() or not at all: nothing at
+// PATH while staging or after an abandoned run; a previous output is replaced
+// entirely; folders that are not vahf outputs are never replaced; errors name
+// the path and the operating system's reason.
+#include "vahf/report/output_directory.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "vahf/core/error.h"
+
+namespace vahf::report {
+namespace {
+namespace fs = std::filesystem;
+
+std::string Read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class OutputDirectoryTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ =
+        fs::path(::testing::TempDir()) /
+        ("output_directory_test_" +
+         std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+  }
+  void TearDown() override { fs::remove_all(root_); }
+
+  std::string Under(const std::string& name) const { return (root_ / name).string(); }
+
+  fs::path root_;
+};
+
+TEST_F(OutputDirectoryTest, NothingAppearsBeforeCommit) {
+  const std::string path = Under("run");
+  {
+    OutputDirectory out(path);
+    EXPECT_EQ(out.staging(), path + ".partial");
+    out.Write("trials.csv", "trial\n0\n");
+    out.Write("plots/time.gp", "plot x");
+    EXPECT_FALSE(fs::exists(path));
+    EXPECT_EQ(out.Files(), (std::vector<std::string>{"plots/time.gp", "trials.csv"}));
+    out.Commit();
+    EXPECT_TRUE(out.committed());
+  }
+  EXPECT_EQ(Read(fs::path(path) / "trials.csv"), "trial\n0\n");
+  EXPECT_EQ(Read(fs::path(path) / "plots" / "time.gp"), "plot x");
+  EXPECT_FALSE(fs::exists(path + ".partial"));
+  EXPECT_FALSE(fs::exists(path + ".old"));
+}
+
+TEST_F(OutputDirectoryTest, AnAbandonedRunLeavesNothing) {
+  const std::string path = Under("run");
+  {
+    OutputDirectory out(path);
+    out.Write("trials.csv", "half");
+  }  // an exception or Ctrl-C unwinds here without Commit
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_FALSE(fs::exists(path + ".partial"));
+}
+
+TEST_F(OutputDirectoryTest, APreviousOutputIsReplacedWhole) {
+  const std::string path = Under("run");
+  {
+    OutputDirectory first(path);
+    first.Write("manifest.json", "{}");
+    first.Write("only_in_first.csv", "x");
+    first.Commit();
+  }
+  {
+    OutputDirectory second(path);
+    second.Write("manifest.json", "{\"run\": 2}");
+    // Until the commit the first output stays complete.
+    EXPECT_TRUE(fs::exists(fs::path(path) / "only_in_first.csv"));
+    second.Commit();
+  }
+  EXPECT_EQ(Read(fs::path(path) / "manifest.json"), "{\"run\": 2}");
+  EXPECT_FALSE(fs::exists(fs::path(path) / "only_in_first.csv"));
+  EXPECT_FALSE(fs::exists(path + ".old"));
+}
+
+TEST_F(OutputDirectoryTest, AStaleStagingDirectoryIsRemoved) {
+  const std::string path = Under("run/");  // a trailing slash names the same folder
+  fs::create_directories(Under("run.partial/plots"));
+  std::ofstream(Under("run.partial/stale.csv")) << "old";
+  OutputDirectory out(path);
+  EXPECT_EQ(out.path(), Under("run"));
+  EXPECT_TRUE(out.Files().empty());
+}
+
+TEST_F(OutputDirectoryTest, PathCreatesFoldersForOtherPrograms) {
+  OutputDirectory out(Under("nested/deeper/run"));
+  const std::string png = out.Path("plots/time.png");
+  EXPECT_EQ(png, Under("nested/deeper/run.partial/plots/time.png"));
+  EXPECT_TRUE(fs::is_directory(fs::path(png).parent_path()));
+}
+
+TEST_F(OutputDirectoryTest, FoldersThatAreNotOutputsAreNeverReplaced) {
+  fs::create_directories(Under("home"));
+  std::ofstream(Under("home/thesis.tex")) << "precious";
+  try {
+    OutputDirectory out(Under("home"));
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), Under("home"));
+    EXPECT_EQ(e.rule(),
+              "exists and holds no manifest.json, so it is not a vahf output: remove it "
+              "or choose another path");
+  }
+  EXPECT_FALSE(fs::exists(Under("home.partial")));
+  std::ofstream(Under("file")) << "x";
+  EXPECT_THROW(OutputDirectory(Under("file")), InputError);
+  EXPECT_THROW(OutputDirectory("."), InputError);
+  // An empty folder may be used.
+  fs::create_directories(Under("empty"));
+  OutputDirectory(Under("empty")).Commit();
+}
+
+TEST_F(OutputDirectoryTest, ACommitRechecksThePath) {
+  OutputDirectory out(Under("run"));
+  fs::create_directories(Under("run"));
+  std::ofstream(Under("run/notes.txt")) << "appeared meanwhile";
+  EXPECT_THROW(out.Commit(), InputError);
+  EXPECT_EQ(Read(Under("run/notes.txt")), "appeared meanwhile");
+}
+
+TEST_F(OutputDirectoryTest, ErrorsNameThePathAndTheReason) {
+  std::ofstream(Under("blocker")) << "a file where a folder should be";
+  try {
+    OutputDirectory out(Under("blocker/run"));
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              Under("blocker") + ": cannot create the folder: Not a directory");
+  }
+}
+
+using OutputDirectoryDeathTest = OutputDirectoryTest;
+
+TEST_F(OutputDirectoryDeathTest, BadRelativeNamesAreBugs) {
+  OutputDirectory out(Under("run"));
+  EXPECT_DEATH(out.Write("../escape.csv", "x"), "not a plain relative path");
+  EXPECT_DEATH(out.Write("/abs.csv", "x"), "not a plain relative path");
+  EXPECT_DEATH(out.Write("", "x"), "not a plain relative path");
+}
+
+}  // namespace
+}  // namespace vahf::report
