@@ -43,8 +43,8 @@ scene = {
    "density": 7850, "friction": 0.15, "pose": {"position": [0.0, 0.0, bench]}},
   {"name": "piston_rod", "role": "assembling", "geometry": {"type": "revolution", "profile": prof(rod)},
    "density": 7850, "friction": 0.15,
-   "pose": {"position": [0.004, -0.02, r6(top + 0.03)], "rotation_xyz_deg": [3.0, 0.0, 0.0]},
-   "grasp": [0.0, 0.0, r6(piston_len + rod_len - 0.03)],
+   "pose": {"position": [0.0, -0.002, r6(top + 0.10)], "rotation_xyz_deg": [2.0, 0.0, 0.0]},
+   "grasp": [0.0, 0.0, 0.15],  # near the centre of mass: a grasp at the far end tips the rod (measured)
    "target": {"position": [0.0, 0.0, r6(rod_target)]}},
   {"name": "guide_sleeve", "role": "assembling", "geometry": {"type": "revolution", "profile": prof(sleeve)},
    "density": 7850, "friction": 0.15,
