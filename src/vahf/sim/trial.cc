@@ -15,6 +15,8 @@
 #include "vahf/human/factors.h"
 #include "vahf/human/fatigue.h"
 #include "vahf/sim/integrators.h"
+#include "vahf/geometry/tessellation.h"
+#include "vahf/visibility/visibility.h"
 
 namespace vahf::sim {
 namespace {
@@ -60,6 +62,8 @@ struct TrialContext {
   Matrix3d inertia_body = Matrix3d::Zero();  // about the centre of mass, part frame
   Vector3d com = Vector3d::Zero();           // part frame
   std::optional<contact::ContactModel> contact;
+  std::optional<visibility::VisibilityCaster> caster;  // only for mode "raycast"
+  std::int64_t rays_cast = 0;
   human::Posture posture;
   human::FactorCurves curves;
   double reach_limit = 0;      // D3, m
@@ -212,8 +216,14 @@ void Decide(TrialContext& c, SimTK::State& s) {
   Vector3d motion = m.velocity;
   if (motion.norm() < 1e-3) motion = c.part->target.position - T;
   if (motion.norm() < 1e-12) motion = -Vector3d::UnitZ();
-  double V = 1.0;
-  if (p.visibility.mode == "constant") V = p.visibility.value;
+  double V = 1.0;  // "off", and "raycast" with nothing that could hide the part
+  if (p.visibility.mode == "constant") {
+    V = p.visibility.value;
+  } else if (c.caster) {
+    const visibility::VisibilityResult seen = c.caster->Compute(c.posture.eye, m.pose);
+    V = seen.V;
+    c.rays_cast += seen.rays_cast;
+  }
   const human::FactorValues f =
       human::EvaluateFactors(c.curves, c.posture, centre, motion, V);
 
@@ -328,8 +338,16 @@ class CompletionTrigger : public SimTK::TriggeredEventHandler {
   TrialContext* c_;
 };
 
-std::vector<contact::Obstacle> FixedParts(const scene::Scene& scene, int position) {
-  std::vector<contact::Obstacle> out;
+// A part that stands still during this trial, where it stands.
+struct FixedPart {
+  const scene::Part* part;
+  Eigen::Isometry3d pose;
+};
+
+// The base, parts with role "assembled", and the parts assembled earlier in
+// the sequence (at their targets). Later parts are not in the trial at all.
+std::vector<FixedPart> FixedParts(const scene::Scene& scene, int position) {
+  std::vector<FixedPart> out;
   for (std::size_t k = 0; k < scene.parts.size(); ++k) {
     const scene::Part& p = scene.parts[k];
     const auto seq =
@@ -338,8 +356,7 @@ std::vector<contact::Obstacle> FixedParts(const scene::Scene& scene, int positio
         seq != scene.sequence.end() && seq - scene.sequence.begin() < position;
     if (p.role == scene::Role::kAssembling && !assembled_earlier) continue;
     const scene::Pose& pose = p.role == scene::Role::kAssembling ? p.target : p.initial;
-    out.push_back({contact::SignedDistance(p.shape), pose.Transform(), p.friction,
-                   p.mass_properties.bounding_radius});
+    out.push_back({&p, pose.Transform()});
   }
   return out;
 }
@@ -352,10 +369,6 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   VAHF_CHECK(options.sequence_position >= 0 &&
                  options.sequence_position < static_cast<int>(scene.sequence.size()),
              "sequence position out of range");
-  if (params.visibility.mode == "raycast")
-    throw InputError(scene.file, "/parameters/visibility/mode", "\"raycast\"",
-                     "ray-cast visibility is not in this build yet (issue 4); set mode "
-                     "\"constant\" with a value, or \"off\"");
   const scene::Part& part = scene.parts[scene.sequence[options.sequence_position]];
 
   TrialContext c({params.sight.Build(),
@@ -374,13 +387,28 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   c.record_trace = options.record_trace;
   c.posture = human::StandingPosture(scene.op);
   c.reach_limit = params.reach.BreakpointsFor(scene.op.arm_length, scene.op.height).d3;
-  std::vector<contact::Obstacle> fixed = FixedParts(scene, options.sequence_position);
+  const std::vector<FixedPart> fixed = FixedParts(scene, options.sequence_position);
   TrialCounters counters;
   if (!fixed.empty()) {  // nothing to touch: no shell, no contact work
+    std::vector<contact::Obstacle> obstacles;
+    for (const FixedPart& f : fixed)
+      obstacles.push_back({contact::SignedDistance(f.part->shape), f.pose, f.part->friction,
+                           f.part->mass_properties.bounding_radius});
     auto shell = contact::MakePointShell(part.shape, params.contact.shell_spacing);
     counters.shell_points = static_cast<std::int64_t>(shell.size());
-    c.contact.emplace(std::move(shell), part.mass_properties.bounding_radius,
-                      part.friction, std::move(fixed), params.contact);
+    c.contact.emplace(std::move(shell), part.mass_properties.bounding_radius, part.friction,
+                      std::move(obstacles), params.contact);
+  }
+  // Eq. 1 by ray casting only when the scene asks for it and something could
+  // hide the part; a scene with V given or switched off tessellates nothing.
+  if (params.visibility.mode == "raycast" && !fixed.empty()) {
+    const double tolerance = params.visibility.tessellation_tolerance;
+    std::vector<visibility::Occluder> occluders;
+    for (const FixedPart& f : fixed)
+      occluders.push_back({geometry::Tessellate(f.part->shape, tolerance), f.pose});
+    visibility::CasterOptions caster_options;
+    caster_options.grid = params.visibility.grid;
+    c.caster.emplace(geometry::Tessellate(part.shape, tolerance), occluders, caster_options);
   }
 
   SimTK::MultibodySystem system;
@@ -443,6 +471,7 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   result.accuracy = params.simulation.accuracy;
   result.key = key;
   counters.decisions = c.last_decision + 1;
+  counters.rays_cast = c.rays_cast;
   counters.steps_taken = integ->getNumStepsTaken();
   counters.steps_attempted = integ->getNumStepsAttempted();
   counters.error_test_failures = integ->getNumErrorTestFailures();

@@ -25,8 +25,9 @@ struct TrialOptions {
 
 // Runs one trial with the integrator and accuracy of scene.params.simulation.
 // Same scene, key and options: the same result bits (wall_seconds aside).
-// Bad input the loader cannot see (a visibility mode this build cannot
-// evaluate) throws vahf::InputError; numerical trouble is a status.
+// With visibility mode "raycast", V (Eq. 1) is cast from the operator's eye
+// at every decision, against the fixed parts; with nothing fixed no mesh is
+// built and no ray is cast. Numerical trouble is a status, never an exception.
 TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
                      const TrialOptions& options = {});
 
