@@ -337,8 +337,31 @@ TEST(Trial, PegSinkingIntoTheBoreIsHiddenByIt) {
   EXPECT_LT(last.factors.V, first.factors.V - 0.3) << "V at t = " << last.time;
   EXPECT_GT(last.factors.eta, first.factors.eta + 0.3);
   for (std::size_t k = 1; k < r.trace.size(); ++k) {
-    EXPECT_LE(r.trace[k].factors.V, r.trace[k - 1].factors.V) << "t = " << r.trace[k].time;
+    EXPECT_LE(r.trace[k].factors.V, r.trace[k - 1].factors.V)
+        << "t = " << r.trace[k].time;
     EXPECT_GE(r.trace[k].factors.V, 0.0);
+  }
+}
+
+TEST(Trial, RayGridAndMeshToleranceOutOfRangeNameTheSceneParameter) {
+  scene::Scene s = LoadExample("peg_in_hole.json");
+  s.params.visibility.mode = "raycast";
+  s.params.visibility.grid = 20000;
+  try {
+    RunTrial(s, {1, 0});
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/parameters/visibility/grid");
+    EXPECT_EQ(e.value(), "20000");
+  }
+  s.params.visibility.grid = 64;
+  s.params.visibility.tessellation_tolerance = 1e-12;  // millions of segments
+  try {
+    RunTrial(s, {1, 0});
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/parameters/visibility/tessellation_tolerance");
+    EXPECT_NE(e.rule().find("part '"), std::string::npos) << e.rule();
   }
 }
 

@@ -10,12 +10,12 @@
 
 #include "vahf/contact/contact_model.h"
 #include "vahf/core/error.h"
+#include "vahf/geometry/tessellation.h"
 #include "vahf/guidance/assembly_force.h"
 #include "vahf/guidance/assembly_torque.h"
 #include "vahf/human/factors.h"
 #include "vahf/human/fatigue.h"
 #include "vahf/sim/integrators.h"
-#include "vahf/geometry/tessellation.h"
 #include "vahf/visibility/visibility.h"
 
 namespace vahf::sim {
@@ -392,23 +392,35 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   if (!fixed.empty()) {  // nothing to touch: no shell, no contact work
     std::vector<contact::Obstacle> obstacles;
     for (const FixedPart& f : fixed)
-      obstacles.push_back({contact::SignedDistance(f.part->shape), f.pose, f.part->friction,
-                           f.part->mass_properties.bounding_radius});
+      obstacles.push_back({contact::SignedDistance(f.part->shape), f.pose,
+                           f.part->friction, f.part->mass_properties.bounding_radius});
     auto shell = contact::MakePointShell(part.shape, params.contact.shell_spacing);
     counters.shell_points = static_cast<std::int64_t>(shell.size());
-    c.contact.emplace(std::move(shell), part.mass_properties.bounding_radius, part.friction,
-                      std::move(obstacles), params.contact);
+    c.contact.emplace(std::move(shell), part.mass_properties.bounding_radius,
+                      part.friction, std::move(obstacles), params.contact);
   }
   // Eq. 1 by ray casting only when the scene asks for it and something could
   // hide the part; a scene with V given or switched off tessellates nothing.
   if (params.visibility.mode == "raycast" && !fixed.empty()) {
+    if (params.visibility.grid > visibility::kMaxGrid)
+      throw InputError(scene.file, "/parameters/visibility/grid",
+                       std::to_string(params.visibility.grid),
+                       fmt::format("at most {} rays a side", visibility::kMaxGrid));
     const double tolerance = params.visibility.tessellation_tolerance;
+    // The mesher's errors know the value and rule but not the scene: add them.
+    const auto mesh = [&](const scene::Part& p) {
+      try {
+        return geometry::Tessellate(p.shape, tolerance);
+      } catch (const InputError& e) {
+        throw InputError(scene.file, "/parameters/visibility/tessellation_tolerance",
+                         e.value(), fmt::format("{} (part '{}')", e.rule(), p.name));
+      }
+    };
     std::vector<visibility::Occluder> occluders;
-    for (const FixedPart& f : fixed)
-      occluders.push_back({geometry::Tessellate(f.part->shape, tolerance), f.pose});
+    for (const FixedPart& f : fixed) occluders.push_back({mesh(*f.part), f.pose});
     visibility::CasterOptions caster_options;
     caster_options.grid = params.visibility.grid;
-    c.caster.emplace(geometry::Tessellate(part.shape, tolerance), occluders, caster_options);
+    c.caster.emplace(mesh(part), occluders, caster_options);
   }
 
   SimTK::MultibodySystem system;
