@@ -3,8 +3,9 @@
 // for a solid cylinder, the chamfered blind bore of peg_in_hole.json and a box;
 // on random points, the capped-cylinder distance as the 2-D signed distance to
 // the meridian rectangle [-R, R] x [0, H] (I. Quilez, "2D distance functions",
-// https://iquilezles.org/articles/distfunctions2d/, box), Inside() against the
-// sign of At(), and the nearest-point property: p - d n lies on the surface.
+// https://iquilezles.org/articles/distfunctions2d/, box), Penetration() (the
+// contact query) against the sign of At(), and the nearest-point property: p - d n lies
+// on the surface.
 #include "vahf/contact/signed_distance.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,10 +77,15 @@ void ExpectDistance(const SignedDistance& f, const Eigen::Vector3d& p, double di
   EXPECT_NEAR(d.distance, distance, kTol);
   EXPECT_NEAR((d.normal - normal).norm(), 0.0, 1e-9)
       << "normal " << Str(d.normal) << ", expected " << Str(normal);
-  // Exactly on the surface Inside() is not checked: its crossing-number rule is
-  // half-open, and it answers true on surfaces facing the axis (a bore's wall).
+  // Exactly on the surface Penetration() is not checked: its crossing-number
+  // rule is half-open, and it answers inside on surfaces facing the axis (a
+  // bore's wall).
   if (distance != 0) {
-    EXPECT_EQ(f.Inside(p), distance < 0);
+    const std::optional<Distance> inside = f.Penetration(p);
+    EXPECT_EQ(inside.has_value(), distance < 0);
+    if (inside) {
+      EXPECT_EQ(inside->distance, d.distance);
+    }
   }
 }
 
@@ -159,7 +166,7 @@ TEST(SignedDistanceBore, InsideTheHoleIsOutsideTheSolid) {
   // the chamfer meets the wall, (r, z) = (10.05, -1) mm; the point is 5 mm up.
   const Distance d = f.At({0, 0, 0.005});
   EXPECT_NEAR(d.distance, std::hypot(kHole, 0.006), kTol);
-  EXPECT_FALSE(f.Inside({0, 0, 0.005}));
+  EXPECT_FALSE(f.Penetration({0, 0, 0.005}).has_value());
 }
 
 TEST(SignedDistanceBore, OnTheSurfaceTheNormalIsTheFaceNormal) {
@@ -253,14 +260,14 @@ void ForRandomPoints(const SignedDistance& f, std::uint64_t trial, F check) {
   }
 }
 
-TEST(SignedDistanceRandom, InsideAgreesWithTheSignOfAt) {
+TEST(SignedDistanceRandom, PenetrationAgreesWithTheSignOfAt) {
   std::uint64_t trial = 0;
   for (const Case& c : Shapes()) {
     const SignedDistance f(c.shape);
     int inside = 0;
     ForRandomPoints(f, trial++, [&](const Eigen::Vector3d& p) {
       const Distance d = f.At(p);
-      ASSERT_EQ(f.Inside(p), d.distance < 0)
+      ASSERT_EQ(f.Penetration(p).has_value(), d.distance < 0)
           << c.name << " at " << Str(p) << ": distance " << d.distance;
       inside += d.distance < 0;
     });
@@ -326,10 +333,10 @@ TEST(SignedDistanceBounds, AreTheSolidsBoundingBox) {
          {-0.03, -0.03, -0.01}, {0.03, 0.03, 0.1});
   // Points just outside the bounds are never inside.
   const SignedDistance f(Cylinder());
-  EXPECT_TRUE(f.Inside({0, 0, 1e-9}));
-  EXPECT_FALSE(f.Inside({0, 0, -1e-9}));
-  EXPECT_FALSE(f.Inside({0, 0, kH + 1e-9}));
-  EXPECT_FALSE(f.Inside({kR + 1e-9, 0, kH / 2}));
+  EXPECT_TRUE(f.Penetration({0, 0, 1e-9}).has_value());
+  EXPECT_FALSE(f.Penetration({0, 0, -1e-9}).has_value());
+  EXPECT_FALSE(f.Penetration({0, 0, kH + 1e-9}).has_value());
+  EXPECT_FALSE(f.Penetration({kR + 1e-9, 0, kH / 2}).has_value());
 }
 
 }  // namespace

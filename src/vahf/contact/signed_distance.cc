@@ -51,12 +51,6 @@ bool SignedDistance::InBounds(const Eigen::Vector3d& p) const {
   return (p.array() > lower_.array()).all() && (p.array() < upper_.array()).all();
 }
 
-bool SignedDistance::Inside(const Eigen::Vector3d& p) const {
-  if (!InBounds(p)) return false;
-  if (is_box_) return true;
-  return InsidePolygon(std::sqrt(p.x() * p.x() + p.y() * p.y()), p.z());
-}
-
 std::optional<Distance> SignedDistance::Penetration(const Eigen::Vector3d& p) const {
   if (!InBounds(p)) return std::nullopt;
   if (is_box_) return OfBox(p);

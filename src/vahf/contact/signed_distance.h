@@ -26,8 +26,6 @@ class SignedDistance {
 
   // Distance from p, in the shape's frame.
   Distance At(const Eigen::Vector3d& p) const;
-  // True when p (shape frame) is strictly inside the solid: cheaper than At().
-  bool Inside(const Eigen::Vector3d& p) const;
   // The contact query: At(p) when p is strictly inside the solid, nothing
   // otherwise. One inside test and, only for points inside, one distance pass.
   std::optional<Distance> Penetration(const Eigen::Vector3d& p) const;

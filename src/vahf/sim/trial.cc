@@ -66,9 +66,8 @@ struct TrialContext {
   std::int64_t rays_cast = 0;
   human::Posture posture;
   human::FactorCurves curves;
-  double reach_limit = 0;      // D3, m
-  bool revolved = false;       // orientation about the part's own z axis is free
-  double bounding_radius = 0;  // of the part about its frame origin, m
+  double reach_limit = 0;  // D3, m
+  bool revolved = false;   // orientation about the part's own z axis is free
 
   // Simbody handles.
   SimTK::MobilizedBodyIndex body;
@@ -194,7 +193,8 @@ void Decide(TrialContext& c, SimTK::State& s) {
     }
   }
   // The fastest point of the part's bounding sphere, a bound on any point's speed.
-  const double speed = m.velocity.norm() + m.angular_velocity.norm() * c.bounding_radius;
+  const double speed = m.velocity.norm() + m.angular_velocity.norm() *
+                                               c.part->mass_properties.bounding_radius;
   if (speed > p.simulation.divergence_speed) {
     c.ended = Status::kNumericalFailure;
     c.detail = fmt::format(
@@ -381,7 +381,6 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   c.mass = part.mass;
   c.com = part.mass_properties.centroid;
   c.inertia_body = (part.density * part.mass_properties.inertia_per_density).asDiagonal();
-  c.bounding_radius = part.mass_properties.bounding_radius;
   c.revolved = std::holds_alternative<geometry::RevolvedProfile>(part.shape);
   c.work = options.initial_work;
   c.record_trace = options.record_trace;
