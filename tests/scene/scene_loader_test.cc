@@ -329,6 +329,30 @@ TEST(ParseSceneTest, ExampleSceneLoads) {
   EXPECT_THAT(DescribeScene(scene), HasSubstr("sequence: peg"));
 }
 
+TEST(ParseSceneTest, HydraulicCylinderHasItsStatedMassesAndFits) {
+  // The generator's claims (tools/scenes/hydraulic_cylinder.py): about 9 kg in
+  // all; ISO 286 H8/f7 at mid-tolerance gives 34 um radial clearance between
+  // piston and barrel and 28 um between guide sleeve and rod.
+  const Scene scene = LoadScene(std::string(VAHF_SOURCE_DIR) +
+                                "/experiments/scenes/hydraulic_cylinder.json");
+  ASSERT_EQ(scene.parts.size(), 4u);
+  double total = 0;
+  for (const Part& p : scene.parts) total += p.mass;
+  EXPECT_NEAR(total, 9.2, 0.1);
+  EXPECT_GT(scene.parts[1].mass, scene.parts[2].mass);  // rod > sleeve > seal ring
+  EXPECT_GT(scene.parts[2].mass, scene.parts[3].mass);
+  const auto radius_at = [](const Part& p, std::size_t k) {
+    return std::get<geometry::RevolvedProfile>(p.shape).vertices.at(k).r;
+  };
+  // Profiles as generated (counter-clockwise): barrel vertex 4 the bore wall,
+  // rod vertex 2 the piston, rod vertex 4 the rod, sleeve vertex 5 its bore.
+  const double bore = radius_at(scene.parts[0], 4), piston = radius_at(scene.parts[1], 2);
+  const double rod = radius_at(scene.parts[1], 4), sleeve = radius_at(scene.parts[2], 5);
+  EXPECT_NEAR(bore - piston, 34e-6, 1e-9);
+  EXPECT_NEAR(sleeve - rod, 28.5e-6, 1e-9);
+  EXPECT_EQ(scene.sequence, (std::vector<int>{1, 2, 3}));
+}
+
 // ---------------------------------------------------------------------------
 // Malformed scenes: each case is one mutation of ValidScene().
 
