@@ -170,16 +170,27 @@ TEST(Trial, PegInHoleCompletesAndIsDeterministic) {
   EXPECT_NE(TraceCsv(a), TraceCsv(other));  // the seed matters
 }
 
-TEST(Trial, MersonAndCPodesAgreeAtTightAccuracy) {
+// Each integrator converges as its tolerance tightens, and the two agree.
+// Their limits differ by about 2 % on this trial (measured: RKM 0.1737 s and
+// CPodes 0.1706 s at 1e-7 and 1e-8 alike): at the decision at t = 0.1 s the
+// peg grazes the chamfer about 1 um deep, inside the 1 um onset of the
+// contact law, and the contact normal and friction the operator holds for
+// the next 0.1 s (Eq. 8) take the 1.5 um difference the two integrators
+// have accumulated through the approach. The bound is therefore 3 %.
+TEST(Trial, MersonAndCPodesConvergeAndAgreeAtTightAccuracy) {
   scene::Scene s = LoadExample("peg_in_hole.json");
-  s.params.simulation.accuracy = 1e-6;
-  s.params.simulation.integrator = "RungeKuttaMerson";
-  const TrialResult rkm = RunTrial(s, {1, 0}, {0, 0.0, false});
-  s.params.simulation.integrator = "CPodes";
-  const TrialResult bdf = RunTrial(s, {1, 0}, {0, 0.0, false});
-  ASSERT_EQ(rkm.status, Status::kCompleted) << rkm.detail;
-  ASSERT_EQ(bdf.status, Status::kCompleted) << bdf.detail;
-  EXPECT_NEAR(rkm.completion_time, bdf.completion_time, 0.01 * rkm.completion_time);
+  const auto run = [&](const char* integrator, double accuracy) {
+    s.params.simulation.integrator = integrator;
+    s.params.simulation.accuracy = accuracy;
+    const TrialResult r = RunTrial(s, {1, 0}, {0, 0.0, false});
+    EXPECT_EQ(r.status, Status::kCompleted) << integrator << ": " << r.detail;
+    return r.completion_time;
+  };
+  const double rkm6 = run("RungeKuttaMerson", 1e-6), rkm7 = run("RungeKuttaMerson", 1e-7);
+  const double bdf6 = run("CPodes", 1e-6), bdf7 = run("CPodes", 1e-7);
+  EXPECT_NEAR(rkm6, rkm7, 0.005 * rkm7);
+  EXPECT_NEAR(bdf6, bdf7, 0.005 * bdf7);
+  EXPECT_NEAR(rkm7, bdf7, 0.03 * rkm7);
 }
 
 // Whitney's wedging condition (D. E. Whitney, "Quasi-static assembly of

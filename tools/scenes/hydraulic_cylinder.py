@@ -1,5 +1,9 @@
 #!/usr/bin/env python3
-"""Writes experiments/scenes/hydraulic_cylinder.json (run from the repository root).
+"""Writes the hydraulic cylinder scenes (run from the repository root):
+experiments/scenes/hydraulic_cylinder.json (the general condition) and the
+best and worst working conditions of paper Sec. 5.3,
+hydraulic_cylinder_best.json (standing close) and hydraulic_cylinder_worst.json
+(standing far, the part partly hidden by a screen).
 
 Dimensions: bore 63 mm with rod 36 mm, a bore/rod pair of ISO 6020-2 (16 MPa
 compact series). Fits: ISO 286-2 H8/f7 at mid-tolerance -- for 50-65 mm H8 is
@@ -56,9 +60,37 @@ scene = {
    "target": {"position": [0.0, 0.0, r6(top)]}}
  ],
  "sequence": ["piston_rod", "guide_sleeve", "seal_ring"],
- "parameters": {"contact": {"shell_spacing": 0.002}}
+ "parameters": {
+  "contact": {"shell_spacing": 0.002},
+  # Hand and forearm of a 70 kg adult move with the part: 0.022 of body mass
+  # (Winter 2009, Table 4.1), 1.54 kg.
+  "guidance": {"hand_mass": 1.5},
+  # A part not in place within 10 s has failed (the paper's whole cylinder
+  # takes about 16 s, Sec. 5.3).
+  "simulation": {"time_limit": 10.0}
+ }
 }
-out = sys.argv[1] if len(sys.argv) > 1 else "experiments/scenes/hydraulic_cylinder.json"
-with open(out, "w") as f:
-    json.dump(scene, f, indent=1)
-    f.write("\n")
+def write(name, s):
+    with open(f"{folder}/{name}.json", "w") as f:
+        json.dump(s, f, indent=1)
+        f.write("\n")
+folder = sys.argv[1] if len(sys.argv) > 1 else "experiments/scenes"
+write("hydraulic_cylinder", scene)
+# Best condition (Sec. 5.3, group 2): standing close to the cylinder.
+best = json.loads(json.dumps(scene))
+best["name"] = "hydraulic_cylinder_best"
+best["description"] = "The hydraulic cylinder, best working condition (paper Sec. 5.3): the operator stands close (0.25 m)."
+best["operator"]["position"] = [0.0, -0.25]
+write("hydraulic_cylinder_best", best)
+# Worst condition (Sec. 5.3, group 3): standing far, the part partly obscured
+# by a 10 mm screen between the operator and the cylinder, up to 10 cm above
+# the barrel's top.
+worst = json.loads(json.dumps(scene))
+worst["name"] = "hydraulic_cylinder_worst"
+worst["description"] = ("The hydraulic cylinder, worst working condition (paper Sec. 5.3): the operator stands far (0.75 m) "
+                        "and a screen between them hides part of the assembly.")
+worst["operator"]["position"] = [0.0, -0.75]
+screen_h = top + 0.10 - bench
+worst["parts"].insert(1, {"name": "screen", "role": "assembled", "geometry": {"type": "box", "size": [0.4, 0.01, r6(screen_h)]},
+  "density": 2700, "friction": 0.3, "pose": {"position": [0.0, -0.12, r6(bench + screen_h / 2)]}})
+write("hydraulic_cylinder_worst", worst)

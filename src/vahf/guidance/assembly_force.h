@@ -25,6 +25,13 @@ struct GuidanceParams {
   // e.g. Wolpert and Ghahramani, Nat. Neurosci. 3 (2000) 1212-1217). In
   // contact the operator only pushes along Eq. 8 and the weight acts.
   double weight_support = 1.0;
+  // Mass of the operator's hand and forearm, which move with the grasped part,
+  // kg. It is added to the moving body as a point mass at the grasp point and
+  // its weight is always carried by the arm. 0 (the default) is the paper's
+  // model, the part alone; about 1.5 kg for a 70 kg adult: hand 0.006 and
+  // forearm 0.016 of body mass (D. A. Winter, Biomechanics and Motor Control
+  // of Human Movement, 4th ed., Wiley 2009, Table 4.1).
+  double hand_mass = 0.0;
   // The assembly torque turns the part toward its held target orientation as
   // a rotational impedance scaled by the part's inertia I:
   // tau = I (Psi w^2 theta - 2 zeta w omega), theta the rotation vector to the

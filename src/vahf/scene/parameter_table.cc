@@ -43,6 +43,7 @@ std::vector<ParamSpec> MakeTable() {
       {"guidance", "mode", "-", R::kChoice, "operator: assembly force and torque act; none: they do not", nullptr, nullptr, VAHF_TEXT(guidance.mode), {"operator", "none"}},
       {"guidance", "damping_ratio", "1", R::kNonNegative, "damping of the force impedance, fraction of critical", VAHF_REAL(guidance.damping_ratio)},
       {"guidance", "weight_support", "1", R::kUnit, "fraction of the weight the operator carries in free motion", VAHF_REAL(guidance.weight_support)},
+      {"guidance", "hand_mass", "kg", R::kNonNegative, "hand and forearm mass moving with the grasped part", VAHF_REAL(guidance.hand_mass)},
       {"guidance", "torque_frequency", "rad/s", R::kPositive, "natural frequency of the assembly torque impedance", VAHF_REAL(guidance.torque_frequency)},
       {"guidance", "torque_damping_ratio", "1", R::kNonNegative, "damping of the torque impedance, fraction of critical", VAHF_REAL(guidance.torque_damping_ratio)},
       {"guidance", "torque_sigma_deg", "deg", R::kAngle, "error of the held orientation per axis at eta = 1", VAHF_REAL(guidance.torque_sigma_deg)},

@@ -24,6 +24,10 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
+// Travel between two decisions below which the part counts as still for f's
+// direction of motion, m: well under a sensor's resolution.
+constexpr double kStillDistance = 1e-6;
+
 Vector3d ToEigen(const SimTK::Vec3& v) { return {v[0], v[1], v[2]}; }
 SimTK::Vec3 ToSimTK(const Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 Matrix3d ToEigen(const SimTK::Rotation& r) {
@@ -58,9 +62,14 @@ struct TrialContext {
   const scene::Part* part = nullptr;
   rng::StreamKey key;
   bool operator_acts = true;
-  double mass = 0;
-  Matrix3d inertia_body = Matrix3d::Zero();  // about the centre of mass, part frame
-  Vector3d com = Vector3d::Zero();           // part frame
+  // The moving body: the part, plus the operator's hand and forearm as a point
+  // mass at the grasp point (guidance/hand_mass) when an operator guides it.
+  double part_mass = 0;
+  double hand_mass = 0;
+  double mass = 0;                           // part + hand
+  Matrix3d inertia_body = Matrix3d::Zero();  // of both, about their centre of mass, part frame
+  Vector3d com = Vector3d::Zero();           // of both, part frame
+  Vector3d part_com = Vector3d::Zero();      // of the part alone: where factors look
   std::optional<contact::ContactModel> contact;
   std::optional<visibility::VisibilityCaster> caster;  // only for mode "raycast"
   std::int64_t rays_cast = 0;
@@ -79,6 +88,7 @@ struct TrialContext {
   std::int64_t last_decision = -1;
   double work = 0;
   Vector3d last_position = Vector3d::Zero();
+  Vector3d last_centre = Vector3d::Zero();  // of the part, at the last decision
   double last_force = 0;
   double best_distance = 0;
   double last_progress_time = 0;
@@ -124,9 +134,12 @@ struct TrialContext {
     const Vector3d r_grasp = m.pose.linear() * part->grasp;
     const Vector3d v_grasp = m.velocity + m.angular_velocity.cross(r_grasp);
     const auto& g = scene->params.guidance;
+    // The arm always carries its own weight; the part's, as guidance says.
     *force = guidance::ImpedanceForce(
-        g, d.psi, mass, m.pose.translation(), d.estimated_target, v_grasp, d.contact,
-        mass * scene->gravity, scene->params.simulation.completion_distance);
+                 g, d.psi, mass, m.pose.translation(), d.estimated_target, v_grasp,
+                 d.contact, part_mass * scene->gravity,
+                 scene->params.simulation.completion_distance) -
+             hand_mass * scene->gravity;
     const Matrix3d inertia_world =
         m.pose.linear() * inertia_body * m.pose.linear().transpose();
     *torque = r_grasp.cross(*force) +
@@ -212,10 +225,14 @@ void Decide(TrialContext& c, SimTK::State& s) {
   const double psi = human::FatigueCoefficient(c.work, p.fatigue.a_max);
 
   // Human factors at the part's centre of mass.
-  const Vector3d centre = m.pose * c.com;
-  Vector3d motion = m.velocity;
-  if (motion.norm() < 1e-3) motion = c.part->target.position - T;
+  const Vector3d centre = m.pose * c.part_com;
+  // The direction of motion as the paper measures it (Sec. 5.1, f): from the
+  // part's position at the previous instant to this one, P_i - P_{i-1}; at the
+  // first decision, or with no travel, the way to the target.
+  Vector3d motion = i > 0 ? Vector3d(centre - c.last_centre) : Vector3d::Zero();
+  if (motion.norm() < kStillDistance) motion = c.part->target.position - T;
   if (motion.norm() < 1e-12) motion = -Vector3d::UnitZ();
+  c.last_centre = centre;
   double V = 1.0;  // "off", and "raycast" with nothing that could hide the part
   if (p.visibility.mode == "constant") {
     V = p.visibility.value;
@@ -378,9 +395,21 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   c.part = &part;
   c.key = key;
   c.operator_acts = params.guidance.mode == "operator";
-  c.mass = part.mass;
-  c.com = part.mass_properties.centroid;
-  c.inertia_body = (part.density * part.mass_properties.inertia_per_density).asDiagonal();
+  c.part_mass = part.mass;
+  c.hand_mass = c.operator_acts ? params.guidance.hand_mass : 0.0;
+  c.mass = c.part_mass + c.hand_mass;
+  c.part_com = part.mass_properties.centroid;
+  {
+    // Parallel-axis sum of the part (principal axes = part axes) and the hand
+    // point mass, about their common centre of mass.
+    c.com = (c.part_mass * c.part_com + c.hand_mass * part.grasp) / c.mass;
+    const auto shift = [](double m, const Vector3d& d) {
+      return (m * (d.squaredNorm() * Matrix3d::Identity() - d * d.transpose())).eval();
+    };
+    c.inertia_body =
+        Matrix3d((part.density * part.mass_properties.inertia_per_density).asDiagonal()) +
+        shift(c.part_mass, c.part_com - c.com) + shift(c.hand_mass, part.grasp - c.com);
+  }
   c.revolved = std::holds_alternative<geometry::RevolvedProfile>(part.shape);
   c.work = options.initial_work;
   c.record_trace = options.record_trace;
@@ -426,11 +455,12 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   SimTK::SimbodyMatterSubsystem matter(system);
   SimTK::GeneralForceSubsystem forces(system);
   SimTK::Force::UniformGravity gravity(forces, matter, ToSimTK(scene.gravity));
-  const SimTK::Inertia inertia_com(
-      SimTK::Vec3(c.inertia_body(0, 0), c.inertia_body(1, 1), c.inertia_body(2, 2)));
+  const Matrix3d& i = c.inertia_body;
+  const SimTK::Inertia inertia_com(SimTK::Vec3(i(0, 0), i(1, 1), i(2, 2)),
+                                   SimTK::Vec3(i(0, 1), i(0, 2), i(1, 2)));
   const SimTK::Body::Rigid body(
-      SimTK::MassProperties(part.mass, ToSimTK(c.com),
-                            inertia_com.shiftFromMassCenter(-ToSimTK(c.com), part.mass)));
+      SimTK::MassProperties(c.mass, ToSimTK(c.com),
+                            inertia_com.shiftFromMassCenter(-ToSimTK(c.com), c.mass)));
   SimTK::MobilizedBody::Free mobod(matter.Ground(), SimTK::Transform(), body,
                                    SimTK::Transform());
   c.body = mobod.getMobilizedBodyIndex();
