@@ -2,13 +2,17 @@
 // reference values, and (as the harness grows) runs trials and experiments.
 // Exit status: 0 success, 2 bad input (a file, a value or an option), 1 other.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <string>
 
 #include "vahf/core/atomic_file.h"
 #include "vahf/core/error.h"
+#include "vahf/experiment/design.h"
+#include "vahf/experiment/interrupt.h"
 #include "vahf/experiment/table1_reference.h"
+#include "vahf/report/run_output.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/json_reader.h"
 #include "vahf/scene/parameter_table.h"
@@ -73,6 +77,38 @@ int Trial(const TrialArgs& a) {
   return 0;
 }
 
+struct RunArgs {
+  std::string experiment;
+  std::uint64_t seed = 0;
+  bool seed_given = false;
+  int trials = 0;
+  int threads = 1;
+  std::string out;
+};
+
+int Run(const RunArgs& a) {
+  const vahf::scene::ExperimentFile file = vahf::scene::LoadExperiment(a.experiment);
+  vahf::experiment::RunSettings settings;
+  settings.seed = a.seed_given ? a.seed : file.seed;
+  settings.trials = a.trials;
+  settings.threads = a.threads;
+  const std::string out =
+      a.out.empty() ? "runs/" + file.name + "-seed" + std::to_string(settings.seed) : a.out;
+  vahf::experiment::InstallInterruptHandler();
+  const auto start = std::chrono::steady_clock::now();
+  const vahf::experiment::ExperimentRun run = vahf::experiment::RunExperiment(file, settings);
+  vahf::report::RunInfo info;
+  info.threads = a.threads;
+  info.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string digest = vahf::report::WriteRunOutput(run, out, info);
+  std::printf("%s: %s, seed %llu, %.1f s on %d thread(s)\nresults digest %s\nreport: %s/report.md\n",
+              file.name.c_str(), file.kind.c_str(),
+              static_cast<unsigned long long>(settings.seed), info.wall_seconds, a.threads,
+              digest.c_str(), out.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -113,6 +149,23 @@ int main(int argc, char** argv) {
   trial->add_option("--trace", trial_args.trace,
                     "write one CSV row per decision instant to this file");
 
+  RunArgs run_args;
+  CLI::App* run = app.add_subcommand(
+      "run", "Run an experiment file and write its output directory (report.md, CSV "
+             "tables, summary.json, manifest.json, plots)");
+  run->add_option("EXPERIMENT", run_args.experiment, "experiment JSON file")->required();
+  run->add_option("--seed", run_args.seed, "override the experiment's seed")
+      ->each([&](const std::string&) { run_args.seed_given = true; });
+  run->add_option("--trials", run_args.trials,
+                  "override the cycles per condition (every experiment of a paper run)")
+      ->check(CLI::Range(1, 10'000'000));
+  run->add_option("--threads", run_args.threads, "worker threads (results do not depend on it)")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
+  run->add_option("--out", run_args.out,
+                  "output directory (default runs/NAME-seedSEED); replaced whole, only if it "
+                  "is empty or a previous vahf output");
+
   CLI::App* params = app.add_subcommand(
       "params", "Print every model parameter with its unit, rule and default (Markdown)");
 
@@ -133,6 +186,7 @@ int main(int argc, char** argv) {
     if (*check) return Check(check_path);
     if (*reference) return Reference(table_path);
     if (*trial) return Trial(trial_args);
+    if (*run) return Run(run_args);
     if (*params) {
       std::fputs(vahf::scene::ParameterTableMarkdown().c_str(), stdout);
       return 0;
@@ -140,6 +194,9 @@ int main(int argc, char** argv) {
   } catch (const vahf::InputError& e) {
     std::fprintf(stderr, "vahf: error: %s\n", e.what());
     return vahf::kExitInputError;
+  } catch (const vahf::experiment::Interrupted& e) {
+    std::fprintf(stderr, "vahf: interrupted: %s; no output was written\n", e.what());
+    return 130;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "vahf: error: %s\n", e.what());
     return 1;

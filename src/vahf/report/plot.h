@@ -17,7 +17,8 @@ class PlotError : public std::runtime_error {
 
 // Renders `gnuplot_script` into `png_path`. Unless the script chooses a
 // terminal itself (a line starting "set term..."), "set terminal pngcairo size
-// 800,500" is put before it; "set output" naming png_path always is, after
+// 800,500 noenhanced" (labels printed as written: an underscore is not a
+// subscript) is put before it; "set output" naming png_path always is, after
 // that terminal line. Then checks that gnuplot exited with status 0 and that
 // png_path exists and is not empty. A file already at png_path is removed
 // first, and a failed plot leaves none. Inline data (`$data << EOD ... EOD`) keeps a plot

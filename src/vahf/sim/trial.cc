@@ -147,6 +147,22 @@ struct TrialContext {
                                        d.held_orientation, m.angular_velocity);
   }
 
+  // V (Eq. 1: cast, given, or 1) and the factors for the part at pose m with
+  // its centre of mass at `centre`, moving along `motion` (non-zero).
+  human::FactorValues FactorsAt(const contact::RigidMotion& m, const Vector3d& centre,
+                                const Vector3d& motion) {
+    const auto& v = scene->params.visibility;
+    double V = 1.0;  // "off", and "raycast" with nothing that could hide the part
+    if (v.mode == "constant") {
+      V = v.value;
+    } else if (caster) {
+      const visibility::VisibilityResult seen = caster->Compute(posture.eye, m.pose);
+      V = seen.V;
+      rays_cast += seen.rays_cast;
+    }
+    return human::EvaluateFactors(curves, posture, centre, motion, V);
+  }
+
   // Distance and angle to the target, for completion and progress.
   double DistanceToTarget(const contact::RigidMotion& m) const {
     return (m.pose.translation() - part->target.position).norm();
@@ -233,16 +249,7 @@ void Decide(TrialContext& c, SimTK::State& s) {
   if (motion.norm() < kStillDistance) motion = c.part->target.position - T;
   if (motion.norm() < 1e-12) motion = -Vector3d::UnitZ();
   c.last_centre = centre;
-  double V = 1.0;  // "off", and "raycast" with nothing that could hide the part
-  if (p.visibility.mode == "constant") {
-    V = p.visibility.value;
-  } else if (c.caster) {
-    const visibility::VisibilityResult seen = c.caster->Compute(c.posture.eye, m.pose);
-    V = seen.V;
-    c.rays_cast += seen.rays_cast;
-  }
-  const human::FactorValues f =
-      human::EvaluateFactors(c.curves, c.posture, centre, motion, V);
+  const human::FactorValues f = c.FactorsAt(m, centre, motion);
 
   // Contact now, held for Eq. 8 until the next decision.
   Decision d;
@@ -312,6 +319,35 @@ void Decide(TrialContext& c, SimTK::State& s) {
     row.psi = psi;
     c.trace.push_back(row);
   }
+}
+
+// The row at the instant the trial ended: where the part is, its factors (f
+// from the travel since the last decision), and A with that last stretch of
+// travel added under the force held since the decision (Eq. 4).
+TraceRow FinalRow(TrialContext& c, SimTK::State& s) {
+  c.matter->getSystem().realize(s, SimTK::Stage::Velocity);
+  const contact::RigidMotion m = c.MotionOf(s);
+  const Vector3d T = m.pose.translation();
+  const Vector3d centre = m.pose * c.part_com;
+  Vector3d motion = centre - c.last_centre;
+  if (motion.norm() < kStillDistance) motion = c.part->target.position - T;
+  if (motion.norm() < 1e-12) motion = -Vector3d::UnitZ();
+  TraceRow row;
+  row.time = s.getTime();
+  row.position = T;
+  row.orientation = Eigen::Quaterniond(m.pose.linear());
+  row.velocity = m.velocity;
+  row.angular_velocity = m.angular_velocity;
+  row.factors = c.FactorsAt(m, centre, motion);
+  row.work = c.work + human::WorkEq4(c.last_force, human::TravelOf(T - c.last_position),
+                                     c.scene->params.fatigue.k);
+  row.psi = human::FatigueCoefficient(row.work, c.scene->params.fatigue.a_max);
+  if (c.contact) {
+    const contact::ContactForces cf = c.contact->Evaluate(m);
+    row.contact_force = cf.normal_force;
+    row.friction_force = cf.friction_force;
+  }
+  return row;
 }
 
 class DecisionHandler : public SimTK::PeriodicEventHandler {
@@ -481,12 +517,16 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   const auto start = std::chrono::steady_clock::now();
   TrialResult result;
   double end_time = 0;
+  std::optional<TraceRow> final_row;
+  if (c.ended) final_row = FinalRow(c, state);  // ended at the first decision
   if (!c.ended) {
     try {
       SimTK::TimeStepper ts(system, *integ);
       ts.initialize(state);
       ts.stepTo(params.simulation.time_limit);
       end_time = ts.getTime();
+      SimTK::State end_state = ts.getState();
+      final_row = FinalRow(c, end_state);
       if (!c.ended && integ->isSimulationOver() &&
           integ->getTerminationReason() != SimTK::Integrator::ReachedFinalTime) {
         c.ended = Status::kNumericalFailure;
@@ -528,6 +568,12 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
         static_cast<std::int64_t>(c.contact->counters().clusters_skipped);
   }
   result.counters = counters;
+  if (!final_row) {  // the integrator threw: the last decision is the last known row
+    final_row = c.trace.empty() ? TraceRow{} : c.trace.back();
+    final_row->work = c.work;
+  }
+  result.final_row = *final_row;
+  result.work = final_row->work;
   result.trace = std::move(c.trace);
   return result;
 }

@@ -64,7 +64,11 @@ struct TrialResult {
   rng::StreamKey key;
   TrialCounters counters;
   double wall_seconds = 0;       // measured, never part of a digest
-  std::vector<TraceRow> trace;
+  double work = 0;               // A when the trial ended, J (Eq. 4, with the initial work)
+  std::vector<TraceRow> trace;   // one row per decision instant (if recorded)
+  // The part, its factors and A at the instant the trial ended (for a
+  // completion, the completion instant: paper Table 1's instant d). Always set.
+  TraceRow final_row;
 
   std::string BriefReport() const;
 };

@@ -1,0 +1,36 @@
+#include "vahf/experiment/cycle.h"
+
+#include "vahf/sim/trial.h"
+
+namespace vahf::experiment {
+
+rng::StreamKey CycleKey(std::uint64_t seed, std::uint64_t cycle, std::size_t n,
+                        std::size_t position) {
+  return {seed, cycle * n + position};
+}
+
+CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_t cycle,
+                     double initial_work, bool record_trace) {
+  CycleResult out;
+  out.work = initial_work;
+  const std::size_t n = scene.sequence.size();
+  for (std::size_t p = 0; p < n; ++p) {
+    sim::TrialOptions options;
+    options.sequence_position = static_cast<int>(p);
+    options.initial_work = out.work;
+    options.record_trace = record_trace;
+    PartRun run;
+    run.start_time = out.time;
+    run.start_work = out.work;
+    run.trial = sim::RunTrial(scene, CycleKey(seed, cycle, n, p), options);
+    out.time += run.trial.end_time;
+    out.work = run.trial.work;
+    const bool done = run.trial.status == sim::Status::kCompleted;
+    out.parts.push_back(std::move(run));
+    if (!done) return out;
+  }
+  out.completed = true;
+  return out;
+}
+
+}  // namespace vahf::experiment

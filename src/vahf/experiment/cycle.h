@@ -1,0 +1,37 @@
+// One assembly cycle: the scene's sequence assembled part after part (paper
+// Fig. 9: piston rod, guide sleeve, seal ring), each part a trial that starts
+// with the work A the operator has done so far (Eq. 4) and ends where the next
+// begins. A part that fails ends the cycle: the later parts are not attempted.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "vahf/scene/scene.h"
+#include "vahf/sim/trial_result.h"
+
+namespace vahf::experiment {
+
+struct PartRun {
+  sim::TrialResult trial;
+  double start_time = 0;  // s from the cycle's start
+  double start_work = 0;  // A when it began, J
+};
+
+struct CycleResult {
+  std::vector<PartRun> parts;  // in sequence order, up to the first failure
+  bool completed = false;      // every part of the sequence completed
+  double time = 0;             // s: to the last completion, or to the failure
+  double work = 0;             // A at the end, J (includes the initial work)
+};
+
+// The stream of sequence position p in cycle c is keyed {seed, c * n + p}, n
+// the sequence length: cycles never share a stream, and two conditions run
+// with the same seed and cycle index share theirs (common random numbers).
+rng::StreamKey CycleKey(std::uint64_t seed, std::uint64_t cycle, std::size_t n,
+                        std::size_t position);
+
+CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_t cycle,
+                     double initial_work, bool record_trace);
+
+}  // namespace vahf::experiment

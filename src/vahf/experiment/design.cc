@@ -1,0 +1,118 @@
+#include "vahf/experiment/design.h"
+
+#include <fmt/format.h>
+
+#include "vahf/core/error.h"
+
+namespace vahf::experiment {
+
+DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t seed,
+                    bool record_trace, const RunnerOptions& options,
+                    std::uint64_t first_cycle) {
+  VAHF_CHECK(trials >= 1, "at least one cycle per condition");
+  DesignRun out;
+  out.conditions = std::move(conditions);
+  const std::size_t n = static_cast<std::size_t>(trials);
+  const std::size_t total = out.conditions.size() * n;
+  const auto& conds = out.conditions;
+  out.records = RunIndexed<CycleRecord>(total, options, [&](std::size_t k) {
+    CycleRecord r;
+    r.condition = k / n;
+    const std::size_t j = k % n;
+    r.cycle = first_cycle + j;
+    const Condition& c = conds[r.condition];
+    const double u = (static_cast<double>(j) + 0.5) / static_cast<double>(n);
+    r.start_minute = c.minute_start + (c.minute_end - c.minute_start) * u;
+    r.initial_work = c.work_start + (c.work_end - c.work_start) * u;
+    r.result = RunCycle(*c.scene, seed, r.cycle, r.initial_work, record_trace);
+    return r;
+  });
+  return out;
+}
+
+namespace {
+
+RunnerOptions Options(const RunSettings& s, const std::string& label) {
+  RunnerOptions o;
+  o.threads = s.threads;
+  o.label = label;
+  o.progress = s.progress;
+  return o;
+}
+
+std::shared_ptr<const scene::Scene> Share(const scene::Scene& s) {
+  return std::make_shared<const scene::Scene>(s);
+}
+
+}  // namespace
+
+ExperimentRun RunExperiment(const scene::ExperimentFile& file, const RunSettings& settings) {
+  ExperimentRun out;
+  out.file = &file;
+  out.seed = settings.seed;
+  out.trials = settings.trials > 0 ? settings.trials : file.trials;
+  const std::string& kind = file.kind;
+  const RunnerOptions options = Options(settings, file.name + " (" + kind + ")");
+  if (kind == "paper") {
+    for (const scene::ExperimentFile& sub : file.experiments) {
+      RunSettings s = settings;
+      s.trials = settings.trials > 0 ? settings.trials : sub.trials;
+      out.parts.push_back(RunExperiment(sub, s));
+    }
+    return out;
+  }
+  std::vector<Condition> conditions;
+  if (kind == "table1") {
+    conditions.push_back({file.scene.name, "", Share(file.scene)});
+    out.run = RunDesign(conditions, out.trials, out.seed, true, options);
+  } else if (kind == "assembly_time") {
+    if (file.operators.empty()) {
+      conditions.push_back({"scene operator", file.scene.op.sex, Share(file.scene)});
+    }
+    for (const scene::OperatorEntry& o : file.operators) {
+      scene::Scene s = file.scene;
+      s.op.height = o.height;
+      s.op.arm_length = o.arm_length;
+      s.op.sex = o.sex;
+      conditions.push_back({o.name, o.sex, Share(s)});
+    }
+    out.run = RunDesign(conditions, out.trials, out.seed, false, options);
+  } else if (kind == "human_factors_groups") {
+    for (const scene::ConditionEntry& c : file.conditions)
+      conditions.push_back({c.name, "", Share(c.scene)});
+    out.run = RunDesign(conditions, out.trials, out.seed, true, options);
+  } else if (kind == "fatigue") {
+    const scene::FatigueDesign& f = file.fatigue;
+    const int pilot = f.pilot_cycles > 0 ? f.pilot_cycles : out.trials;
+    const auto scene = Share(file.scene);
+    // The pilot's streams are its own: cycle indices after every segment's.
+    out.pilot = RunDesign({{"pilot", "", scene}}, pilot, out.seed, false,
+                          Options(settings, file.name + " (fatigue pilot)"),
+                          static_cast<std::uint64_t>(out.trials));
+    double work = 0, time = 0;
+    for (const CycleRecord& r : out.pilot.records) {
+      work += r.result.work - r.initial_work;
+      time += r.result.time;
+    }
+    out.work_rate = time > 0 ? work / time : 0.0;
+    const double per_segment = f.duration_min / f.segments;
+    for (int s = 0; s < f.segments; ++s) {
+      Condition c;
+      c.name = fmt::format("{:g}-{:g} min", s * per_segment, (s + 1) * per_segment);
+      c.scene = scene;
+      c.minute_start = s * per_segment;
+      c.minute_end = (s + 1) * per_segment;
+      c.work_start = out.work_rate * 60.0 * c.minute_start;
+      c.work_end = out.work_rate * 60.0 * c.minute_end;
+      conditions.push_back(c);
+    }
+    out.run = RunDesign(conditions, out.trials, out.seed, false, options);
+  } else {
+    throw InputError(file.file, "/kind", kind,
+                     "vahf run runs table1, assembly_time, human_factors_groups, fatigue "
+                     "and paper");
+  }
+  return out;
+}
+
+}  // namespace vahf::experiment

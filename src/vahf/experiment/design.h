@@ -1,0 +1,84 @@
+// The paper's experiments as designs over cycles (DESIGN.md, "Experiments"):
+// each runs `trials` cycles (cycle.h) under each of its conditions on the
+// runner's thread pool. Cycle j of every condition uses the same streams
+// (common random numbers), so conditions differ by what defines them only.
+//
+//   table1                one condition: the scene;
+//   assembly_time         one condition per operator (Sec. 5.2);
+//   human_factors_groups  one condition per working condition (Sec. 5.3);
+//   fatigue               a pilot at A = 0 that measures the operator's work
+//                         rate, then one condition per segment of the hour
+//                         (Sec. 5.4), see RunExperiment;
+//   paper                 each experiment it lists.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vahf/experiment/cycle.h"
+#include "vahf/experiment/runner.h"
+#include "vahf/scene/experiment_file.h"
+
+namespace vahf::experiment {
+
+struct Condition {
+  std::string name;   // operator, working condition or segment
+  std::string group;  // an operator's sex; empty otherwise
+  std::shared_ptr<const scene::Scene> scene;
+  // Cycle j of N starts at minute start + (end - start) (j + 0.5) / N of the
+  // operator's working time, with the work A done by then (fatigue; else 0).
+  double minute_start = 0, minute_end = 0;
+  double work_start = 0, work_end = 0;
+};
+
+struct CycleRecord {
+  std::size_t condition = 0;  // index into DesignRun::conditions
+  std::uint64_t cycle = 0;    // j: the stream index of the cycle
+  double start_minute = 0;
+  double initial_work = 0;  // J
+  CycleResult result;
+};
+
+struct DesignRun {
+  std::vector<Condition> conditions;
+  std::vector<CycleRecord> records;  // condition-major, then cycle: fixed order
+};
+
+// Runs `trials` cycles of every condition, with stream indices first_cycle,
+// first_cycle + 1, ... Same inputs: the same records, whatever options.threads.
+DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t seed,
+                    bool record_trace, const RunnerOptions& options,
+                    std::uint64_t first_cycle = 0);
+
+struct RunSettings {
+  std::uint64_t seed = 1;
+  int trials = 0;  // > 0 overrides the experiment file's
+  int threads = 1;
+  bool progress = true;
+};
+
+struct ExperimentRun {
+  const scene::ExperimentFile* file = nullptr;
+  std::uint64_t seed = 1;
+  int trials = 1;
+  DesignRun run;
+  // fatigue: the pilot cycles from A = 0, and the work rate they measured,
+  // J per second of assembly (total work over total cycle time).
+  DesignRun pilot;
+  double work_rate = 0;
+  std::vector<ExperimentRun> parts;  // paper: one run per listed experiment
+};
+
+// Runs the experiment `file` describes (InputError for a kind vahf cannot run
+// yet). Fatigue: the operator works cycles back to back for duration_min;
+// segment s of S covers minutes [s, s + 1) * duration / S. Simulating every
+// cycle of an hour one after another would take hours, so the design is
+// stratified: a pilot of cycles started at A = 0 measures the mean work rate
+// w (J/s of cycle time), and each segment's `trials` cycles are spread evenly
+// over its minutes, cycle j starting with the work A = w * 60 * minute that
+// back-to-back cycles would have accumulated by then.
+ExperimentRun RunExperiment(const scene::ExperimentFile& file, const RunSettings& settings);
+
+}  // namespace vahf::experiment

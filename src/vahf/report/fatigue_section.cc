@@ -1,0 +1,126 @@
+// Paper Sec. 5.4 (Figs. 15-16): mean assembly time and assembly success rate
+// in each segment of an hour's work, and whether they worsen.
+#include <fmt/format.h>
+
+#include "vahf/human/fatigue.h"
+#include "vahf/report/section.h"
+#include "vahf/stats/proportion.h"
+#include "vahf/stats/summary.h"
+#include "vahf/stats/welch.h"
+
+namespace vahf::report {
+
+Section FatigueSection(const experiment::ExperimentRun& run) {
+  const scene::Scene& scene = run.file->scene;
+  const experiment::DesignRun& d = run.run;
+  Section out;
+  out.kind = "fatigue";
+  out.tables.emplace_back("fatigue_cycles.csv", CyclesTable(d));
+  out.tables.emplace_back("fatigue_pilot_cycles.csv", CyclesTable(run.pilot));
+
+  const std::size_t ns = d.conditions.size();
+  std::vector<std::vector<double>> times(ns);
+  std::vector<stats::Count> counts(ns);
+  for (const experiment::CycleRecord& r : d.records) {
+    ++counts[r.condition].trials;
+    if (!r.result.completed) continue;
+    ++counts[r.condition].successes;
+    times[r.condition].push_back(r.result.time);
+  }
+  const double a_max = scene.params.fatigue.a_max;
+  Table segments({"segment", "minute_start", "minute_end", "work_start_J", "work_end_J",
+                  "psi_start", "psi_end", "cycles", "completed", "success_rate",
+                  "wilson_lower", "wilson_upper", "mean_time_s", "ci_lower_s",
+                  "ci_upper_s"});
+  std::string md = fmt::format(
+      "## Fatigue over one hour (Sec. 5.4, Figs. 15-16)\n\n"
+      "Work rate from {} pilot cycles at A = 0: {:.4g} J per second of assembly. Each "
+      "segment's cycles start with the work back-to-back cycles would have done by their "
+      "minute; Psi_c = (A_max - A) / A_max with A_max = {:.4g} J (Eq. 6). Success rate with "
+      "its 95 % Wilson interval; mean time of completed cycles with its 95 % t interval.\n\n"
+      "| segment | A at start (J) | Psi_c at start | Psi_c at end | success rate | mean time "
+      "(s) |\n| --- | --- | --- | --- | --- | --- |\n",
+      run.pilot.records.size(), run.work_rate, a_max);
+  std::string fig15, fig16;
+  for (std::size_t s = 0; s < ns; ++s) {
+    const experiment::Condition& c = d.conditions[s];
+    const stats::Interval w = stats::WilsonInterval(counts[s]);
+    const stats::Summary t = stats::Summarize(times[s]);
+    const double rate = counts[s].trials ? static_cast<double>(counts[s].successes) /
+                                               static_cast<double>(counts[s].trials)
+                                         : NAN;
+    const double psi0 = human::FatigueCoefficient(c.work_start, a_max);
+    const double psi1 = human::FatigueCoefficient(c.work_end, a_max);
+    segments.AddRow({c.name, c.minute_start, c.minute_end, c.work_start, c.work_end, psi0,
+                     psi1, counts[s].trials, counts[s].successes, rate, w.lower, w.upper,
+                     t.mean.value_or(NAN), t.ci ? t.ci->lower : NAN,
+                     t.ci ? t.ci->upper : NAN});
+    md += fmt::format("| {} | {:.4g} | {:.5f} | {:.5f} | {}/{} = {:.2f} [{:.2f}, {:.2f}] | "
+                      "{} |\n",
+                      c.name, c.work_start, psi0, psi1, counts[s].successes,
+                      counts[s].trials, rate, w.lower, w.upper,
+                      t.mean ? fmt::format("{:.3f} [{:.3f}, {:.3f}]", *t.mean,
+                                           t.ci ? t.ci->lower : *t.mean,
+                                           t.ci ? t.ci->upper : *t.mean)
+                             : "-");
+    const double mid = 0.5 * (c.minute_start + c.minute_end);
+    if (t.mean)
+      fig15 += fmt::format("{} {} {} {}\n", mid, *t.mean, t.ci ? t.ci->lower : *t.mean,
+                           t.ci ? t.ci->upper : *t.mean);
+    fig16 += fmt::format("{} {} {} {}\n", mid, rate, w.lower, w.upper);
+  }
+  out.tables.emplace_back("fatigue_segments.csv", segments);
+
+  nlohmann::json claims = nlohmann::json::array();
+  if (ns >= 2) {
+    const std::size_t last = ns - 1;
+    if (times[0].size() >= 2 && times[last].size() >= 2) {
+      const stats::WelchResult w = stats::WelchTTest(times[last], times[0]);
+      claims.push_back(Claim(
+          "mean assembly time rises from the first to the last segment",
+          w.mean_difference > 0 && w.p_greater < 0.05,
+          "Welch t test, one-sided (last > first), 5 %",
+          fmt::format("last - first = {:.4f} s, 95 % CI [{:.4f}, {:.4f}], p = {:.4f}",
+                      w.mean_difference, w.ci.lower, w.ci.upper, w.p_greater)));
+    }
+    const double p = stats::FisherRateFellP(counts[0], counts[last]);
+    claims.push_back(Claim(
+        "the assembly success rate falls from the first to the last segment (paper: "
+        "0.96 to 0.75)",
+        p < 0.05, "Fisher exact test, one-sided (rate fell), 5 %",
+        fmt::format("{}/{} then {}/{}, p = {:.4f}; Psi_c at the end of the hour {:.5f}",
+                    counts[0].successes, counts[0].trials, counts[last].successes,
+                    counts[last].trials, p,
+                    human::FatigueCoefficient(d.conditions[last].work_end, a_max))));
+  }
+  out.summary = {{"work_rate_J_per_s", run.work_rate},
+                 {"a_max_J", a_max},
+                 {"psi_end_of_hour",
+                  ns ? human::FatigueCoefficient(d.conditions[ns - 1].work_end, a_max)
+                     : 1.0},
+                 {"claims", claims}};
+  out.markdown = md;
+  out.plots.push_back(
+      {"plots/fatigue_time.png", "Fig. 15: mean assembly time in each segment",
+       "$d << EOD\n" + fig15 +
+           "EOD\nset title 'Fig. 15: mean assembly time per segment'\n"
+           "set xlabel 'minute of work'\nset ylabel 'time (s)'\nset grid\nset xrange [0:" +
+           fmt::format("{:g}", run.file->fatigue.duration_min) +
+           "]\nplot $d using 1:2:3:4 with yerrorlines pt 7 title 'virtual'\n"});
+  out.plots.push_back(
+      {"plots/fatigue_success.png", "Fig. 16: assembly success rate in each segment",
+       "$d << EOD\n" + fig16 +
+           "EOD\n$p << EOD\n" +
+           fmt::format("{:g} 0.96\n{:g} 0.75\n", 0.5 * run.file->fatigue.duration_min / ns,
+                       run.file->fatigue.duration_min * (1 - 0.5 / ns)) +
+           "EOD\n"
+           "set title 'Fig. 16: assembly success rate per segment'\n"
+           "set xlabel 'minute of work'\nset ylabel 'success rate'\nset yrange [0:1.05]\n"
+           "set grid\nset key left bottom\nset xrange [0:" +
+           fmt::format("{:g}", run.file->fatigue.duration_min) +
+           "]\nplot $d using 1:2:3:4 with yerrorlines pt 7 title 'virtual (Wilson 95 %)', "
+           "$p using 1:2 with points pt 5 ps 1.5 title 'paper, virtual (first, last)'\n"});
+  return out;
+}
+
+}  // namespace vahf::report

@@ -1,0 +1,133 @@
+#include "vahf/report/run_output.h"
+
+#include <fmt/format.h>
+
+#include <map>
+
+#include "vahf/report/manifest.h"
+#include "vahf/report/output_directory.h"
+#include "vahf/report/plot.h"
+#include "vahf/report/section.h"
+
+namespace vahf::report {
+namespace {
+
+// The runs whose sections the output holds: the run itself, or a paper's parts.
+std::vector<const experiment::ExperimentRun*> Leaves(const experiment::ExperimentRun& run) {
+  std::vector<const experiment::ExperimentRun*> out;
+  if (run.parts.empty()) {
+    out.push_back(&run);
+  } else {
+    for (const auto& p : run.parts) out.push_back(&p);
+  }
+  return out;
+}
+
+// Every scene file a run read, each once, in the order first met.
+void AddScenes(const scene::ExperimentFile& f, std::vector<std::string>* paths) {
+  const auto add = [&](const std::string& p) {
+    if (!p.empty() && std::find(paths->begin(), paths->end(), p) == paths->end())
+      paths->push_back(p);
+  };
+  add(f.scene_path);
+  for (const auto& c : f.conditions) add(c.scene_path);
+  if (!f.paper_table_path.empty()) add(f.paper_table_path);
+}
+
+std::string ClaimsMarkdown(const std::vector<Section>& sections) {
+  std::string md =
+      "## The paper's claims\n\n| claim | reproduced | test | evidence |\n"
+      "| --- | --- | --- | --- |\n";
+  for (const Section& s : sections)
+    for (const auto& c : s.summary.at("claims"))
+      md += fmt::format("| {} | {} | {} | {} |\n", c.at("claim").get<std::string>(),
+                        c.at("reproduced").get<bool>() ? "yes" : "**no**",
+                        c.at("test").get<std::string>(),
+                        c.at("evidence").get<std::string>());
+  return md + "\n";
+}
+
+}  // namespace
+
+std::string WriteRunOutput(const experiment::ExperimentRun& run, const std::string& path,
+                           const RunInfo& info) {
+  const scene::ExperimentFile& file = *run.file;
+  std::vector<Section> sections;
+  for (const experiment::ExperimentRun* leaf : Leaves(run))
+    sections.push_back(SectionFor(*leaf));
+
+  OutputDirectory out(path);
+  std::map<std::string, std::string> results;  // name -> bytes, for the digest
+  nlohmann::json summary = {{"experiment", file.name},
+                            {"kind", file.kind},
+                            {"seed", run.seed},
+                            {"trials", run.trials}};
+  for (const Section& s : sections) {
+    for (const auto& [name, table] : s.tables) results[name] = table.ToCsv();
+    summary["sections"][s.kind] = s.summary;
+  }
+  results["summary.json"] = summary.dump(1) + "\n";
+  std::vector<std::string> result_files;
+  for (const auto& [name, bytes] : results) {
+    out.Write(name, bytes);
+    result_files.push_back(name);
+  }
+  const std::string digest = ResultsDigest(results);
+
+  // Manifest: the experiment file, the first scene, and every file read.
+  const scene::ExperimentFile& first = run.parts.empty() ? file : *run.parts[0].file;
+  ManifestFields m;
+  m.experiment = DescribeInputFile(file.file);
+  m.scene = DescribeInputFile(first.scene_path);
+  m.seed = run.seed;
+  m.trials = run.trials;
+  m.threads = info.threads;
+  m.parameters = first.scene.params;
+  m.result_files = result_files;
+  m.results_digest = digest;
+  nlohmann::json manifest = ManifestJson(m);
+  std::vector<std::string> inputs;
+  for (const experiment::ExperimentRun* leaf : Leaves(run)) {
+    if (leaf != &run) inputs.push_back(leaf->file->file);
+    AddScenes(*leaf->file, &inputs);
+  }
+  for (const std::string& p : inputs) {
+    const InputFile f = DescribeInputFile(p);
+    manifest["inputs"].push_back({{"path", f.path}, {"sha256", f.sha256}});
+  }
+  if (!run.parts.empty()) {
+    for (const auto& part : run.parts)
+      manifest["experiments"].push_back({{"name", part.file->name},
+                                         {"kind", part.file->kind},
+                                         {"trials", part.trials}});
+  }
+  out.Write(OutputDirectory::kMarkerFile, manifest.dump(1) + "\n");
+
+  // Report: what ran, the claims, then each section with its plots.
+  std::string md = fmt::format(
+      "# vahf report: {}\n\n{}\n\n"
+      "- experiment file: `{}` (kind {}), seed {}, {} cycles per condition\n"
+      "- threads: {}, wall time: {:.1f} s (not part of any result file)\n"
+      "- results digest (SHA-256 over the CSV tables and summary.json): `{}`\n"
+      "- program: {} ({}), {} {}\n\n",
+      file.name, file.description, file.file, file.kind, run.seed, run.trials, info.threads,
+      info.wall_seconds, digest, m.build.version, m.build.git_describe, m.build.compiler_id,
+      m.build.compiler_version);
+  md += ClaimsMarkdown(sections);
+  for (const Section& s : sections) {
+    md += s.markdown + "\n";
+    for (const Plot& p : s.plots) {
+      RenderPlot(p.script, out.Path(p.file));
+      md += fmt::format("![{}]({})\n\n*{}*\n\n", p.title, p.file, p.title);
+    }
+    md += "Tables: ";
+    for (std::size_t k = 0; k < s.tables.size(); ++k)
+      md += fmt::format("{}`{}`", k ? ", " : "", s.tables[k].first);
+    md += ".\n\n";
+  }
+  out.Write("report.md", md);
+  out.Commit();
+  return digest;
+}
+
+}  // namespace vahf::report

@@ -1,0 +1,49 @@
+// What one experiment contributes to a run's output (docs/outputs.md): tidy
+// tables, its part of summary.json (statistics and the paper's claims, each
+// marked reproduced or not), a Markdown section of report.md and its plots.
+// The analysis of each kind lives in its own file; this header declares them.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vahf/experiment/design.h"
+#include "vahf/report/table.h"
+
+namespace vahf::report {
+
+struct Plot {
+  std::string file;    // relative to the run directory: "plots/NAME.png"
+  std::string title;   // the caption in report.md
+  std::string script;  // gnuplot, with inline data (plot.h)
+};
+
+struct Section {
+  std::string kind;
+  std::vector<std::pair<std::string, Table>> tables;  // file name -> table
+  nlohmann::json summary;  // always holds "claims": a list (possibly empty)
+  std::string markdown;
+  std::vector<Plot> plots;
+};
+
+// A claim of the paper tested on the run: `reproduced` when the statistical
+// test named in `test` supports it at the 5 % level; `evidence` says what the
+// model gave instead when it does not.
+nlohmann::json Claim(const std::string& claim, bool reproduced, const std::string& test,
+                     const std::string& evidence);
+
+// One row per part trial of every cycle: condition, group, cycle, part,
+// status, start and completion times, work. Every kind writes it.
+Table CyclesTable(const experiment::DesignRun& run);
+
+Section Table1Section(const experiment::ExperimentRun& run);
+Section AssemblyTimeSection(const experiment::ExperimentRun& run);
+Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run);
+Section FatigueSection(const experiment::ExperimentRun& run);
+
+// The section of a run of any kind but "paper".
+Section SectionFor(const experiment::ExperimentRun& run);
+
+}  // namespace vahf::report
