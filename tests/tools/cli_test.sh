@@ -2,7 +2,9 @@
 # Tests of the vahf command's exit status and output: `check` on a valid scene,
 # a malformed scene (one-line error naming the file, JSON pointer and rule,
 # exit 2), a missing file and invalid JSON (exit 2); `reference`; `--help`; and
-# bad options (exit 2).
+# bad options (exit 2); `run`: the same results digest on 1 and 2 threads, a
+# bad experiment (exit 2), an --out that is not a vahf output (refused, exit 2,
+# untouched) and SIGINT (exit 130, no output directory left).
 #
 # Usage: cli_test.sh VAHF_EXECUTABLE REPO_ROOT
 set -uo pipefail
@@ -210,6 +212,93 @@ expect_status "unknown option after a subcommand" 2
 
 run no-such-command
 expect_status "unknown subcommand" 2
+
+# --- run: Table 1 with 2 cycles, on 1 and on 2 threads: the same results.
+table1=$root/experiments/table1.json
+run run "$table1" --trials 2 --out "$tmp/a"
+expect_status "run table1" 0
+expect_in "run table1" "$out" "results digest"
+run run "$table1" --trials 2 --threads 2 --out "$tmp/b"
+expect_status "run table1 --threads 2" 0
+for f in manifest.json report.md summary.json table1_instants.csv plots/table1_eta.png; do
+  if [[ -s "$tmp/a/$f" && -s "$tmp/b/$f" ]]; then
+    pass "run table1: wrote $f"
+  else
+    fail "run table1: no $f"
+  fi
+done
+if [[ ! -e "$tmp/a.partial" && ! -e "$tmp/b.partial" ]]; then
+  pass "run table1: no staging directory left behind"
+else
+  fail "run table1: a .partial directory was left behind"
+fi
+# digest DIR: the results digest in DIR/manifest.json.
+digest() {
+  sed -n 's/.*"results_digest": *"\([0-9a-f]*\)".*/\1/p' "$1/manifest.json"
+}
+digest_a=$(digest "$tmp/a")
+digest_b=$(digest "$tmp/b")
+if [[ ${#digest_a} -eq 64 && "$digest_a" == "$digest_b" ]]; then
+  pass "run table1: the same results digest on 1 and 2 threads"
+else
+  fail "run table1: results digest '$digest_a' on 1 thread, '$digest_b' on 2"
+fi
+
+# --- run: an experiment whose operator's height is out of range, or a string.
+bad=$tmp/bad_operator.json
+for height in 3.0 '"NaN"'; do
+  cat >"$bad" <<EOF
+{"format": "vahf-experiment/1", "name": "bad_operator", "kind": "assembly_time",
+ "scene": "$root/experiments/scenes/hydraulic_cylinder.json", "trials": 1,
+ "operators": [{"name": "tall", "sex": "male", "height": $height, "arm_length": 0.74}]}
+EOF
+  run run "$bad" --out "$tmp/bad_out"
+  expect_status "run with operator height $height" 2
+  expect_lines "run with operator height $height" "$err" 1
+  expect_in "run with operator height $height" "$err" "vahf: error: $bad"
+  expect_in "run with operator height $height" "$err" "/operators/0/height = $height"
+  if [[ ! -e "$tmp/bad_out" && ! -e "$tmp/bad_out.partial" ]]; then
+    pass "run with operator height $height: no output directory"
+  else
+    fail "run with operator height $height: an output directory was written"
+  fi
+done
+expect_in "run with operator height \"NaN\"" "$err" "must be a number, not a string"
+
+# --- run: --out naming a directory that holds other files is refused, untouched.
+mine=$tmp/mine
+mkdir -p "$mine/sub"
+echo "keep me" >"$mine/notes.txt"
+echo "and me" >"$mine/sub/data.txt"
+listing() {
+  (cd "$mine" && find . -exec ls -ld --time-style=full-iso {} + | sort &&
+     cat notes.txt sub/data.txt)
+}
+before=$(listing)
+run run "$table1" --trials 1 --out "$mine"
+expect_status "run --out a directory that is not a vahf output" 2
+expect_lines "run --out a directory that is not a vahf output" "$err" 1
+expect_in "run --out a directory that is not a vahf output" "$err" "vahf: error: $mine"
+if [[ "$(listing)" == "$before" && ! -e "$mine.partial" ]]; then
+  pass "run --out a directory that is not a vahf output: left untouched"
+else
+  fail "run --out a directory that is not a vahf output: it was changed"
+fi
+
+# --- run: SIGINT stops the run with exit status 130 and writes nothing.
+"$vahf" run "$root/experiments/fatigue.json" --trials 50 --out "$tmp/int" >"$out" 2>"$err" &
+pid=$!
+sleep 1.5
+kill -INT "$pid"
+wait "$pid"
+status=$?
+expect_status "run interrupted by SIGINT" 130
+expect_in "run interrupted by SIGINT" "$err" "interrupted"
+if [[ ! -e "$tmp/int" && ! -e "$tmp/int.partial" ]]; then
+  pass "run interrupted by SIGINT: no output or staging directory"
+else
+  fail "run interrupted by SIGINT: an output or staging directory was left"
+fi
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -94,6 +94,8 @@ int Run(const RunArgs& a) {
   settings.threads = a.threads;
   const std::string out =
       a.out.empty() ? "runs/" + file.name + "-seed" + std::to_string(settings.seed) : a.out;
+  // Checked and staged before any simulation: a refused path costs nothing.
+  vahf::report::OutputDirectory directory(out);
   vahf::experiment::InstallInterruptHandler();
   const auto start = std::chrono::steady_clock::now();
   const vahf::experiment::ExperimentRun run = vahf::experiment::RunExperiment(file, settings);
@@ -101,12 +103,16 @@ int Run(const RunArgs& a) {
   info.threads = a.threads;
   info.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string digest = vahf::report::WriteRunOutput(run, out, info);
+  const vahf::report::RunOutput written = vahf::report::WriteRunOutput(run, directory, info);
+  const std::string& digest = written.results_digest;
   std::printf("%s: %s, seed %llu, %.1f s on %d thread(s)\nresults digest %s\nreport: %s/report.md\n",
               file.name.c_str(), file.kind.c_str(),
               static_cast<unsigned long long>(settings.seed), info.wall_seconds, a.threads,
               digest.c_str(), out.c_str());
-  return 0;
+  for (const std::string& failure : written.failed_plots)
+    std::fprintf(stderr, "vahf: error: plot not rendered (results kept): %s\n",
+                 failure.c_str());
+  return written.failed_plots.empty() ? 0 : 1;
 }
 
 }  // namespace

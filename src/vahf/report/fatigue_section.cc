@@ -72,10 +72,15 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
   out.tables.emplace_back("fatigue_segments.csv", segments);
 
   nlohmann::json claims = nlohmann::json::array();
+  nlohmann::json tests = nlohmann::json::object();
   if (ns >= 2) {
     const std::size_t last = ns - 1;
     if (times[0].size() >= 2 && times[last].size() >= 2) {
       const stats::WelchResult w = stats::WelchTTest(times[last], times[0]);
+      tests["time_last_minus_first"] = {{"mean_difference_s", w.mean_difference},
+                                        {"ci_lower_s", w.ci.lower},
+                                        {"ci_upper_s", w.ci.upper},
+                                        {"p_greater", w.p_greater}};
       claims.push_back(Claim(
           "mean assembly time rises from the first to the last segment",
           w.mean_difference > 0 && w.p_greater < 0.05,
@@ -84,6 +89,10 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
                       w.mean_difference, w.ci.lower, w.ci.upper, w.p_greater)));
     }
     const double p = stats::FisherRateFellP(counts[0], counts[last]);
+    tests["success_first"] = {{"successes", counts[0].successes}, {"cycles", counts[0].trials}};
+    tests["success_last"] = {{"successes", counts[last].successes},
+                             {"cycles", counts[last].trials}};
+    tests["p_rate_fell"] = p;
     claims.push_back(Claim(
         "the assembly success rate falls from the first to the last segment (paper: "
         "0.96 to 0.75)",
@@ -98,6 +107,7 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
                  {"psi_end_of_hour",
                   ns ? human::FatigueCoefficient(d.conditions[ns - 1].work_end, a_max)
                      : 1.0},
+                 {"tests", tests},
                  {"claims", claims}};
   out.markdown = md;
   out.plots.push_back(
@@ -111,8 +121,9 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
       {"plots/fatigue_success.png", "Fig. 16: assembly success rate in each segment",
        "$d << EOD\n" + fig16 +
            "EOD\n$p << EOD\n" +
-           fmt::format("{:g} 0.96\n{:g} 0.75\n", 0.5 * run.file->fatigue.duration_min / ns,
-                       run.file->fatigue.duration_min * (1 - 0.5 / ns)) +
+           fmt::format("{:g} 0.96\n{:g} 0.75\n",
+                       0.5 * run.file->fatigue.duration_min / static_cast<double>(ns),
+                       run.file->fatigue.duration_min * (1 - 0.5 / static_cast<double>(ns))) +
            "EOD\n"
            "set title 'Fig. 16: assembly success rate per segment'\n"
            "set xlabel 'minute of work'\nset ylabel 'success rate'\nset yrange [0:1.05]\n"

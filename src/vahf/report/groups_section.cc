@@ -97,6 +97,7 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
   // Claim (Sec. 5.3): the general condition lies between the best and the
   // worst, for eta and for lambda_c (pooled over the instants).
   nlohmann::json claims = nlohmann::json::array();
+  nlohmann::json tests = nlohmann::json::object();
   const auto index = [&](const std::string& name) -> std::optional<std::size_t> {
     for (std::size_t c = 0; c < nc; ++c)
       if (d.conditions[c].name == name) return c;
@@ -116,6 +117,11 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
         const stats::WelchResult hi = stats::WelchTTest(g, w);
         ok = lo.mean_difference < 0 && lo.p_less < 0.05 && hi.mean_difference < 0 &&
              hi.p_less < 0.05;
+        tests[quantity] = {{"mean_best", stats::Mean(b)},
+                           {"mean_general", stats::Mean(g)},
+                           {"mean_worst", stats::Mean(w)},
+                           {"p_best_below_general", lo.p_less},
+                           {"p_general_below_worst", hi.p_less}};
         evidence = fmt::format(
             "means best {:.3f}, general {:.3f}, worst {:.3f}; p(best < general) = {:.4f}, "
             "p(general < worst) = {:.4f}",
@@ -127,7 +133,7 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
                              ok, "two one-sided Welch t tests, 5 %", evidence));
     }
   }
-  out.summary = {{"claims", claims}};
+  out.summary = {{"tests", tests}, {"claims", claims}};
   out.markdown = md;
   std::string plot_cols;
   for (std::size_t c = 0; c < nc; ++c)
@@ -135,7 +141,7 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
                              c ? ", " : "", c + 2, d.conditions[c].name);
   const auto figure = [&](const std::string& data, const char* what, const char* fig) {
     return "$d << EOD\n" + data + "EOD\nset title '" + fig + ": " + what +
-           " at the paper's instants'\nset xlabel 'paper instant (s of 16)'\nset ylabel '" +
+           " at the paper instants'\nset xlabel 'paper instant (s of 16)'\nset ylabel '" +
            what + "'\nset yrange [0:1]\nset grid\nset key left top\nplot " + plot_cols +
            "\n";
   };

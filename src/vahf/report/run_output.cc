@@ -49,14 +49,14 @@ std::string ClaimsMarkdown(const std::vector<Section>& sections) {
 
 }  // namespace
 
-std::string WriteRunOutput(const experiment::ExperimentRun& run, const std::string& path,
-                           const RunInfo& info) {
+RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& out,
+                         const RunInfo& info) {
+  RunOutput result;
   const scene::ExperimentFile& file = *run.file;
   std::vector<Section> sections;
   for (const experiment::ExperimentRun* leaf : Leaves(run))
     sections.push_back(SectionFor(*leaf));
 
-  OutputDirectory out(path);
   std::map<std::string, std::string> results;  // name -> bytes, for the digest
   nlohmann::json summary = {{"experiment", file.name},
                             {"kind", file.kind},
@@ -117,8 +117,14 @@ std::string WriteRunOutput(const experiment::ExperimentRun& run, const std::stri
   for (const Section& s : sections) {
     md += s.markdown + "\n";
     for (const Plot& p : s.plots) {
-      RenderPlot(p.script, out.Path(p.file));
-      md += fmt::format("![{}]({})\n\n*{}*\n\n", p.title, p.file, p.title);
+      try {
+        RenderPlot(p.script, out.Path(p.file));
+        md += fmt::format("![{}]({})\n\n*{}*\n\n", p.title, p.file, p.title);
+      } catch (const PlotError& e) {
+        result.failed_plots.push_back(p.file + ": " + e.what());
+        md += fmt::format("**Figure missing:** {} (`{}`) could not be rendered: {}\n\n",
+                          p.title, p.file, e.what());
+      }
     }
     md += "Tables: ";
     for (std::size_t k = 0; k < s.tables.size(); ++k)
@@ -127,7 +133,8 @@ std::string WriteRunOutput(const experiment::ExperimentRun& run, const std::stri
   }
   out.Write("report.md", md);
   out.Commit();
-  return digest;
+  result.results_digest = digest;
+  return result;
 }
 
 }  // namespace vahf::report

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "vahf/experiment/design.h"
+#include "vahf/report/output_directory.h"
 
 namespace vahf::report {
 
@@ -14,9 +16,17 @@ struct RunInfo {
   double wall_seconds = 0;  // in report.md only, never in a result file
 };
 
-// Returns the results digest. Plots that gnuplot cannot render are a
-// PlotError: nothing is committed then.
-std::string WriteRunOutput(const experiment::ExperimentRun& run, const std::string& path,
-                           const RunInfo& info);
+struct RunOutput {
+  std::string results_digest;
+  // Plots gnuplot could not render, with its message. A failed plot never
+  // costs the results: the output is committed, report.md says which figure
+  // is missing and why, and the caller reports the failure.
+  std::vector<std::string> failed_plots;
+};
+
+// Writes into `out` (created before the run, so that a refused path costs no
+// simulation) and commits it.
+RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& out,
+                         const RunInfo& info);
 
 }  // namespace vahf::report

@@ -65,7 +65,7 @@ Section Table1Section(const experiment::ExperimentRun& run) {
                                           static_cast<std::int64_t>(p), sp.name,
                                           std::string(1, kInstants[k])};
         for (std::size_t c = 0; c < 9; ++c) {
-          cells.push_back(v[c]);
+          cells.emplace_back(std::in_place_type<double>, v[c]);
           samples[p][k][c].push_back(v[c]);
         }
         instants.AddRow(std::move(cells));

@@ -1,5 +1,7 @@
 #include "vahf/scene/experiment_file.h"
 
+#include <fmt/format.h>
+
 #include <filesystem>
 
 #include "vahf/scene/json_reader.h"
@@ -99,9 +101,11 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
     const std::size_t n = list.ArraySize(1);
     for (std::size_t k = 0; k < n; ++k) {
       const std::string sub = ResolvePath(list.At(k), path, "experiment");
-      ExperimentFile x = LoadExperiment(sub);
-      if (x.kind == "paper") list.At(k).Fail("a paper experiment cannot list another");
-      e.experiments.push_back(std::move(x));
+      // Checked before parsing, so a file listing itself cannot recurse.
+      const nlohmann::json doc = ReadJsonFile(sub);
+      if (doc.is_object() && doc.contains("kind") && doc["kind"] == "paper")
+        list.At(k).Fail("a paper experiment cannot list another paper experiment");
+      e.experiments.push_back(ParseExperiment(doc, sub));
     }
     return e;
   }
@@ -119,6 +123,9 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
       entry.name = c.Required("name").String();
       entry.scene_path = ResolvePath(c.Required("scene"), path, "scene");
       entry.scene = LoadScene(entry.scene_path);
+      for (const ConditionEntry& other : e.conditions)
+        if (other.name == entry.name)
+          c.Required("name").Fail("condition names must be unique");
       e.conditions.push_back(std::move(entry));
     }
     if (auto cycle = root.Optional("paper_cycle_s")) e.paper_cycle_s = cycle->Positive();
@@ -127,8 +134,9 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
     for (std::size_t k = 0; k < m; ++k) {
       const double t = instants.At(k).Positive();
       if (t > e.paper_cycle_s)
-        instants.At(k).Fail("an instant lies within the paper's cycle, paper_cycle_s = " +
-                            std::to_string(e.paper_cycle_s) + " s");
+        instants.At(k).Fail(fmt::format(
+            "an instant lies within the paper's cycle, paper_cycle_s = {} s",
+            e.paper_cycle_s));
       e.instants_s.push_back(t);
     }
   }

@@ -1,0 +1,140 @@
+// The paper's claims (issue 5), tested statistically on seeded runs of the
+// shipped experiments at a reduced size. Each run is deterministic, so these
+// tests never flake; they fail when the model's behaviour changes. Where the
+// model with defensible parameters does not reproduce a claim, the test
+// records that and checks what the model does instead (docs/experiments.md).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "vahf/experiment/design.h"
+#include "vahf/report/output_directory.h"
+#include "vahf/report/run_output.h"
+#include "vahf/report/section.h"
+#include "vahf/scene/experiment_file.h"
+
+namespace vahf::report {
+namespace {
+
+std::string Source(const std::string& relative) {
+  const char* root = std::getenv("VAHF_SOURCE_DIR");
+  return std::string(root ? root : VAHF_SOURCE_DIR) + "/" + relative;
+}
+
+struct Ran {
+  scene::ExperimentFile file;
+  experiment::ExperimentRun run;
+  Section section;
+};
+
+// Runs experiments/NAME.json with `trials` cycles per condition. The file
+// lives as long as the run that points at it.
+std::unique_ptr<Ran> RunShipped(const std::string& name, int trials) {
+  auto r = std::make_unique<Ran>();
+  r->file = scene::LoadExperiment(Source("experiments/" + name + ".json"));
+  experiment::RunSettings s;
+  s.seed = r->file.seed;
+  s.trials = trials;
+  s.progress = false;
+  r->run = experiment::RunExperiment(r->file, s);
+  r->section = SectionFor(r->run);
+  return r;
+}
+
+[[maybe_unused]] const nlohmann::json& ClaimContaining(const Section& s, const std::string& text) {
+  for (const auto& c : s.summary.at("claims"))
+    if (c.at("claim").get<std::string>().find(text) != std::string::npos) return c;
+  ADD_FAILURE() << "no claim containing '" << text << "' in " << s.summary.dump(1);
+  static const nlohmann::json none = {{"reproduced", false}, {"evidence", ""}};
+  return none;
+}
+
+// Table 1, Sec. 4: eta rises as each part nears its final position. Reproduced.
+TEST(PaperClaims, EtaRisesAsEachPartNearsItsTarget) {
+  const auto r = RunShipped("table1", 4);
+  const auto& claims = r->section.summary.at("claims");
+  ASSERT_EQ(claims.size(), 3u);
+  for (const auto& c : claims) {
+    std::printf("%s: %s\n", c.at("claim").get<std::string>().c_str(),
+                c.at("evidence").get<std::string>().c_str());
+    EXPECT_TRUE(c.at("reproduced").get<bool>()) << c.dump();
+  }
+}
+
+// Sec. 5.2, one run for both claims.
+// (1) The three male operators assemble faster than the three female ones.
+// NOT reproduced: in the model sex acts only through stature and arm length
+// (posture, so f, r, g), and at this size the difference is not significant.
+// What the model does instead: the male - female difference is small (under
+// 0.5 s against cycles of about 1.5 s) and not significant.
+// (2) Fig. 12: subassembly time falls with the part's mass and size.
+// Reproduced at this size: piston rod (3.6 kg) slower than guide sleeve
+// (0.8 kg) slower than seal ring (25 g), each step one-sided Welch p < 0.05
+// (at the paper run's size the sleeve-seal step is weaker: see the report).
+TEST(PaperClaims, AssemblyTimeSexNotReproducedMassReproduced) {
+  const auto r = RunShipped("assembly_time", 4);
+  const nlohmann::json& claim = ClaimContaining(r->section, "male operators");
+  EXPECT_FALSE(claim.at("reproduced").get<bool>()) << claim.dump();
+  const nlohmann::json& t = r->section.summary.at("tests").at("male_vs_female");
+  EXPECT_GT(t.at("p_less").get<double>(), 0.05) << t.dump();
+  EXPECT_LT(std::abs(t.at("mean_difference_s").get<double>()), 0.5) << t.dump();
+  const nlohmann::json& mass = ClaimContaining(r->section, "subassembly time");
+  EXPECT_TRUE(mass.at("reproduced").get<bool>()) << mass.dump();
+}
+
+// Sec. 5.3: the general condition lies between the best and the worst. Half
+// reproduced: the worst condition (standing far, part screened) gives
+// significantly larger eta and lambda_c than the general one, but standing
+// close does not make the model's operator better off: looking steeply down
+// into the barrel, the part is hidden sooner, and eta is if anything larger.
+TEST(PaperClaims, WorkingConditionsWorstReproducedBestNot) {
+  const auto r = RunShipped("human_factors_groups", 4);
+  for (const char* q : {"eta", "lambda_c"}) {
+    const nlohmann::json& claim =
+        ClaimContaining(r->section, std::string(q) + " of the general condition");
+    EXPECT_FALSE(claim.at("reproduced").get<bool>()) << claim.dump();
+    const nlohmann::json& t = r->section.summary.at("tests").at(q);
+    EXPECT_LT(t.at("p_general_below_worst").get<double>(), 0.05) << q << t.dump();
+    EXPECT_GT(t.at("p_best_below_general").get<double>(), 0.05) << q << t.dump();
+  }
+}
+
+// Sec. 5.4: over an hour the mean time rises and the success rate falls
+// (paper: 0.96 to 0.75). NOT reproduced: Eq. 4's work over an hour of cycles
+// is some hundreds of kJ against A_max = 1600 kcal = 6.69 MJ (Eq. 6), so
+// Psi_c stays above 0.95 and the operator's force barely weakens. What the
+// model does instead: every cycle of the first and last segments succeeds and
+// the mean time does not rise significantly.
+TEST(PaperClaims, FatigueOverAnHourIsNotReproduced) {
+  const auto r = RunShipped("fatigue", 4);
+  const nlohmann::json& s = r->section.summary;
+  EXPECT_FALSE(ClaimContaining(r->section, "success rate falls").at("reproduced").get<bool>());
+  EXPECT_FALSE(ClaimContaining(r->section, "mean assembly time rises").at("reproduced").get<bool>());
+  EXPECT_GT(s.at("psi_end_of_hour").get<double>(), 0.95) << s.dump();
+  EXPECT_LT(s.at("psi_end_of_hour").get<double>(), 1.0) << s.dump();
+  const nlohmann::json& t = s.at("tests");
+  EXPECT_EQ(t.at("success_last").at("successes"), t.at("success_last").at("cycles"));
+  EXPECT_GT(t.at("time_last_minus_first").at("p_greater").get<double>(), 0.05);
+}
+
+// Every kind's report renders: tables, summary, and each gnuplot figure.
+TEST(PaperClaims, EveryKindWritesItsReportWithAllPlots) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "vahf_paper_claims_report";
+  std::filesystem::remove_all(dir);
+  for (const char* name : {"table1", "assembly_time", "human_factors_groups", "fatigue"}) {
+    const auto r = RunShipped(name, 1);
+    OutputDirectory out((dir / name).string());
+    const RunOutput written = WriteRunOutput(r->run, out, RunInfo{});
+    EXPECT_TRUE(written.failed_plots.empty()) << name << ": " << written.failed_plots[0];
+    for (const Plot& p : r->section.plots)
+      EXPECT_TRUE(std::filesystem::exists(dir / name / p.file)) << p.file;
+    EXPECT_TRUE(std::filesystem::exists(dir / name / "report.md"));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace vahf::report

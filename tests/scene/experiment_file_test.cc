@@ -1,0 +1,770 @@
+// Tests of the experiment files' kind-specific keys (LoadExperiment): the
+// shipped experiments/*.json load with their kinds, operators, conditions,
+// instants, fatigue design and listed experiments; the operators of
+// assembly_time.json are GB/T 10000-1988's (data/anthropometry/gb10000_1988.csv);
+// and every malformed variant throws vahf::InputError naming the file that
+// holds the fault, the exact JSON pointer, the value and the rule broken.
+#include "vahf/scene/experiment_file.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vahf/core/error.h"
+#include "vahf/scene/scene_loader.h"
+
+namespace vahf::scene {
+namespace {
+
+using ::nlohmann::json;
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+std::string SourcePath(const std::string& relative) {
+  return std::string(VAHF_SOURCE_DIR) + "/" + relative;
+}
+
+// The real scene, by absolute path.
+std::string CylinderScene() {
+  return SourcePath("experiments/scenes/hydraulic_cylinder.json");
+}
+
+std::string Lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+// A directory of its own under ::testing::TempDir() for the running test.
+std::filesystem::path TestDir() {
+  const ::testing::TestInfo* info =
+      ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) / "vahf_experiment_file_test" /
+      (std::string(info->test_suite_name()) + "." + info->name());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::string WriteFile(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.close();
+  EXPECT_TRUE(out) << "cannot write " << path;
+  return path.string();
+}
+
+std::string WriteJson(const std::filesystem::path& path, const json& doc) {
+  return WriteFile(path, doc.dump(1));
+}
+
+// ---------------------------------------------------------------------------
+// Valid experiments of each kind, on the real scene.
+
+json Experiment(const std::string& kind) {
+  return {{"format", "vahf-experiment/1"},
+          {"name", kind + "_test"},
+          {"kind", kind},
+          {"scene", CylinderScene()},
+          {"seed", 5},
+          {"trials", 2}};
+}
+
+json Operator(const std::string& name, const std::string& sex, double height,
+              double arm_length) {
+  return {{"name", name},
+          {"sex", sex},
+          {"height", height},
+          {"arm_length", arm_length},
+          {"source", "test"}};
+}
+
+json AssemblyTime() {
+  json e = Experiment("assembly_time");
+  e["operators"] = {Operator("short", "female", 1.50, 0.62),
+                    Operator("tall", "male", 1.80, 0.80)};
+  return e;
+}
+
+json HumanFactorsGroups() {
+  json e = Experiment("human_factors_groups");
+  e["conditions"] = {{{"name", "general"}, {"scene", CylinderScene()}},
+                     {{"name", "again"}, {"scene", CylinderScene()}}};
+  e["instants_s"] = {2, 4.5, 8};
+  e["paper_cycle_s"] = 8;
+  return e;
+}
+
+json Fatigue() {
+  json e = Experiment("fatigue");
+  e["fatigue"] = {{"duration_min", 30}, {"segments", 3}, {"pilot_cycles", 5}};
+  return e;
+}
+
+json Table1() {
+  json e = Experiment("table1");
+  e["paper_table"] = SourcePath("reference/paper/table1.json");
+  return e;
+}
+
+// A paper experiment listing the files `listed` (written by the caller).
+json Paper(const std::vector<std::string>& listed) {
+  return {{"format", "vahf-experiment/1"},
+          {"name", "paper_test"},
+          {"kind", "paper"},
+          {"seed", 9},
+          {"experiments", listed}};
+}
+
+// Writes `doc` to DIR/experiment.json and expects LoadExperiment to throw an
+// InputError naming that file at `where`, whose rule contains `rule` and,
+// unless `value` is empty, whose value contains `value` (ignoring case).
+void ExpectError(const json& doc, const std::string& where, const std::string& rule,
+                 const std::string& value = "") {
+  const std::string path = WriteJson(TestDir() / "experiment.json", doc);
+  try {
+    LoadExperiment(path);
+    ADD_FAILURE() << "no InputError; expected one at " << where << " (" << rule << ")";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path) << e.what();
+    EXPECT_EQ(e.where(), where) << e.what();
+    EXPECT_THAT(e.rule(), HasSubstr(rule)) << e.what();
+    if (!value.empty()) {
+      EXPECT_THAT(Lower(e.value()), HasSubstr(Lower(value))) << e.what();
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// The shipped experiments.
+
+TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
+  const std::map<std::string, std::string> kinds = {
+      {"table1.json", "table1"},
+      {"assembly_time.json", "assembly_time"},
+      {"human_factors_groups.json", "human_factors_groups"},
+      {"fatigue.json", "fatigue"},
+      {"paper.json", "paper"}};
+  std::set<std::string> found;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(SourcePath("experiments"))) {
+    if (entry.path().extension() != ".json") continue;
+    const std::string name = entry.path().filename().string();
+    found.insert(name);
+    const ExperimentFile e = LoadExperiment(entry.path().string());
+    ASSERT_TRUE(kinds.count(name)) << "an experiment this test does not know: " << name;
+    EXPECT_EQ(e.kind, kinds.at(name)) << name;
+    EXPECT_EQ(e.name, entry.path().stem().string()) << name;
+    EXPECT_EQ(e.file, entry.path().string());
+    EXPECT_FALSE(e.description.empty()) << name;
+    EXPECT_EQ(e.seed, 1u) << name;
+    if (e.kind == "paper") {
+      EXPECT_TRUE(e.scene_path.empty()) << name;
+    } else {
+      EXPECT_TRUE(std::filesystem::equivalent(e.scene_path, CylinderScene())) << name;
+      EXPECT_EQ(e.scene.name, "hydraulic_cylinder") << name;
+    }
+  }
+  EXPECT_EQ(found.size(), kinds.size());
+}
+
+TEST(ShippedExperimentsTest, Table1ReadsThePaperTable) {
+  const ExperimentFile e = LoadExperiment(SourcePath("experiments/table1.json"));
+  EXPECT_TRUE(std::filesystem::equivalent(e.paper_table_path,
+                                          SourcePath("reference/paper/table1.json")))
+      << e.paper_table_path;
+  EXPECT_TRUE(e.operators.empty());
+  EXPECT_TRUE(e.conditions.empty());
+  EXPECT_TRUE(e.instants_s.empty());
+  EXPECT_TRUE(e.experiments.empty());
+}
+
+TEST(ShippedExperimentsTest, AssemblyTimeHasSixOperators) {
+  const ExperimentFile e = LoadExperiment(SourcePath("experiments/assembly_time.json"));
+  ASSERT_EQ(e.operators.size(), 6u);
+  std::vector<std::string> names, sexes;
+  for (const OperatorEntry& o : e.operators) {
+    names.push_back(o.name);
+    sexes.push_back(o.sex);
+    EXPECT_THAT(o.source, HasSubstr("GB/T 10000-1988")) << o.name;
+  }
+  EXPECT_THAT(names, ElementsAre("male P5", "male P50", "male P95", "female P5",
+                                 "female P50", "female P95"));
+  EXPECT_THAT(sexes, ElementsAre("male", "male", "male", "female", "female", "female"));
+  EXPECT_TRUE(e.paper_table_path.empty());
+  EXPECT_TRUE(e.conditions.empty());
+}
+
+TEST(ShippedExperimentsTest, HumanFactorsGroupsHasThreeConditions) {
+  const ExperimentFile e =
+      LoadExperiment(SourcePath("experiments/human_factors_groups.json"));
+  ASSERT_EQ(e.conditions.size(), 3u);
+  EXPECT_EQ(e.conditions[0].name, "general");
+  EXPECT_EQ(e.conditions[1].name, "best");
+  EXPECT_EQ(e.conditions[2].name, "worst");
+  EXPECT_TRUE(std::filesystem::equivalent(e.conditions[0].scene_path, CylinderScene()));
+  EXPECT_TRUE(std::filesystem::equivalent(
+      e.conditions[1].scene_path,
+      SourcePath("experiments/scenes/hydraulic_cylinder_best.json")));
+  EXPECT_TRUE(std::filesystem::equivalent(
+      e.conditions[2].scene_path,
+      SourcePath("experiments/scenes/hydraulic_cylinder_worst.json")));
+  for (const ConditionEntry& c : e.conditions) {
+    EXPECT_EQ(c.scene.file, c.scene_path);
+    EXPECT_EQ(c.scene.sequence.size(), 3u) << c.name;
+  }
+  EXPECT_THAT(e.instants_s, ElementsAre(3, 6, 9, 12, 15));
+  EXPECT_DOUBLE_EQ(e.paper_cycle_s, 16.0);
+  EXPECT_TRUE(e.operators.empty());
+}
+
+TEST(ShippedExperimentsTest, FatigueIsOneHourInFourSegments) {
+  const ExperimentFile e = LoadExperiment(SourcePath("experiments/fatigue.json"));
+  EXPECT_DOUBLE_EQ(e.fatigue.duration_min, 60.0);
+  EXPECT_EQ(e.fatigue.segments, 4);
+  EXPECT_GT(e.fatigue.pilot_cycles, 0);  // a pilot measures the work rate
+}
+
+TEST(ShippedExperimentsTest, PaperListsTheFourExperiments) {
+  const ExperimentFile e = LoadExperiment(SourcePath("experiments/paper.json"));
+  EXPECT_TRUE(e.scene_path.empty());
+  std::vector<std::string> kinds;
+  for (const ExperimentFile& x : e.experiments) kinds.push_back(x.kind);
+  EXPECT_THAT(kinds,
+              ElementsAre("table1", "assembly_time", "human_factors_groups", "fatigue"));
+  ASSERT_EQ(e.experiments.size(), 4u);
+  // Each is loaded whole, from its own file (relative to paper.json's folder).
+  EXPECT_TRUE(std::filesystem::equivalent(e.experiments[1].file,
+                                          SourcePath("experiments/assembly_time.json")));
+  EXPECT_EQ(e.experiments[1].operators.size(), 6u);
+  EXPECT_EQ(e.experiments[2].conditions.size(), 3u);
+  EXPECT_EQ(e.experiments[3].fatigue.segments, 4);
+  EXPECT_FALSE(e.experiments[0].paper_table_path.empty());
+}
+
+// The operators of assembly_time.json are the 5th, 50th and 95th percentiles
+// of GB/T 10000-1988: height = stature, arm length = upper arm + forearm +
+// hand, in metres.
+TEST(ShippedExperimentsTest, AssemblyTimeOperatorsMatchGb10000) {
+  std::ifstream csv(SourcePath("data/anthropometry/gb10000_1988.csv"));
+  ASSERT_TRUE(csv) << "cannot read data/anthropometry/gb10000_1988.csv";
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  EXPECT_EQ(line, "sex,percentile,stature_mm,upper_arm_mm,forearm_mm,hand_mm");
+  struct Row {
+    std::string sex;
+    double height, arm_length;
+  };
+  std::map<std::string, Row> rows;  // by operator name, "male P5"
+  while (std::getline(csv, line)) {
+    if (line.empty()) continue;
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) f.push_back(cell);
+    ASSERT_EQ(f.size(), 6u) << line;
+    const double stature = std::stod(f[2]);
+    const double arm = std::stod(f[3]) + std::stod(f[4]) + std::stod(f[5]);
+    rows[f[0] + " P" + f[1]] = {f[0], stature / 1000.0, arm / 1000.0};
+  }
+  ASSERT_EQ(rows.size(), 6u);
+
+  const ExperimentFile e = LoadExperiment(SourcePath("experiments/assembly_time.json"));
+  ASSERT_EQ(e.operators.size(), rows.size());
+  for (const OperatorEntry& o : e.operators) {
+    ASSERT_TRUE(rows.count(o.name)) << o.name << " is not in the CSV";
+    const Row& r = rows.at(o.name);
+    EXPECT_EQ(o.sex, r.sex) << o.name;
+    EXPECT_NEAR(o.height, r.height, 1e-12) << o.name;
+    EXPECT_NEAR(o.arm_length, r.arm_length, 1e-12) << o.name;
+    // Stated in the source as "men 18-60, P5", "women 18-55, P50", ...
+    EXPECT_THAT(o.source, HasSubstr(o.name.substr(o.name.find(' ') + 1))) << o.name;
+    EXPECT_THAT(o.source, HasSubstr(o.sex == "male" ? "men" : "women")) << o.name;
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Valid variants.
+
+TEST(KindKeysTest, OperatorsLoad) {
+  const ExperimentFile e =
+      LoadExperiment(WriteJson(TestDir() / "e.json", AssemblyTime()));
+  ASSERT_EQ(e.operators.size(), 2u);
+  EXPECT_EQ(e.operators[0].name, "short");
+  EXPECT_EQ(e.operators[0].sex, "female");
+  EXPECT_DOUBLE_EQ(e.operators[0].height, 1.50);
+  EXPECT_DOUBLE_EQ(e.operators[0].arm_length, 0.62);
+  EXPECT_EQ(e.operators[0].source, "test");
+  EXPECT_EQ(e.operators[1].name, "tall");
+  EXPECT_EQ(e.operators[1].sex, "male");
+}
+
+TEST(KindKeysTest, OperatorsAreOptionalAndSourceToo) {
+  json doc = Experiment("assembly_time");
+  EXPECT_TRUE(LoadExperiment(WriteJson(TestDir() / "e.json", doc)).operators.empty());
+  doc = AssemblyTime();
+  doc["operators"][0].erase("source");
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
+  EXPECT_EQ(e.operators[0].source, "");
+}
+
+TEST(KindKeysTest, OperatorsAtTheBoundsLoad) {
+  json doc = AssemblyTime();
+  doc["operators"] = {Operator("low", "female", 1.0, 0.3),
+                      Operator("high", "male", 2.5, 1.1)};
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
+  EXPECT_EQ(e.operators.size(), 2u);
+}
+
+TEST(KindKeysTest, ConditionsInstantsAndCycleLoad) {
+  const ExperimentFile e =
+      LoadExperiment(WriteJson(TestDir() / "e.json", HumanFactorsGroups()));
+  ASSERT_EQ(e.conditions.size(), 2u);
+  EXPECT_EQ(e.conditions[0].name, "general");
+  EXPECT_EQ(e.conditions[1].name, "again");
+  EXPECT_EQ(e.conditions[1].scene_path, CylinderScene());
+  EXPECT_EQ(e.conditions[1].scene.name, "hydraulic_cylinder");
+  EXPECT_THAT(e.instants_s, ElementsAre(2, 4.5, 8));  // the last one at the cycle's end
+  EXPECT_DOUBLE_EQ(e.paper_cycle_s, 8.0);
+}
+
+TEST(KindKeysTest, PaperCycleDefaultsTo16Seconds) {
+  json doc = HumanFactorsGroups();
+  doc.erase("paper_cycle_s");
+  doc["instants_s"] = {16};
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
+  EXPECT_DOUBLE_EQ(e.paper_cycle_s, 16.0);
+}
+
+TEST(KindKeysTest, ConditionScenesAreRelativeToTheExperimentFile) {
+  const std::filesystem::path dir = TestDir();
+  std::filesystem::create_directories(dir / "scenes");
+  std::filesystem::copy_file(CylinderScene(), dir / "scenes" / "copy.json");
+  json doc = HumanFactorsGroups();
+  doc["conditions"][1]["scene"] = "scenes/copy.json";
+  const ExperimentFile e = LoadExperiment(WriteJson(dir / "e.json", doc));
+  EXPECT_TRUE(std::filesystem::equivalent(e.conditions[1].scene_path,
+                                          dir / "scenes" / "copy.json"));
+}
+
+TEST(KindKeysTest, FatigueDesignAndItsDefaults) {
+  ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Fatigue()));
+  EXPECT_DOUBLE_EQ(e.fatigue.duration_min, 30.0);
+  EXPECT_EQ(e.fatigue.segments, 3);
+  EXPECT_EQ(e.fatigue.pilot_cycles, 5);
+  json doc = Fatigue();
+  doc["fatigue"] = json::object();
+  e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
+  EXPECT_DOUBLE_EQ(e.fatigue.duration_min, 60.0);
+  EXPECT_EQ(e.fatigue.segments, 4);
+  EXPECT_EQ(e.fatigue.pilot_cycles, 0);
+  doc.erase("fatigue");
+  e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
+  EXPECT_DOUBLE_EQ(e.fatigue.duration_min, 60.0);
+}
+
+TEST(KindKeysTest, PaperTableResolves) {
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Table1()));
+  EXPECT_EQ(e.paper_table_path, SourcePath("reference/paper/table1.json"));
+}
+
+TEST(KindKeysTest, PaperLoadsItsListedExperiments) {
+  const std::filesystem::path dir = TestDir();
+  WriteJson(dir / "t.json", Table1());
+  std::filesystem::create_directories(dir / "more");
+  WriteJson(dir / "more" / "f.json", Fatigue());
+  const ExperimentFile e =
+      LoadExperiment(WriteJson(dir / "paper.json", Paper({"t.json", "more/f.json"})));
+  EXPECT_EQ(e.kind, "paper");
+  EXPECT_EQ(e.seed, 9u);
+  EXPECT_TRUE(e.scene_path.empty());
+  ASSERT_EQ(e.experiments.size(), 2u);
+  EXPECT_EQ(e.experiments[0].kind, "table1");
+  EXPECT_EQ(e.experiments[1].kind, "fatigue");
+  EXPECT_TRUE(
+      std::filesystem::equivalent(e.experiments[1].file, dir / "more" / "f.json"));
+  EXPECT_EQ(e.experiments[1].fatigue.segments, 3);
+}
+
+// ---------------------------------------------------------------------------
+// Operators (assembly_time).
+
+TEST(OperatorErrorsTest, HeightAsString) {
+  json doc = AssemblyTime();
+  doc["operators"][1]["height"] = "NaN";
+  ExpectError(doc, "/operators/1/height", "must be a number, not a string", "\"NaN\"");
+}
+
+TEST(OperatorErrorsTest, HeightAboveRange) {
+  json doc = AssemblyTime();
+  doc["operators"][0]["height"] = 3.0;
+  ExpectError(doc, "/operators/0/height", "must lie in [1, 2.5]", "3");
+}
+
+TEST(OperatorErrorsTest, HeightBelowRange) {
+  json doc = AssemblyTime();
+  doc["operators"][0]["height"] = 0.99;
+  ExpectError(doc, "/operators/0/height", "must lie in [1, 2.5]", "0.99");
+}
+
+TEST(OperatorErrorsTest, ArmLengthOutOfRange) {
+  json doc = AssemblyTime();
+  doc["operators"][1]["arm_length"] = 0.25;
+  ExpectError(doc, "/operators/1/arm_length", "must lie in [0.3, 1.2]", "0.25");
+  doc["operators"][1]["arm_length"] = 1.25;
+  ExpectError(doc, "/operators/1/arm_length", "must lie in [0.3, 1.2]", "1.25");
+}
+
+TEST(OperatorErrorsTest, UnknownSex) {
+  json doc = AssemblyTime();
+  doc["operators"][0]["sex"] = "m";
+  ExpectError(doc, "/operators/0/sex", "must be one of: male, female", "\"m\"");
+}
+
+TEST(OperatorErrorsTest, MissingFields) {
+  for (const char* key : {"name", "sex", "height", "arm_length"}) {
+    SCOPED_TRACE(key);
+    json doc = AssemblyTime();
+    doc["operators"][1].erase(key);
+    ExpectError(doc, std::string("/operators/1/") + key,
+                std::string("required field '") + key + "' is missing", "(missing)");
+  }
+}
+
+TEST(OperatorErrorsTest, UnknownKey) {
+  json doc = AssemblyTime();
+  doc["operators"][0]["stature"] = 1.7;
+  ExpectError(doc, "/operators/0/stature", "unknown key 'stature'", "1.7");
+}
+
+TEST(OperatorErrorsTest, DuplicateName) {
+  json doc = AssemblyTime();
+  doc["operators"].push_back(Operator("short", "male", 1.7, 0.7));
+  ExpectError(doc, "/operators/2/name", "operator names must be unique", "\"short\"");
+}
+
+TEST(OperatorErrorsTest, EmptyList) {
+  json doc = AssemblyTime();
+  doc["operators"] = json::array();
+  ExpectError(doc, "/operators", "at least 1 element");
+}
+
+TEST(OperatorErrorsTest, NotAnArrayOrNotObjects) {
+  json doc = AssemblyTime();
+  doc["operators"] = Operator("one", "male", 1.7, 0.7);
+  ExpectError(doc, "/operators", "must be an array, not a object");
+  doc = AssemblyTime();
+  doc["operators"][1] = "tall";
+  ExpectError(doc, "/operators/1", "must be an object, not a string", "\"tall\"");
+}
+
+TEST(OperatorErrorsTest, ReachCurveInvalidForTheOperator) {
+  // Each dimension is in range, but D1 = 0.85 * 0.6 = 0.51 m lies beyond
+  // D2 = 0.39 * 1.0 = 0.39 m.
+  json doc = AssemblyTime();
+  doc["operators"][1] = Operator("stubby", "male", 1.0, 0.6);
+  ExpectError(doc, "/operators/1", "reach breakpoints must increase for this operator",
+              "\"stubby\"");
+}
+
+TEST(OperatorErrorsTest, ReachCurveIsTheScenes) {
+  // The operator's reach curve is the scene's: with D2 = 0.5 * height this
+  // operator fits (D1 = 0.85 * 0.55 = 0.4675 m < D2 = 0.5 m).
+  const std::filesystem::path dir = TestDir();
+  std::ifstream in(CylinderScene());
+  json scene = json::parse(in);
+  scene["parameters"]["reach"]["d2_height_fraction"] = 0.5;
+  WriteJson(dir / "wide_reach.json", scene);
+  json doc = AssemblyTime();
+  doc["scene"] = "wide_reach.json";
+  doc["operators"][1] = Operator("stubby", "male", 1.0, 0.55);
+  const ExperimentFile e = LoadExperiment(WriteJson(dir / "e.json", doc));
+  EXPECT_EQ(e.operators[1].name, "stubby");
+  // With the shipped scene's reach (D2 = 0.39 m) the same operator fails.
+  doc["scene"] = CylinderScene();
+  ExpectError(doc, "/operators/1", "reach breakpoints must increase", "\"stubby\"");
+}
+
+// ---------------------------------------------------------------------------
+// Conditions, instants and cycle (human_factors_groups).
+
+TEST(ConditionErrorsTest, ConditionsRequired) {
+  json doc = HumanFactorsGroups();
+  doc.erase("conditions");
+  ExpectError(doc, "/conditions", "required field 'conditions' is missing", "(missing)");
+}
+
+TEST(ConditionErrorsTest, ConditionsEmpty) {
+  json doc = HumanFactorsGroups();
+  doc["conditions"] = json::array();
+  ExpectError(doc, "/conditions", "at least 1 element");
+}
+
+TEST(ConditionErrorsTest, ConditionSceneMissing) {
+  json doc = HumanFactorsGroups();
+  doc["conditions"][1]["scene"] = "no_such_scene.json";
+  ExpectError(doc, "/conditions/1/scene", "no scene file at", "no_such_scene.json");
+}
+
+TEST(ConditionErrorsTest, ConditionWithoutScene) {
+  json doc = HumanFactorsGroups();
+  doc["conditions"][0].erase("scene");
+  ExpectError(doc, "/conditions/0/scene", "required field 'scene' is missing");
+}
+
+TEST(ConditionErrorsTest, ConditionUnknownKey) {
+  json doc = HumanFactorsGroups();
+  doc["conditions"][0]["sceen"] = CylinderScene();
+  ExpectError(doc, "/conditions/0/sceen", "did you mean 'scene'?");
+}
+
+TEST(ConditionErrorsTest, ErrorInAConditionSceneNamesThatScene) {
+  const std::filesystem::path dir = TestDir();
+  std::ifstream in(CylinderScene());
+  json scene = json::parse(in);
+  scene["operator"]["height"] = 3.0;
+  const std::string bad_scene = WriteJson(dir / "bad_scene.json", scene);
+  json doc = HumanFactorsGroups();
+  doc["conditions"][1]["scene"] = "bad_scene.json";
+  const std::string path = WriteJson(dir / "e.json", doc);
+  try {
+    LoadExperiment(path);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(std::filesystem::equivalent(e.file(), bad_scene)) << e.what();
+    EXPECT_EQ(e.where(), "/operator/height") << e.what();
+    EXPECT_EQ(e.value(), "3.0") << e.what();
+  }
+}
+
+TEST(ConditionErrorsTest, InstantsRequired) {
+  json doc = HumanFactorsGroups();
+  doc.erase("instants_s");
+  ExpectError(doc, "/instants_s", "required field 'instants_s' is missing", "(missing)");
+}
+
+TEST(ConditionErrorsTest, InstantsEmpty) {
+  json doc = HumanFactorsGroups();
+  doc["instants_s"] = json::array();
+  ExpectError(doc, "/instants_s", "at least 1 element");
+}
+
+TEST(ConditionErrorsTest, InstantZeroOrNegative) {
+  json doc = HumanFactorsGroups();
+  doc["instants_s"][0] = 0;
+  ExpectError(doc, "/instants_s/0", "must be > 0", "0");
+  doc["instants_s"][0] = -3;
+  ExpectError(doc, "/instants_s/0", "must be > 0", "-3");
+}
+
+TEST(ConditionErrorsTest, InstantAsString) {
+  json doc = HumanFactorsGroups();
+  doc["instants_s"][1] = "6 s";
+  ExpectError(doc, "/instants_s/1", "must be a number, not a string", "\"6 s\"");
+}
+
+TEST(ConditionErrorsTest, InstantBeyondThePaperCycle) {
+  json doc = HumanFactorsGroups();
+  doc["instants_s"][2] = 8.5;  // paper_cycle_s is 8
+  ExpectError(doc, "/instants_s/2", "an instant lies within the paper's cycle", "8.5");
+  doc.erase("paper_cycle_s");  // the default, 16 s
+  doc["instants_s"][2] = 16.5;
+  ExpectError(doc, "/instants_s/2", "paper_cycle_s = 16", "16.5");
+}
+
+TEST(ConditionErrorsTest, PaperCycleNotPositive) {
+  json doc = HumanFactorsGroups();
+  doc["paper_cycle_s"] = 0;
+  ExpectError(doc, "/paper_cycle_s", "must be > 0", "0");
+  doc["paper_cycle_s"] = "16";
+  ExpectError(doc, "/paper_cycle_s", "must be a number, not a string", "\"16\"");
+}
+
+// ---------------------------------------------------------------------------
+// The fatigue design (fatigue).
+
+TEST(FatigueErrorsTest, DurationNotPositive) {
+  json doc = Fatigue();
+  doc["fatigue"]["duration_min"] = 0;
+  ExpectError(doc, "/fatigue/duration_min", "must be > 0", "0");
+}
+
+TEST(FatigueErrorsTest, SegmentsOutOfRange) {
+  json doc = Fatigue();
+  doc["fatigue"]["segments"] = 0;
+  ExpectError(doc, "/fatigue/segments", "must lie in [1, 1000]", "0");
+  doc["fatigue"]["segments"] = 2.5;
+  ExpectError(doc, "/fatigue/segments", "must be an integer", "2.5");
+}
+
+TEST(FatigueErrorsTest, PilotCyclesNegative) {
+  json doc = Fatigue();
+  doc["fatigue"]["pilot_cycles"] = -1;
+  ExpectError(doc, "/fatigue/pilot_cycles", "must lie in [0, 10000000]", "-1");
+}
+
+TEST(FatigueErrorsTest, UnknownKeyAndNotAnObject) {
+  json doc = Fatigue();
+  doc["fatigue"]["segment"] = 4;
+  ExpectError(doc, "/fatigue/segment", "did you mean 'segments'?", "4");
+  doc["fatigue"] = 60;
+  ExpectError(doc, "/fatigue", "must be an object, not a number", "60");
+}
+
+// ---------------------------------------------------------------------------
+// Paper tables (table1).
+
+TEST(PaperTableErrorsTest, MissingPaperTable) {
+  json doc = Table1();
+  doc["paper_table"] = "no_such_table.json";
+  ExpectError(doc, "/paper_table", "no paper table file at", "no_such_table.json");
+}
+
+// ---------------------------------------------------------------------------
+// Paper experiments (paper).
+
+TEST(PaperErrorsTest, PaperHasNoScene) {
+  json doc = Paper({SourcePath("experiments/table1.json")});
+  doc["scene"] = CylinderScene();
+  ExpectError(doc, "/scene",
+              "a paper experiment takes its scenes from the experiments it lists",
+              "hydraulic_cylinder.json");
+}
+
+TEST(PaperErrorsTest, ExperimentsRequiredAndNotEmpty) {
+  json doc = Paper({});
+  ExpectError(doc, "/experiments", "at least 1 element");
+  doc.erase("experiments");
+  ExpectError(doc, "/experiments", "required field 'experiments' is missing",
+              "(missing)");
+}
+
+TEST(PaperErrorsTest, ListedFileMissing) {
+  json doc = Paper({SourcePath("experiments/table1.json"), "no_such_experiment.json"});
+  ExpectError(doc, "/experiments/1", "no experiment file at", "no_such_experiment.json");
+}
+
+TEST(PaperErrorsTest, ListsAnotherPaperExperiment) {
+  const std::filesystem::path dir = TestDir();
+  WriteJson(dir / "inner.json", Paper({SourcePath("experiments/table1.json")}));
+  const std::string path = WriteJson(
+      dir / "outer.json", Paper({SourcePath("experiments/fatigue.json"), "inner.json"}));
+  try {
+    LoadExperiment(path);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path) << e.what();
+    EXPECT_EQ(e.where(), "/experiments/1") << e.what();
+    EXPECT_EQ(e.value(), "\"inner.json\"") << e.what();
+    EXPECT_THAT(e.rule(), HasSubstr("a paper experiment cannot list another"))
+        << e.what();
+  }
+}
+
+// A paper experiment that lists itself is refused before it is parsed (it
+// used to recurse until the stack overflowed).
+TEST(PaperErrorsTest, ListsItself) {
+  const std::filesystem::path dir = TestDir();
+  const std::string path = WriteJson(dir / "self.json", Paper({"self.json"}));
+  try {
+    LoadExperiment(path);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/experiments/0") << e.what();
+    EXPECT_THAT(e.rule(), HasSubstr("a paper experiment cannot list another"))
+        << e.what();
+  }
+}
+
+TEST(PaperErrorsTest, ErrorInAListedExperimentNamesThatFile) {
+  const std::filesystem::path dir = TestDir();
+  json listed = AssemblyTime();
+  listed["operators"][0]["height"] = 3.0;
+  const std::string listed_path = WriteJson(dir / "at.json", listed);
+  const std::string path = WriteJson(dir / "paper.json", Paper({"at.json"}));
+  try {
+    LoadExperiment(path);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(std::filesystem::equivalent(e.file(), listed_path)) << e.what();
+    EXPECT_EQ(e.where(), "/operators/0/height") << e.what();
+    EXPECT_EQ(e.value(), "3.0") << e.what();
+    EXPECT_THAT(e.rule(), HasSubstr("must lie in [1, 2.5]")) << e.what();
+  }
+}
+
+// ---------------------------------------------------------------------------
+// A key that only another kind reads is an error naming the key and the kind.
+
+struct WrongKindCase {
+  const char* key;
+  json value;
+  const char* reader;  // the kind that reads it
+};
+
+TEST(WrongKindTest, EachKeyWithEachOtherKind) {
+  const std::vector<WrongKindCase> cases = {
+      {"operators", json::array({Operator("x", "male", 1.7, 0.7)}), "assembly_time"},
+      {"conditions", json::array({{{"name", "g"}, {"scene", CylinderScene()}}}),
+       "human_factors_groups"},
+      {"instants_s", json::array({3, 6}), "human_factors_groups"},
+      {"paper_cycle_s", 16, "human_factors_groups"},
+      {"fatigue", {{"segments", 4}}, "fatigue"},
+      {"paper_table", SourcePath("reference/paper/table1.json"), "table1"},
+      {"experiments", json::array({SourcePath("experiments/table1.json")}), "paper"},
+  };
+  const std::vector<std::string> kinds = {"table1", "assembly_time",
+                                          "human_factors_groups", "fatigue", "paper"};
+  for (const WrongKindCase& c : cases) {
+    for (const std::string& kind : kinds) {
+      if (kind == c.reader) continue;
+      SCOPED_TRACE(std::string(c.key) + " in a " + kind + " experiment");
+      json doc;
+      if (kind == "paper") {
+        doc = Paper({SourcePath("experiments/table1.json")});
+      } else if (kind == "human_factors_groups") {
+        doc = HumanFactorsGroups();
+      } else {
+        doc = Experiment(kind);
+      }
+      doc[c.key] = c.value;
+      ExpectError(doc, std::string("/") + c.key,
+                  std::string("only an experiment of kind \"") + c.reader +
+                      "\" reads \"" + c.key + "\"");
+    }
+  }
+}
+
+TEST(WrongKindTest, WhatReadsFileWhereValueRule) {
+  json doc = Table1();
+  doc["fatigue"] = {{"segments", 4}};
+  const std::string path = WriteJson(TestDir() / "experiment.json", doc);
+  try {
+    LoadExperiment(path);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              path +
+                  ": /fatigue = {\"segments\":4}: only an experiment of kind \"fatigue\" "
+                  "reads \"fatigue\"");
+  }
+}
+
+TEST(WrongKindTest, AKeyNoKindReadsIsUnknown) {
+  json doc = AssemblyTime();
+  doc["operator"] = doc["operators"];
+  ExpectError(doc, "/operator", "did you mean 'operators'?");
+}
+
+}  // namespace
+}  // namespace vahf::scene
