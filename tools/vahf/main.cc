@@ -31,10 +31,19 @@ int Check(const std::string& path) {
         stdout);
   } else {
     const vahf::scene::ExperimentFile e = vahf::scene::ParseExperiment(document, path);
-    std::printf("experiment '%s' (%s): kind %s, seed %llu, %d trials\n", e.name.c_str(),
+    std::printf("experiment '%s' (%s): kind %s, seed %llu%s\n", e.name.c_str(),
                 e.file.c_str(), e.kind.c_str(), static_cast<unsigned long long>(e.seed),
-                e.trials);
-    std::fputs(vahf::scene::DescribeScene(e.scene).c_str(), stdout);
+                e.kind == "paper"
+                    ? ""
+                    : (", " + std::to_string(e.trials) + " cycles per condition").c_str());
+    if (e.kind == "paper") {
+      for (const vahf::scene::ExperimentFile& x : e.experiments)
+        std::printf("  %s (%s): kind %s, %d cycles per condition, scene %s\n",
+                    x.name.c_str(), x.file.c_str(), x.kind.c_str(), x.trials,
+                    x.scene_path.c_str());
+    } else {
+      std::fputs(vahf::scene::DescribeScene(e.scene).c_str(), stdout);
+    }
   }
   std::printf("%s: valid %s\n", path.c_str(), format.c_str());
   return 0;
