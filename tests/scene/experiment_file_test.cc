@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "test_files.h"
 #include "vahf/core/error.h"
 #include "vahf/scene/scene_loader.h"
 
@@ -27,6 +28,8 @@ namespace vahf::scene {
 namespace {
 
 using ::nlohmann::json;
+using testing::Lower;
+using testing::WriteFile;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
@@ -39,31 +42,7 @@ std::string CylinderScene() {
   return SourcePath("experiments/scenes/hydraulic_cylinder.json");
 }
 
-std::string Lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
-// A directory of its own under ::testing::TempDir() for the running test.
-std::filesystem::path TestDir() {
-  const ::testing::TestInfo* info =
-      ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir =
-      std::filesystem::path(::testing::TempDir()) / "vahf_experiment_file_test" /
-      (std::string(info->test_suite_name()) + "." + info->name());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-std::string WriteFile(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  EXPECT_TRUE(out) << "cannot write " << path;
-  return path.string();
-}
+std::filesystem::path TestDir() { return testing::TestDir("vahf_experiment_file_test"); }
 
 std::string WriteJson(const std::filesystem::path& path, const json& doc) {
   return WriteFile(path, doc.dump(1));

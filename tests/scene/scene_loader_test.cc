@@ -19,6 +19,7 @@
 #include <string>
 #include <utility>
 
+#include "test_files.h"
 #include "vahf/core/error.h"
 #include "vahf/human/factor_curves.h"
 #include "vahf/scene/experiment_file.h"
@@ -28,6 +29,8 @@ namespace vahf::scene {
 namespace {
 
 using ::nlohmann::json;
+using testing::Lower;
+using testing::WriteFile;
 using ::testing::HasSubstr;
 
 constexpr char kFile[] = "test_scene.json";
@@ -123,12 +126,6 @@ json ValidScene() {
   };
 }
 
-std::string Lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
 // Parses `doc` and expects an InputError at `where` whose rule contains `rule`
 // and, unless `value` is empty, whose value contains `value` (ignoring case).
 void ExpectError(const json& doc, const std::string& where, const std::string& rule,
@@ -146,25 +143,7 @@ void ExpectError(const json& doc, const std::string& where, const std::string& r
   }
 }
 
-// A directory of its own under ::testing::TempDir() for the running test.
-std::filesystem::path TestDir() {
-  const ::testing::TestInfo* info =
-      ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir =
-      std::filesystem::path(::testing::TempDir()) / "vahf_scene_loader_test" /
-      (std::string(info->test_suite_name()) + "." + info->name());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-std::string WriteFile(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  EXPECT_TRUE(out) << "cannot write " << path;
-  return path.string();
-}
+std::filesystem::path TestDir() { return testing::TestDir("vahf_scene_loader_test"); }
 
 // ---------------------------------------------------------------------------
 // The valid scene.

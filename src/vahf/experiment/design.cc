@@ -54,11 +54,10 @@ ExperimentRun RunExperiment(const scene::ExperimentFile& file, const RunSettings
   const std::string& kind = file.kind;
   const RunnerOptions options = Options(settings, file.name + " (" + kind + ")");
   if (kind == "paper") {
-    for (const scene::ExperimentFile& sub : file.experiments) {
-      RunSettings s = settings;
-      s.trials = settings.trials > 0 ? settings.trials : sub.trials;
-      out.parts.push_back(RunExperiment(sub, s));
-    }
+    out.trials = settings.trials;  // 0: each experiment its own
+    // Each part takes its own file's trials unless the settings override them.
+    for (const scene::ExperimentFile& sub : file.experiments)
+      out.parts.push_back(RunExperiment(sub, settings));
     return out;
   }
   std::vector<Condition> conditions;

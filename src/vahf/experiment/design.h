@@ -62,7 +62,7 @@ struct RunSettings {
 struct ExperimentRun {
   const scene::ExperimentFile* file = nullptr;
   std::uint64_t seed = 1;
-  int trials = 1;
+  int trials = 1;  // cycles per condition; paper: the override, 0 if none (see parts)
   DesignRun run;
   // fatigue: the pilot cycles from A = 0, and the work rate they measured,
   // J per second of assembly (total work over total cycle time).

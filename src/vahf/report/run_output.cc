@@ -23,8 +23,9 @@ std::vector<const experiment::ExperimentRun*> Leaves(const experiment::Experimen
   return out;
 }
 
-// Every scene file a run read, each once, in the order first met.
-void AddScenes(const scene::ExperimentFile& f, std::vector<std::string>* paths) {
+// The scene files and paper table an experiment read, each once, in the
+// order first met.
+void AddInputs(const scene::ExperimentFile& f, std::vector<std::string>* paths) {
   const auto add = [&](const std::string& p) {
     if (!p.empty() && std::find(paths->begin(), paths->end(), p) == paths->end())
       paths->push_back(p);
@@ -32,6 +33,15 @@ void AddScenes(const scene::ExperimentFile& f, std::vector<std::string>* paths) 
   add(f.scene_path);
   for (const auto& c : f.conditions) add(c.scene_path);
   if (!f.paper_table_path.empty()) add(f.paper_table_path);
+}
+
+// "10", or for a paper run each experiment's: "table1 8, fatigue 12".
+std::string CyclesPerCondition(const experiment::ExperimentRun& run) {
+  if (run.parts.empty()) return std::to_string(run.trials);
+  std::string out;
+  for (const auto& p : run.parts)
+    out += fmt::format("{}{} {}", out.empty() ? "" : ", ", p.file->name, p.trials);
+  return out;
 }
 
 std::string ClaimsMarkdown(const std::vector<Section>& sections) {
@@ -89,7 +99,7 @@ RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& 
   std::vector<std::string> inputs;
   for (const experiment::ExperimentRun* leaf : Leaves(run)) {
     if (leaf != &run) inputs.push_back(leaf->file->file);
-    AddScenes(*leaf->file, &inputs);
+    AddInputs(*leaf->file, &inputs);
   }
   for (const std::string& p : inputs) {
     const InputFile f = DescribeInputFile(p);
@@ -106,11 +116,12 @@ RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& 
   // Report: what ran, the claims, then each section with its plots.
   std::string md = fmt::format(
       "# vahf report: {}\n\n{}\n\n"
-      "- experiment file: `{}` (kind {}), seed {}, {} cycles per condition\n"
+      "- experiment file: `{}` (kind {}), seed {}, cycles per condition: {}\n"
       "- threads: {}, wall time: {:.1f} s (not part of any result file)\n"
       "- results digest (SHA-256 over the CSV tables and summary.json): `{}`\n"
       "- program: {} ({}), {} {}\n\n",
-      file.name, file.description, file.file, file.kind, run.seed, run.trials, info.threads,
+      file.name, file.description, file.file, file.kind, run.seed, CyclesPerCondition(run),
+      info.threads,
       info.wall_seconds, digest, m.build.version, m.build.git_describe, m.build.compiler_id,
       m.build.compiler_version);
   md += ClaimsMarkdown(sections);

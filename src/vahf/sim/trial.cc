@@ -163,6 +163,27 @@ struct TrialContext {
     return human::EvaluateFactors(curves, posture, centre, motion, V);
   }
 
+  // f's direction of motion as the paper measures it (Sec. 5.1): from the
+  // part's centre at the previous decision to `centre`, P_i - P_{i-1}; with no
+  // previous decision or no travel, the way from T to the target.
+  Vector3d MotionDirection(const Vector3d& centre, const Vector3d& T, bool first) const {
+    Vector3d motion = first ? Vector3d::Zero() : Vector3d(centre - last_centre);
+    if (motion.norm() < kStillDistance) motion = part->target.position - T;
+    if (motion.norm() < 1e-12) motion = -Vector3d::UnitZ();
+    return motion;
+  }
+
+  // A trace row with the part's time, pose and velocities filled in.
+  static TraceRow PoseRow(double time, const contact::RigidMotion& m) {
+    TraceRow row;
+    row.time = time;
+    row.position = m.pose.translation();
+    row.orientation = Eigen::Quaterniond(m.pose.linear());
+    row.velocity = m.velocity;
+    row.angular_velocity = m.angular_velocity;
+    return row;
+  }
+
   // Distance and angle to the target, for completion and progress.
   double DistanceToTarget(const contact::RigidMotion& m) const {
     return (m.pose.translation() - part->target.position).norm();
@@ -242,14 +263,8 @@ void Decide(TrialContext& c, SimTK::State& s) {
 
   // Human factors at the part's centre of mass.
   const Vector3d centre = m.pose * c.part_com;
-  // The direction of motion as the paper measures it (Sec. 5.1, f): from the
-  // part's position at the previous instant to this one, P_i - P_{i-1}; at the
-  // first decision, or with no travel, the way to the target.
-  Vector3d motion = i > 0 ? Vector3d(centre - c.last_centre) : Vector3d::Zero();
-  if (motion.norm() < kStillDistance) motion = c.part->target.position - T;
-  if (motion.norm() < 1e-12) motion = -Vector3d::UnitZ();
+  const human::FactorValues f = c.FactorsAt(m, centre, c.MotionDirection(centre, T, i == 0));
   c.last_centre = centre;
-  const human::FactorValues f = c.FactorsAt(m, centre, motion);
 
   // Contact now, held for Eq. 8 until the next decision.
   Decision d;
@@ -305,12 +320,7 @@ void Decide(TrialContext& c, SimTK::State& s) {
   c.OperatorLoad(m, d, &force, &torque);
   c.last_force = force.norm();
   if (c.record_trace) {
-    TraceRow row;
-    row.time = s.getTime();
-    row.position = T;
-    row.orientation = Eigen::Quaterniond(m.pose.linear());
-    row.velocity = m.velocity;
-    row.angular_velocity = m.angular_velocity;
+    TraceRow row = TrialContext::PoseRow(s.getTime(), m);
     row.assembly_force = force;
     row.contact_force = cf.normal_force;
     row.friction_force = cf.friction_force;
@@ -329,16 +339,8 @@ TraceRow FinalRow(TrialContext& c, SimTK::State& s) {
   const contact::RigidMotion m = c.MotionOf(s);
   const Vector3d T = m.pose.translation();
   const Vector3d centre = m.pose * c.part_com;
-  Vector3d motion = centre - c.last_centre;
-  if (motion.norm() < kStillDistance) motion = c.part->target.position - T;
-  if (motion.norm() < 1e-12) motion = -Vector3d::UnitZ();
-  TraceRow row;
-  row.time = s.getTime();
-  row.position = T;
-  row.orientation = Eigen::Quaterniond(m.pose.linear());
-  row.velocity = m.velocity;
-  row.angular_velocity = m.angular_velocity;
-  row.factors = c.FactorsAt(m, centre, motion);
+  TraceRow row = TrialContext::PoseRow(s.getTime(), m);
+  row.factors = c.FactorsAt(m, centre, c.MotionDirection(centre, T, false));
   row.work = c.work + human::WorkEq4(c.last_force, human::TravelOf(T - c.last_position),
                                      c.scene->params.fatigue.k);
   row.psi = human::FatigueCoefficient(row.work, c.scene->params.fatigue.a_max);
