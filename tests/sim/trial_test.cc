@@ -78,6 +78,70 @@ TEST(Trial, FreeFallIsExact) {
   }
 }
 
+// guidance/hand_mass is the operator's hand moving with the part: with no
+// operator there is no hand, and a block resting on a table weighs on it with
+// its own weight alone.
+TEST(Trial, HandMassIsLeftOutWithoutAnOperator) {
+  json table = Box("table", "base", {0.4, 0.4, 0.05}, {0.0, 0.0, 0.875});
+  json block = Box("block", "assembling", {0.04, 0.04, 0.04}, {0.0, 0.0, 0.92});
+  block["target"] = {{"position", {0.0, 0.0, 1.5}}};
+  const scene::Scene s = Parse(
+      Scene({table, block}, {"block"},
+            {{"guidance", {{"mode", "none"}, {"hand_mass", 1.5}}},
+             {"visibility", {{"mode", "off"}}},
+             {"contact", {{"stiffness", 1e8}, {"shell_spacing", 0.005}, {"dissipation", 50}}},
+             {"simulation",
+              {{"time_limit", 0.6}, {"decision_interval", 0.1}, {"accuracy", 1e-7}}}}));
+  const TrialResult r = RunTrial(s, {1, 0});
+  ASSERT_FALSE(r.trace.empty());
+  const double weight = 2700 * 0.04 * 0.04 * 0.04 * kG;
+  EXPECT_NEAR(r.trace.back().contact_force.z(), weight, 1e-3 * weight);
+}
+
+// With an operator, the hand's weight is carried by the arm: a block held at
+// its target (no vision error, so T' = T_t by Eq. 5) does not sag, though an
+// uncarried 1.5 kg hand would pull it down by m g / kappa = 3.7 cm. And the
+// heavier body reaches more slowly: the impedance's time scale is sqrt(m / kappa).
+TEST(Trial, HandWeightIsCarriedAndHandMassSlowsTheReach) {
+  const auto run = [](double hand_mass, double start_z) {
+    json block = Box("block", "assembling", {0.04, 0.04, 0.04}, {0.0, 0.3, start_z});
+    block["target"] = {{"position", {0.0, 0.3, 1.0}}};
+    const scene::Scene s = Parse(Scene(
+        {block}, {"block"},
+        {{"guidance",
+          {{"hand_mass", hand_mass}, {"vision_sigma_depth", 0.0},
+           {"vision_sigma_lateral", 0.0}, {"torque_sigma_deg", 0.0}}},
+         {"visibility", {{"mode", "off"}}},
+         {"simulation", {{"time_limit", 1.0}, {"completion_distance", 1e-4}}}}));
+    return RunTrial(s, {1, 0});
+  };
+  const TrialResult held = run(1.5, 1.0 + 2e-4);  // 0.2 mm above: not yet complete
+  ASSERT_FALSE(held.trace.empty());
+  double lowest = 1e9;
+  for (const TraceRow& row : held.trace) lowest = std::min(lowest, row.position.z());
+  EXPECT_GT(lowest, 1.0 - 1e-3) << StatusName(held.status) << " " << held.detail;
+  const TrialResult light = run(0.0, 1.1), heavy = run(1.5, 1.1);
+  ASSERT_EQ(light.status, Status::kCompleted) << light.detail;
+  ASSERT_EQ(heavy.status, Status::kCompleted) << heavy.detail;
+  EXPECT_GT(heavy.completion_time, 1.2 * light.completion_time)
+      << light.completion_time << " " << heavy.completion_time;
+}
+
+// The final row is the completion instant, with A including the travel
+// since the last decision (Eq. 4 never decreases).
+TEST(Trial, FinalRowIsTheCompletionInstant) {
+  const scene::Scene s = LoadExample("free_move.json");
+  const TrialResult r = RunTrial(s, {1, 0});
+  ASSERT_EQ(r.status, Status::kCompleted) << r.detail;
+  ASSERT_FALSE(r.trace.empty());
+  EXPECT_EQ(r.final_row.time, r.completion_time);
+  EXPECT_GT(r.final_row.time, r.trace.back().time);
+  EXPECT_GE(r.final_row.work, r.trace.back().work);
+  EXPECT_EQ(r.work, r.final_row.work);
+  EXPECT_LT((r.final_row.position - s.parts[s.sequence[0]].target.position).norm(),
+            s.params.simulation.completion_distance * (1 + 1e-6));
+}
+
 TEST(Trial, BlockSlidesDownInclineWithCoulombFriction) {
   const double theta = 20.0, mu = 0.2;  // tan 20 deg = 0.364 > mu: it slides
   const double t = theta * M_PI / 180.0;

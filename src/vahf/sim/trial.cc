@@ -95,6 +95,7 @@ struct TrialContext {
   std::optional<Status> ended;
   std::string detail;
   double completion_time = -1;
+  std::optional<TraceRow> completion_row;
   std::vector<TraceRow> trace;
   bool record_trace = true;
 
@@ -383,6 +384,7 @@ class CompletionTrigger : public SimTK::TriggeredEventHandler {
   void handleEvent(SimTK::State& s, SimTK::Real, bool& terminate) const override {
     c_->ended = Status::kCompleted;
     c_->completion_time = s.getTime();
+    c_->completion_row = FinalRow(*c_, s);  // Table 1's instant d, at this very state
     c_->detail = fmt::format("within {} m and {} deg of the target",
                              c_->scene->params.simulation.completion_distance,
                              c_->scene->params.simulation.completion_angle_deg);
@@ -527,8 +529,12 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
       ts.initialize(state);
       ts.stepTo(params.simulation.time_limit);
       end_time = ts.getTime();
-      SimTK::State end_state = ts.getState();
-      final_row = FinalRow(c, end_state);
+      if (c.completion_row) {
+        final_row = c.completion_row;
+      } else {
+        SimTK::State end_state = ts.getState();
+        final_row = FinalRow(c, end_state);
+      }
       if (!c.ended && integ->isSimulationOver() &&
           integ->getTerminationReason() != SimTK::Integrator::ReachedFinalTime) {
         c.ended = Status::kNumericalFailure;
