@@ -620,6 +620,27 @@ TEST(PaperErrorsTest, PaperHasNoScene) {
               "hydraulic_cylinder.json");
 }
 
+// A long value is shortened in the middle: the message keeps the start and
+// the file name at the end of a path, whatever the directory's depth (CI
+// clones into a deeper directory than a developer's checkout; the old
+// shortening cut the file name off there).
+TEST(PaperErrorsTest, LongValueKeepsBothEnds) {
+  json doc = Paper({SourcePath("experiments/table1.json")});
+  const std::string deep = "/start" + std::string(300, 'd') + "/hydraulic_cylinder.json";
+  doc["scene"] = deep;
+  const std::string path = WriteJson(TestDir() / "experiment.json", doc);
+  try {
+    LoadExperiment(path);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/scene") << e.what();
+    EXPECT_LE(e.value().size(), 100u) << e.value();
+    EXPECT_THAT(e.value(), ::testing::StartsWith("\"/start")) << e.value();
+    EXPECT_THAT(e.value(), ::testing::EndsWith("/hydraulic_cylinder.json\"")) << e.value();
+    EXPECT_THAT(e.value(), HasSubstr("...")) << e.value();
+  }
+}
+
 TEST(PaperErrorsTest, ExperimentsRequiredAndNotEmpty) {
   json doc = Paper({});
   ExpectError(doc, "/experiments", "at least 1 element");

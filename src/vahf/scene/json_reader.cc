@@ -33,17 +33,19 @@ std::string TypeName(const nlohmann::json& j) {
   return j.type_name();
 }
 
-// Compact JSON for a message, shortened; non-finite numbers (which JSON text
-// cannot hold but a document built in code can) are shown as nan or inf
-// rather than nlohmann's "null".
+// Compact JSON for a message, shortened in the middle so that both ends stay
+// readable (the end of a long path is its file name, the part a user needs);
+// non-finite numbers (which JSON text cannot hold but a document built in
+// code can) are shown as nan or inf rather than nlohmann's "null".
 std::string Shown(const nlohmann::json& j) {
   if (j.is_number_float() && !std::isfinite(j.get<double>())) {
     const double v = j.get<double>();
     return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
   }
-  std::string text = j.dump();
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return text;
+  constexpr std::size_t kMax = 100, kHead = 30, kTail = kMax - kHead - 3;
+  const std::string text = j.dump();
+  if (text.size() <= kMax) return text;
+  return text.substr(0, kHead) + "..." + text.substr(text.size() - kTail);
 }
 
 std::string Joined(const std::vector<std::string>& items) {
