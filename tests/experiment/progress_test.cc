@@ -27,6 +27,8 @@ TEST(FormatProgress, Text) {
             "x: 1/1001 trials, 0.3 trials/s, about 50 min left");
   EXPECT_EQ(FormatProgress("x", 1, 10001, 3.0),
             "x: 1/10001 trials, 0.3 trials/s, about 8.3 h left");
+  EXPECT_EQ(FormatProgress("paper", 3, 6, 3.0, "cycles"),
+            "paper: 3/6 cycles, 1.0 cycles/s, about 3 s left");
 }
 
 TEST(ProgressMeter, QuietAtFirstThenTwiceASecondThenANewline) {
@@ -57,6 +59,18 @@ TEST(ProgressMeter, ALongerLineIsBlankedAndAStopIsSaid) {
   EXPECT_EQ(Contents(f),
             "\r1/100000 trials, 0.2 trials/s, about 138.9 h left"
             "\r2/100000 trials, 0.3 trials/s, stopped after 6 s \n");
+  std::fclose(f);
+}
+
+TEST(ProgressMeter, CountsItsOwnUnit) {
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  ProgressMeter meter("paper", 6, true, f, "cycles");
+  meter.Update(3, 3.0);
+  meter.Finish(6, 6.0);
+  EXPECT_EQ(Contents(f),
+            "\rpaper: 3/6 cycles, 1.0 cycles/s, about 3 s left"
+            "\rpaper: 6/6 cycles, 1.0 cycles/s, finished in 6 s\n");
   std::fclose(f);
 }
 

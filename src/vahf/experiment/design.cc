@@ -36,6 +36,7 @@ RunnerOptions Options(const RunSettings& s, const std::string& label) {
   RunnerOptions o;
   o.threads = s.threads;
   o.label = label;
+  o.unit = "cycles";  // RunDesign's indices are assembly cycles
   o.progress = s.progress;
   return o;
 }

@@ -16,17 +16,17 @@ std::string Duration(double seconds) {
 }
 
 std::string Prefix(const std::string& label, std::size_t done, std::size_t total,
-                   double elapsed_s) {
+                   double elapsed_s, const std::string& unit) {
   const double rate = elapsed_s > 0 ? static_cast<double>(done) / elapsed_s : 0.0;
-  return fmt::format("{}{}/{} trials, {:.1f} trials/s", label.empty() ? "" : label + ": ",
-                     done, total, rate);
+  return fmt::format("{}{}/{} {}, {:.1f} {}/s", label.empty() ? "" : label + ": ", done,
+                     total, unit, rate, unit);
 }
 
 }  // namespace
 
 std::string FormatProgress(const std::string& label, std::size_t done, std::size_t total,
-                           double elapsed_s) {
-  std::string line = Prefix(label, done, total, elapsed_s);
+                           double elapsed_s, const std::string& unit) {
+  std::string line = Prefix(label, done, total, elapsed_s, unit);
   if (done == 0 || elapsed_s <= 0) return line + ", time left unknown";
   const double left_s =
       static_cast<double>(total - done) * elapsed_s / static_cast<double>(done);
@@ -34,20 +34,23 @@ std::string FormatProgress(const std::string& label, std::size_t done, std::size
 }
 
 ProgressMeter::ProgressMeter(std::string label, std::size_t total, bool enabled,
-                             std::FILE* stream)
-    : label_(std::move(label)), total_(total), stream_(enabled ? stream : nullptr) {}
+                             std::FILE* stream, std::string unit)
+    : label_(std::move(label)),
+      unit_(std::move(unit)),
+      total_(total),
+      stream_(enabled ? stream : nullptr) {}
 
 void ProgressMeter::Update(std::size_t done, double elapsed_s) {
   if (stream_ == nullptr || elapsed_s <= kQuietSeconds) return;
   if (last_print_s_ >= 0 && elapsed_s - last_print_s_ < kIntervalSeconds) return;
   last_print_s_ = elapsed_s;
-  Print(FormatProgress(label_, done, total_, elapsed_s), false);
+  Print(FormatProgress(label_, done, total_, elapsed_s, unit_), false);
 }
 
 void ProgressMeter::Finish(std::size_t done, double elapsed_s) {
   if (!printed()) return;
   const std::string how = done == total_ ? "finished in " : "stopped after ";
-  Print(Prefix(label_, done, total_, elapsed_s) + ", " + how + Duration(elapsed_s), true);
+  Print(Prefix(label_, done, total_, elapsed_s, unit_) + ", " + how + Duration(elapsed_s), true);
 }
 
 void ProgressMeter::Print(const std::string& line, bool final_line) {

@@ -1,5 +1,6 @@
 // The progress line of a long Monte Carlo run on a terminal:
 //   "label: 120/500 trials, 35.2 trials/s, about 11 s left"
+// (or "cycles", whatever unit of work the run counts)
 // rewritten in place with a carriage return, at most twice a second and only
 // once the run has lasted more than 2 s, so short runs print nothing. Time is
 // passed in, not read, so the rules are testable without waiting.
@@ -11,10 +12,10 @@
 
 namespace vahf::experiment {
 
-// The line for `done` of `total` trials after `elapsed_s` seconds; without the
-// "label: " prefix when the label is empty.
+// The line for `done` of `total` units (plural noun `unit`) after `elapsed_s`
+// seconds; without the "label: " prefix when the label is empty.
 std::string FormatProgress(const std::string& label, std::size_t done, std::size_t total,
-                           double elapsed_s);
+                           double elapsed_s, const std::string& unit = "trials");
 
 class ProgressMeter {
  public:
@@ -22,7 +23,8 @@ class ProgressMeter {
   static constexpr double kIntervalSeconds = 0.5;  // at most twice a second
 
   // A null stream or enabled = false prints nothing.
-  ProgressMeter(std::string label, std::size_t total, bool enabled, std::FILE* stream);
+  ProgressMeter(std::string label, std::size_t total, bool enabled, std::FILE* stream,
+                std::string unit = "trials");
 
   // Rewrites the line if the rules above allow it.
   void Update(std::size_t done, double elapsed_s);
@@ -36,6 +38,7 @@ class ProgressMeter {
   void Print(const std::string& line, bool final_line);
 
   std::string label_;
+  std::string unit_;
   std::size_t total_;
   std::FILE* stream_;
   double last_print_s_ = -1.0;

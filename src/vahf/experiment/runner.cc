@@ -94,7 +94,8 @@ void RunIndices(std::size_t n, const RunnerOptions& options,
 
   // The calling thread only watches: it wakes when a worker ends and four
   // times a second to update the progress line.
-  ProgressMeter meter(options.label, n, options.progress, options.progress_stream);
+  ProgressMeter meter(options.label, n, options.progress, options.progress_stream,
+                      options.unit);
   std::size_t done = 0;
   {
     std::unique_lock<std::mutex> lock(shared.mutex);
@@ -112,9 +113,9 @@ void RunIndices(std::size_t n, const RunnerOptions& options,
 
   if (shared.failure) std::rethrow_exception(shared.failure);
   if (shared.stopped.load() && done < n) {
-    throw Interrupted(fmt::format("{}{}stopped on request after {} of {} trials",
+    throw Interrupted(fmt::format("{}{}stopped on request after {} of {} {}",
                                   options.label, options.label.empty() ? "" : ": ", done,
-                                  n));
+                                  n, options.unit));
   }
 }
 

@@ -21,6 +21,7 @@ namespace vahf::experiment {
 struct RunnerOptions {
   int threads = 1;       // worker threads, >= 1
   std::string label;     // names the run on the progress line
+  std::string unit = "trials";  // what one index is, on the progress line
   bool progress = true;  // print the progress line (progress.h)
   std::FILE* progress_stream = stderr;
 };
