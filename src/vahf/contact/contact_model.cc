@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "vahf/core/error.h"
+#include "vahf/geometry/bounding_sphere.h"
 
 namespace vahf::contact {
 namespace {
@@ -26,21 +27,15 @@ ContactModel::ContactModel(std::vector<ShellPoint> shell, double shell_bounding_
 }
 
 void ContactModel::BuildTree(std::size_t begin, std::size_t end) {
-  Eigen::Vector3d lo = shell_[begin].position, hi = lo;
-  for (std::size_t k = begin; k < end; ++k) {
-    lo = lo.cwiseMin(shell_[k].position);
-    hi = hi.cwiseMax(shell_[k].position);
-  }
-  const Eigen::Vector3d centre = 0.5 * (lo + hi);
-  double radius = 0;
-  for (std::size_t k = begin; k < end; ++k)
-    radius = std::max(radius, (shell_[k].position - centre).norm());
+  const geometry::BoundingSphere bound =
+      geometry::BoundPoints(shell_.begin() + begin, shell_.begin() + end,
+                            [](const ShellPoint& s) { return s.position; });
   const std::size_t index = nodes_.size();
-  nodes_.push_back({centre, radius, static_cast<std::uint32_t>(begin),
+  nodes_.push_back({bound.centre, bound.radius, static_cast<std::uint32_t>(begin),
                     static_cast<std::uint32_t>(end), 0});
   if (end - begin > kLeafSize) {
     int axis;
-    (hi - lo).maxCoeff(&axis);
+    (bound.hi - bound.lo).maxCoeff(&axis);
     const std::size_t mid = begin + (end - begin) / 2;
     // A total order (coordinate, then original position) makes the split,
     // and so the summation order, independent of the library's sort.

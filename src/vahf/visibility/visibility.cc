@@ -11,6 +11,7 @@
 #include <string>
 
 #include "vahf/core/error.h"
+#include "vahf/geometry/bounding_sphere.h"
 #include "vahf/human/factors.h"
 
 namespace vahf::visibility {
@@ -40,18 +41,11 @@ struct Sphere {
   double radius = 0.0;
 };
 
-// A sphere holding every vertex: centred on the bounding box.
+// A sphere holding every vertex (geometry/bounding_sphere.h).
 Sphere BoundingSphere(const std::vector<Eigen::Vector3d>& points) {
-  Eigen::Vector3d lo = points.front(), hi = points.front();
-  for (const Eigen::Vector3d& p : points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  Sphere s;
-  s.centre = 0.5 * (lo + hi);
-  for (const Eigen::Vector3d& p : points)
-    s.radius = std::max(s.radius, (p - s.centre).norm());
-  return s;
+  const geometry::BoundingSphere b = geometry::BoundPoints(
+      points.begin(), points.end(), [](const Eigen::Vector3d& p) { return p; });
+  return {b.centre, b.radius};
 }
 
 // Could `occluder` hide any point of the part's bounding sphere (distance d
