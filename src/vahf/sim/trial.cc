@@ -16,6 +16,7 @@
 #include "vahf/human/factors.h"
 #include "vahf/human/fatigue.h"
 #include "vahf/sim/integrators.h"
+#include "vahf/sim/outcome.h"
 #include "vahf/visibility/visibility.h"
 
 namespace vahf::sim {
@@ -90,14 +91,18 @@ struct TrialContext {
   Vector3d last_position = Vector3d::Zero();
   Vector3d last_centre = Vector3d::Zero();  // of the part, at the last decision
   double last_force = 0;
-  double best_distance = 0;
-  double last_progress_time = 0;
+  ProgressWatch progress;
   std::optional<Status> ended;
   std::string detail;
   double completion_time = -1;
   std::optional<TraceRow> completion_row;
   std::vector<TraceRow> trace;
   bool record_trace = true;
+
+  void End(Ending e) {
+    ended = e.status;
+    detail = std::move(e.detail);
+  }
 
   const SimTK::MobilizedBody& Body() const { return matter->getMobilizedBody(body); }
 
@@ -234,24 +239,9 @@ void Decide(TrialContext& c, SimTK::State& s) {
   c.matter->getSystem().realize(s, SimTK::Stage::Velocity);
   const contact::RigidMotion m = c.MotionOf(s);
   const Vector3d T = m.pose.translation();
-  for (int k = 0; k < 3; ++k) {
-    if (!std::isfinite(T[k]) || !std::isfinite(m.velocity[k]) ||
-        !std::isfinite(m.angular_velocity[k])) {
-      c.ended = Status::kNumericalFailure;
-      c.detail =
-          fmt::format("non-finite state at decision {} (t = {} s)", i, s.getTime());
-      return;
-    }
-  }
-  // The fastest point of the part's bounding sphere, a bound on any point's speed.
-  const double speed = m.velocity.norm() + m.angular_velocity.norm() *
-                                               c.part->mass_properties.bounding_radius;
-  if (speed > p.simulation.divergence_speed) {
-    c.ended = Status::kNumericalFailure;
-    c.detail = fmt::format(
-        "diverged: a point of the part moves at up to {:.6g} m/s > divergence_speed {} "
-        "m/s at decision {} (t = {} s, position {:.6g} {:.6g} {:.6g} m)",
-        speed, p.simulation.divergence_speed, i, s.getTime(), T.x(), T.y(), T.z());
+  if (std::optional<Ending> bad = CheckState(m, c.part->mass_properties.bounding_radius,
+                                             p.simulation, i, s.getTime())) {
+    c.End(std::move(*bad));
     return;
   }
 
@@ -278,29 +268,20 @@ void Decide(TrialContext& c, SimTK::State& s) {
     d.contact.friction = cf.friction_force.norm();
   }
 
-  // Outcomes decided at this instant, in order of precedence.
-  const double distance = c.DistanceToTarget(m);
-  if (i == 0 || c.best_distance - distance >= p.simulation.jam_progress ||
-      !d.contact.in_contact) {
-    if (i == 0 || distance < c.best_distance) c.best_distance = distance;
-    c.last_progress_time = s.getTime();
-  }
-  // Fatigue and reach end a trial only when an operator is guiding the part.
-  if (c.operator_acts && human::IsExhausted(psi, p.fatigue.psi_floor)) {
-    c.ended = Status::kExhausted;
-    c.detail = fmt::format("Psi_c = {:.4f} <= floor {} at t = {} s (A = {:.6g} J)", psi,
-                           p.fatigue.psi_floor, s.getTime(), c.work);
-  } else if (c.operator_acts && f.shoulder_distance > c.reach_limit) {
-    c.ended = Status::kUnreachable;
-    c.detail = fmt::format("shoulder distance {:.4f} m > D3 = {:.4f} m at t = {} s",
-                           f.shoulder_distance, c.reach_limit, s.getTime());
-  } else if (d.contact.in_contact &&
-             s.getTime() - c.last_progress_time >= p.simulation.jam_time) {
-    c.ended = Status::kJammed;
-    c.detail = fmt::format(
-        "in contact without {} m of progress since t = {} s; {:.6f} m from the target",
-        p.simulation.jam_progress, c.last_progress_time, distance);
-  }
+  // Outcomes decided at this instant (outcome.h).
+  DecisionFacts facts;
+  facts.time = s.getTime();
+  facts.operator_acts = c.operator_acts;
+  facts.psi = psi;
+  facts.work = c.work;
+  facts.shoulder_distance = f.shoulder_distance;
+  facts.reach_limit = c.reach_limit;
+  facts.in_contact = d.contact.in_contact;
+  facts.distance = c.DistanceToTarget(m);
+  c.progress.Observe(i == 0, facts.time, facts.distance, facts.in_contact,
+                     p.simulation.jam_progress);
+  if (std::optional<Ending> end = CheckOperator(facts, p.fatigue, p.simulation, c.progress))
+    c.End(std::move(*end));
 
   // Eq. 5 and the held orientation, keyed by {seed, trial} and decision i.
   if (!c.ended) {
