@@ -74,6 +74,23 @@ TEST(ProgressMeter, CountsItsOwnUnit) {
   std::fclose(f);
 }
 
+// Into a file or pipe: a line each, at most every 10 s.
+TEST(ProgressMeter, ALogGetsANewLineEveryTenSeconds) {
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  EXPECT_FALSE(IsTerminal(f));
+  ProgressMeter meter("mc", 100, true, f, "trials", ProgressMeter::Style::kLog);
+  meter.Update(10, 2.5);  // printed
+  meter.Update(20, 5.0);  // too soon for a log
+  meter.Update(50, 12.5);  // printed
+  meter.Finish(100, 20.0);
+  EXPECT_EQ(Contents(f),
+            "mc: 10/100 trials, 4.0 trials/s, about 23 s left\n"
+            "mc: 50/100 trials, 4.0 trials/s, about 13 s left\n"
+            "mc: 100/100 trials, 5.0 trials/s, finished in 20 s\n");
+  std::fclose(f);
+}
+
 TEST(ProgressMeter, SilentWhenDisabledOrNeverPrinted) {
   std::FILE* f = std::tmpfile();
   ASSERT_NE(f, nullptr);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <utility>
 
@@ -33,16 +35,22 @@ std::string FormatProgress(const std::string& label, std::size_t done, std::size
   return line + ", about " + Duration(left_s) + " left";
 }
 
+bool IsTerminal(std::FILE* stream) {
+  return stream != nullptr && ::isatty(::fileno(stream)) == 1;
+}
+
 ProgressMeter::ProgressMeter(std::string label, std::size_t total, bool enabled,
-                             std::FILE* stream, std::string unit)
+                             std::FILE* stream, std::string unit, Style style)
     : label_(std::move(label)),
       unit_(std::move(unit)),
       total_(total),
-      stream_(enabled ? stream : nullptr) {}
+      stream_(enabled ? stream : nullptr),
+      style_(style) {}
 
 void ProgressMeter::Update(std::size_t done, double elapsed_s) {
   if (stream_ == nullptr || elapsed_s <= kQuietSeconds) return;
-  if (last_print_s_ >= 0 && elapsed_s - last_print_s_ < kIntervalSeconds) return;
+  const double interval = style_ == Style::kLog ? kLogIntervalSeconds : kIntervalSeconds;
+  if (last_print_s_ >= 0 && elapsed_s - last_print_s_ < interval) return;
   last_print_s_ = elapsed_s;
   Print(FormatProgress(label_, done, total_, elapsed_s, unit_), false);
 }
@@ -54,6 +62,12 @@ void ProgressMeter::Finish(std::size_t done, double elapsed_s) {
 }
 
 void ProgressMeter::Print(const std::string& line, bool final_line) {
+  if (style_ == Style::kLog) {
+    std::fprintf(stream_, "%s\n", line.c_str());
+    std::fflush(stream_);
+    printed_width_ = line.size();
+    return;
+  }
   // Blank whatever a longer previous line left behind.
   const std::size_t pad = printed_width_ > line.size() ? printed_width_ - line.size() : 0;
   std::fprintf(stream_, "\r%s%*s%s", line.c_str(), static_cast<int>(pad), "",

@@ -1,9 +1,11 @@
-// The progress line of a long Monte Carlo run on a terminal:
+// The progress line of a long Monte Carlo run:
 //   "label: 120/500 trials, 35.2 trials/s, about 11 s left"
-// (or "cycles", whatever unit of work the run counts)
-// rewritten in place with a carriage return, at most twice a second and only
-// once the run has lasted more than 2 s, so short runs print nothing. Time is
-// passed in, not read, so the rules are testable without waiting.
+// (or "cycles", whatever unit of work the run counts). On a terminal it is
+// rewritten in place with a carriage return, at most twice a second; into a
+// file or pipe (a CI log) it is a new line at most every 10 s, so logs stay
+// readable. Nothing is printed before the run has lasted 2 s, so short runs
+// print nothing. Time is passed in, not read, so the rules are testable
+// without waiting.
 #pragma once
 
 #include <cstddef>
@@ -17,14 +19,19 @@ namespace vahf::experiment {
 std::string FormatProgress(const std::string& label, std::size_t done, std::size_t total,
                            double elapsed_s, const std::string& unit = "trials");
 
+// Whether `stream` is a terminal (where a line can be rewritten in place).
+bool IsTerminal(std::FILE* stream);
+
 class ProgressMeter {
  public:
-  static constexpr double kQuietSeconds = 2.0;     // nothing before this
-  static constexpr double kIntervalSeconds = 0.5;  // at most twice a second
+  enum class Style { kInPlace, kLog };
+  static constexpr double kQuietSeconds = 2.0;         // nothing before this
+  static constexpr double kIntervalSeconds = 0.5;      // in place: twice a second
+  static constexpr double kLogIntervalSeconds = 10.0;  // a log: every 10 s
 
   // A null stream or enabled = false prints nothing.
   ProgressMeter(std::string label, std::size_t total, bool enabled, std::FILE* stream,
-                std::string unit = "trials");
+                std::string unit = "trials", Style style = Style::kInPlace);
 
   // Rewrites the line if the rules above allow it.
   void Update(std::size_t done, double elapsed_s);
@@ -41,6 +48,7 @@ class ProgressMeter {
   std::string unit_;
   std::size_t total_;
   std::FILE* stream_;
+  Style style_;
   double last_print_s_ = -1.0;
   std::size_t printed_width_ = 0;  // length of the last line, to blank its tail
 };

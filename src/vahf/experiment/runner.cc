@@ -95,7 +95,9 @@ void RunIndices(std::size_t n, const RunnerOptions& options,
   // The calling thread only watches: it wakes when a worker ends and four
   // times a second to update the progress line.
   ProgressMeter meter(options.label, n, options.progress, options.progress_stream,
-                      options.unit);
+                      options.unit,
+                      IsTerminal(options.progress_stream) ? ProgressMeter::Style::kInPlace
+                                                          : ProgressMeter::Style::kLog);
   std::size_t done = 0;
   {
     std::unique_lock<std::mutex> lock(shared.mutex);
