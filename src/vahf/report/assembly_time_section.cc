@@ -12,12 +12,6 @@
 namespace vahf::report {
 namespace {
 
-std::string MeanCi(const stats::Summary& s) {
-  if (!s.mean) return "-";
-  if (!s.ci) return fmt::format("{:.3f}", *s.mean);
-  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", *s.mean, s.ci->lower, s.ci->upper);
-}
-
 }  // namespace
 
 Section AssemblyTimeSection(const experiment::ExperimentRun& run) {

@@ -59,10 +59,7 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
                       "{} |\n",
                       c.name, c.work_start, psi0, psi1, counts[s].successes,
                       counts[s].trials, rate, w.lower, w.upper,
-                      t.mean ? fmt::format("{:.3f} [{:.3f}, {:.3f}]", *t.mean,
-                                           t.ci ? t.ci->lower : *t.mean,
-                                           t.ci ? t.ci->upper : *t.mean)
-                             : "-");
+                      MeanCi(t));
     const double mid = 0.5 * (c.minute_start + c.minute_end);
     if (t.mean)
       fig15 += fmt::format("{} {} {} {}\n", mid, *t.mean, t.ci ? t.ci->lower : *t.mean,

@@ -1,5 +1,7 @@
 #include "vahf/report/section.h"
 
+#include <fmt/format.h>
+
 #include "vahf/core/error.h"
 
 namespace vahf::report {
@@ -8,6 +10,12 @@ nlohmann::json Claim(const std::string& claim, bool reproduced, const std::strin
                      const std::string& evidence) {
   return {{"claim", claim}, {"reproduced", reproduced}, {"test", test},
           {"evidence", evidence}};
+}
+
+std::string MeanCi(const stats::Summary& s) {
+  if (!s.mean) return "-";
+  if (!s.ci) return fmt::format("{:.3f}", *s.mean);
+  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", *s.mean, s.ci->lower, s.ci->upper);
 }
 
 Table CyclesTable(const experiment::DesignRun& run) {

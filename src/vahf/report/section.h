@@ -11,6 +11,7 @@
 
 #include "vahf/experiment/design.h"
 #include "vahf/report/table.h"
+#include "vahf/stats/summary.h"
 
 namespace vahf::report {
 
@@ -33,6 +34,10 @@ struct Section {
 // model gave instead when it does not.
 nlohmann::json Claim(const std::string& claim, bool reproduced, const std::string& test,
                      const std::string& evidence);
+
+// "mean [lower, upper]" of a summary for report.md, 3 decimals; the mean
+// alone without an interval (one sample), "-" without a mean.
+std::string MeanCi(const stats::Summary& s);
 
 // One row per part trial of every cycle: condition, group, cycle, part,
 // status, start and completion times, work. Every kind writes it.
