@@ -1,6 +1,10 @@
 // Eq. 5 (estimated target), E_i, Eq. 7 and Eq. 8. Deterministic cases by hand;
 // the statistical ones (N = 100000 draws, bounds of 5 standard errors) check
-// the mean of T' and the anisotropy of E_i.
+// the mean of T' and the anisotropy of E_i. The operator's force between
+// decisions against its two limits (Eq. 7 out of contact, Eq. 8 in full
+// contact) and for continuity in the contact it feels: as the normal force
+// tends to 0 from any direction the force tends to the free one, and a sweep
+// of the normal force through the blend has no jump.
 #include "vahf/guidance/assembly_force.h"
 
 #include <gtest/gtest.h>
@@ -108,6 +112,90 @@ TEST(ContactAssemblyForce, Eq8PerpendicularToContactPlusFriction) {
   const Eigen::Vector3d free = ContactAssemblyForce(400.0, 0.9, kPosition, tp,
                                                    Eigen::Vector3d::Zero(), 0.0);
   EXPECT_NEAR((free - FreeAssemblyForce(400.0, 0.9, kPosition, tp)).norm(), 0.0, 1e-12);
+}
+
+TEST(ContactBlend, C1SmoothstepFromZeroToOne) {
+  EXPECT_EQ(ContactBlend(0.0, 2.0), 0.0);
+  EXPECT_EQ(ContactBlend(2.0, 2.0), 1.0);
+  EXPECT_EQ(ContactBlend(5.0, 2.0), 1.0);
+  EXPECT_DOUBLE_EQ(ContactBlend(1.0, 2.0), 0.5);
+  // Zero slope at both ends (C1): one-sided differences vanish like h.
+  const double h = 1e-6;
+  EXPECT_LT(ContactBlend(h, 2.0) / h, 1e-5);
+  EXPECT_LT((1.0 - ContactBlend(2.0 - h, 2.0)) / h, 1e-5);
+}
+
+struct ForceCase {
+  GuidanceParams params;
+  double psi = 0.9, mass = 0.5, blend = 0.5, fade = 1e-3;
+  Eigen::Vector3d target = kPosition + Eigen::Vector3d(0.02, -0.01, -0.05);
+  Eigen::Vector3d velocity{0.1, 0.0, -0.3};
+  Eigen::Vector3d weight{0.0, 0.0, -0.5 * 9.80665};
+  Eigen::Vector3d Force(const FeltContact& c) const {
+    return ImpedanceForce(params, psi, mass, kPosition, target, velocity, c, blend, weight,
+                          fade);
+  }
+};
+
+TEST(ImpedanceForce, FreeIsEq7WithWeightSupportAndDamping) {
+  const ForceCase k;
+  const double b = 2.0 * k.params.damping_ratio * std::sqrt(k.params.kappa * k.psi * k.mass);
+  const Eigen::Vector3d expected =
+      FreeAssemblyForce(k.params.kappa, k.psi, kPosition, k.target) -
+      k.params.weight_support * k.weight - b * k.velocity;
+  EXPECT_NEAR((k.Force({}) - expected).norm(), 0.0, 1e-12);
+}
+
+TEST(ImpedanceForce, FullContactIsEq8WithTheCurrentNormalAndFriction) {
+  const ForceCase k;
+  const Eigen::Vector3d n = Eigen::Vector3d(0.3, 0.0, 1.0).normalized();
+  const double friction = 1.5;
+  const Eigen::Vector3d f = k.Force({2.0 * n, friction});  // 2 N > blend 0.5 N
+  const double b = 2.0 * k.params.damping_ratio * std::sqrt(k.params.kappa * k.psi * k.mass);
+  const Eigen::Vector3d to = k.target - kPosition;
+  const Eigen::Vector3d along = to - to.dot(n) * n;
+  // Away from T' (|P(T' - T)| >> fade) the push is Eq. 8: kappa Psi |P(T'-T)| + f.
+  const Eigen::Vector3d eq8 = ContactAssemblyForce(k.params.kappa, k.psi, kPosition,
+                                                   k.target, n, friction);
+  const Eigen::Vector3d expected =
+      k.params.kappa * k.psi * along +
+      friction * along / std::sqrt(along.squaredNorm() + k.fade * k.fade) - b * k.velocity;
+  EXPECT_NEAR((f - expected).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((f + b * k.velocity - eq8).norm(), 1e-3 * eq8.norm(), 1e-3 * eq8.norm());
+  EXPECT_NEAR((f + b * k.velocity).dot(n), 0.0, 1e-12);  // perpendicular to the normal
+}
+
+TEST(ImpedanceForce, ContinuousAsContactFormsFromAnyDirection) {
+  const ForceCase k;
+  const Eigen::Vector3d free = k.Force({});
+  for (const Eigen::Vector3d& dir : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 0),
+                                     Eigen::Vector3d(-0.6, 0.8, 0.0)}) {
+    for (double fn : {1e-3, 1e-5, 1e-7}) {
+      // The change is of order kappa |T' - T| (fn / blend)^2 and friction alike.
+      const Eigen::Vector3d f = k.Force({fn * dir, 10 * fn});
+      EXPECT_LT((f - free).norm(), 200.0 * std::pow(fn / k.blend, 2) + 30 * fn)
+          << "fn " << fn << " along " << dir.transpose();
+    }
+  }
+}
+
+TEST(ImpedanceForce, NoJumpThroughTheBlend) {
+  const ForceCase k;
+  const Eigen::Vector3d n = Eigen::Vector3d(0.2, -0.1, 1.0).normalized();
+  const int steps = 20000;
+  const double top = 2.0 * k.blend, dfn = top / steps;
+  Eigen::Vector3d last = k.Force({});
+  double largest = 0;
+  for (int i = 1; i <= steps; ++i) {
+    const double fn = i * dfn;
+    const Eigen::Vector3d f = k.Force({fn * n, 0.3 * fn});  // friction grows with load
+    largest = std::max(largest, (f - last).norm());
+    last = f;
+  }
+  // A continuous law changes by O(dfn) per step: the blend's steepest slope
+  // 1.5 / blend times the Eq. 7 - Eq. 8 difference (about 25 N here), plus
+  // the friction term's 0.3 per newton.
+  EXPECT_LT(largest, (1.5 / k.blend * 30.0 + 0.3) * dfn);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // reference values, and (as the harness grows) runs trials and experiments.
 // Exit status: 0 success, 2 bad input (a file, a value or an option), 1 other.
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -64,6 +65,7 @@ struct TrialArgs {
   std::string integrator;
   double accuracy = 0;
   std::string trace;
+  double sample = 0;
 };
 
 int Trial(const TrialArgs& a) {
@@ -78,6 +80,16 @@ int Trial(const TrialArgs& a) {
   vahf::sim::TrialOptions options;
   options.sequence_position = a.position;
   options.record_trace = !a.trace.empty();
+  if (a.sample != 0 && !(a.sample > 0 && a.sample <= scene.params.simulation.time_limit))
+    throw vahf::InputError("--sample", "", fmt::format("{}", a.sample),
+                           "must be > 0 s and at most the scene's time_limit");
+  if (a.sample > 0 && a.trace.empty())
+    throw vahf::InputError("--sample", "", fmt::format("{}", a.sample),
+                           "needs --trace FILE to write the rows to");
+  if (a.sample > 0 && scene.params.simulation.time_limit / a.sample > 1e7)
+    throw vahf::InputError("--sample", "", fmt::format("{}", a.sample),
+                           "at most 1e7 rows over the time limit");
+  options.sample_interval = a.sample;
   const vahf::sim::TrialResult r = vahf::sim::RunTrial(scene, {a.seed, a.trial}, options);
   if (!a.trace.empty()) vahf::WriteFileAtomically(a.trace, vahf::sim::TraceCsv(r));
   std::fputs(r.BriefReport().c_str(), stdout);
@@ -163,6 +175,11 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   trial->add_option("--trace", trial_args.trace,
                     "write one CSV row per decision instant to this file");
+  trial
+      ->add_option("--sample", trial_args.sample,
+                   "with --trace: also a row every DT s of simulated time (pose, velocities, "
+                   "forces, penetration), interpolated, so the trajectory is unchanged")
+      ->option_text("DT");
 
   RunArgs run_args;
   CLI::App* run = app.add_subcommand(

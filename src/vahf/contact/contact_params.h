@@ -20,6 +20,11 @@ struct ContactParams {
   double friction_transition_speed = 1e-3;
   // Spacing of the point shell on the moving part's surface, m.
   double shell_spacing = 1e-3;
+  // The penetration bound as a fraction of the scene's smallest radial
+  // clearance: a contact deeper than this at an accepted step is a warning
+  // (penetration_bound). 0.1: a penalty contact that resolves a fit must keep
+  // its overlap an order of magnitude below the gap it resolves.
+  double penetration_fraction = 0.1;
 };
 
 }  // namespace vahf::contact

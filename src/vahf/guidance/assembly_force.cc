@@ -1,6 +1,7 @@
 #include "vahf/guidance/assembly_force.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 #include "vahf/core/error.h"
@@ -72,20 +73,31 @@ Eigen::Vector3d ContactAssemblyForce(double kappa, double psi,
   return (kappa * psi * size + friction) * (direction / size);
 }
 
+double ContactBlend(double normal_force, double blend_force) {
+  const double s = std::clamp(normal_force / blend_force, 0.0, 1.0);
+  return s * s * (3.0 - 2.0 * s);
+}
+
 Eigen::Vector3d ImpedanceForce(const GuidanceParams& params, double psi, double mass,
                                const Eigen::Vector3d& position,
                                const Eigen::Vector3d& estimated_target,
-                               const Eigen::Vector3d& velocity, const HeldContact& contact,
-                               const Eigen::Vector3d& weight, double fade_length) {
+                               const Eigen::Vector3d& velocity, const FeltContact& contact,
+                               double blend_force, const Eigen::Vector3d& weight,
+                               double fade_length) {
   const double b = 2.0 * params.damping_ratio * std::sqrt(params.kappa * psi * mass);
-  Eigen::Vector3d to_target = estimated_target - position;
-  Eigen::Vector3d push = -params.weight_support * weight;
-  if (contact.in_contact) {
-    to_target -= to_target.dot(contact.normal) * contact.normal;
-    push = contact.friction * to_target /
-           std::sqrt(to_target.squaredNorm() + fade_length * fade_length);
+  const Eigen::Vector3d to_target = estimated_target - position;
+  const double fn = contact.normal_force.norm();
+  const double w = ContactBlend(fn, blend_force);
+  Eigen::Vector3d force = params.kappa * psi * to_target - (1.0 - w) * params.weight_support *
+                                                               weight;
+  if (w > 0) {  // fn > 0, so the normal is defined
+    const Eigen::Vector3d n = contact.normal_force / fn;
+    const Eigen::Vector3d along = to_target - to_target.dot(n) * n;  // P (T' - T)
+    force += -w * params.kappa * psi * to_target.dot(n) * n +
+             w * contact.friction * along /
+                 std::sqrt(along.squaredNorm() + fade_length * fade_length);
   }
-  return params.kappa * psi * to_target + push - b * velocity;
+  return force - b * velocity;
 }
 
 }  // namespace vahf::guidance

@@ -41,6 +41,13 @@ struct GuidanceParams {
   // Scale of the random error of the held orientation at eta = 1, degrees per
   // axis (perturbed like Eq. 5's E_i, scaled by eta).
   double torque_sigma_deg = 2.0;
+  // The contact normal force, as a fraction of the part's weight under
+  // standard gravity, over which the operator's force passes from Eq. 7 to
+  // Eq. 8 (ContactBlend). The operator notices contact when its reaction is a
+  // noticeable share of the weight in the hand; 0.1 keeps the blend smooth
+  // for the integrator while contact forces in an insertion reach several
+  // weights within micrometres.
+  double contact_blend = 0.1;
   // Scales of the vision error E_i, metres at eta = 1 (DESIGN.md decision 4):
   // along the line of sight (depth is hardest to judge) and across it.
   double vision_sigma_depth = 0.010;
@@ -85,24 +92,36 @@ Eigen::Vector3d ContactAssemblyForce(double kappa, double psi,
                                      const Eigen::Vector3d& contact_force,
                                      double friction);
 
-// The force the operator applies between two decisions: an impedance toward
-// the held estimate T' (DESIGN.md decision 2) whose value at the decision
-// instant, at rest, is Eq. 7 (free) or Eq. 8 (in contact, with the contact
-// normal and friction held from the decision instant):
-//   free:       kappa Psi (T' - T) - b v - s W
-//   in contact: kappa Psi P(T' - T) + friction P(T' - T) / sqrt(|P(T' - T)|^2 + e^2) - b v
-// with P = I - n n^T, b = 2 zeta sqrt(kappa Psi m), W = m g the part's weight
-// (N, world) and s the weight support. The friction term fades
-// within e (m) of T' so the force stays continuous where P(T' - T) turns.
-struct HeldContact {
-  bool in_contact = false;
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, of the contact force
-  double friction = 0.0;                               // N
+// The contact the operator feels now: the total normal force and the size of
+// the friction force the contact exerts on the part at the current state (N,
+// world). Both are continuous in the state (contact_model.h), and so is
+// everything ImpedanceForce derives from them.
+struct FeltContact {
+  Eigen::Vector3d normal_force = Eigen::Vector3d::Zero();
+  double friction = 0.0;
 };
+
+// How far Eq. 8 has taken over from Eq. 7, in [0, 1]: the C1 smoothstep
+// 3 s^2 - 2 s^3 of s = |normal force| / blend_force, clamped to [0, 1]. 0 out
+// of contact, 1 once the contact pushes with at least blend_force.
+double ContactBlend(double normal_force, double blend_force);
+
+// The force the operator applies between two decisions (DESIGN.md decision 2):
+// an impedance toward the held estimate T', continuous in the state. With
+// w = ContactBlend(|F_n|), n = F_n / |F_n| and P_w = I - w n n^T,
+//   F = kappa Psi P_w (T' - T) + (1 - w) s W_up
+//       + w f P(T' - T) / sqrt(|P(T' - T)|^2 + e^2) - b v
+// w = 0 (free) is Eq. 7 plus the weight support s of the part's weight W
+// (N, world, W_up = -W); w = 1 (in contact) is Eq. 8 with the contact normal
+// and friction f of the current contact, the friction push fading within e
+// (m) of T' so the force stays continuous where P(T' - T) turns.
+// b = 2 zeta sqrt(kappa Psi m). Every factor is continuous in the state and
+// w vanishes where n is undefined, so F is continuous in the state.
 Eigen::Vector3d ImpedanceForce(const GuidanceParams& params, double psi, double mass,
                                const Eigen::Vector3d& position,
                                const Eigen::Vector3d& estimated_target,
-                               const Eigen::Vector3d& velocity, const HeldContact& contact,
-                               const Eigen::Vector3d& weight, double fade_length);
+                               const Eigen::Vector3d& velocity, const FeltContact& contact,
+                               double blend_force, const Eigen::Vector3d& weight,
+                               double fade_length);
 
 }  // namespace vahf::guidance

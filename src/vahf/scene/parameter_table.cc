@@ -47,6 +47,7 @@ std::vector<ParamSpec> MakeTable() {
       {"guidance", "torque_frequency", "rad/s", R::kPositive, "natural frequency of the assembly torque impedance", VAHF_REAL(guidance.torque_frequency)},
       {"guidance", "torque_damping_ratio", "1", R::kNonNegative, "damping of the torque impedance, fraction of critical", VAHF_REAL(guidance.torque_damping_ratio)},
       {"guidance", "torque_sigma_deg", "deg", R::kAngle, "error of the held orientation per axis at eta = 1", VAHF_REAL(guidance.torque_sigma_deg)},
+      {"guidance", "contact_blend", "1", R::kPositive, "contact normal force, in part weights, over which Eq. 7 passes into Eq. 8", VAHF_REAL(guidance.contact_blend)},
       {"guidance", "vision_sigma_depth", "m", R::kNonNegative, "E_i scale along the sight line at eta = 1 (Eq. 5)", VAHF_REAL(guidance.vision_sigma_depth)},
       {"guidance", "vision_sigma_lateral", "m", R::kNonNegative, "E_i scale across the sight line at eta = 1", VAHF_REAL(guidance.vision_sigma_lateral)},
       {"contact", "stiffness", "Pa/m", R::kPositive, "normal pressure per metre of penetration", VAHF_REAL(contact.stiffness)},
@@ -54,6 +55,7 @@ std::vector<ParamSpec> MakeTable() {
       {"contact", "dissipation", "s/m", R::kNonNegative, "Hunt-Crossley dissipation", VAHF_REAL(contact.dissipation)},
       {"contact", "friction_transition_speed", "m/s", R::kPositive, "slip speed of the regularised Coulomb law", VAHF_REAL(contact.friction_transition_speed)},
       {"contact", "shell_spacing", "m", R::kPositive, "point spacing of the moving part's contact shell", VAHF_REAL(contact.shell_spacing)},
+      {"contact", "penetration_fraction", "1", R::kPositive, "penetration bound as a fraction of the smallest radial clearance (a warning past it)", VAHF_REAL(contact.penetration_fraction)},
       {"visibility", "mode", "-", R::kChoice, "raycast (Eq. 1), constant, or off (V = 1)", nullptr, nullptr, VAHF_TEXT(visibility.mode), {"raycast", "constant", "off"}},
       {"visibility", "value", "1", R::kUnit, "V when mode is constant", VAHF_REAL(visibility.value)},
       {"visibility", "grid", "rays", R::kCount, "N of the N x N ray grid", nullptr, VAHF_COUNT(visibility.grid)},
@@ -68,6 +70,7 @@ std::vector<ParamSpec> MakeTable() {
       {"simulation", "integrator", "-", R::kChoice, "Simbody integrator", nullptr, nullptr, VAHF_TEXT(simulation.integrator), IntegratorNames()},
       {"simulation", "accuracy", "1", R::kPositive, "integrator relative accuracy", VAHF_REAL(simulation.accuracy)},
       {"simulation", "fixed_step", "s", R::kPositive, "step of the FixedStep integrator", VAHF_REAL(simulation.fixed_step)},
+      {"simulation", "step_floor", "s", R::kPositive, "an accepted step shorter than this is a warning", VAHF_REAL(simulation.step_floor)},
   };
   return t;
 }

@@ -33,6 +33,11 @@ struct SimulationParams {
   std::string integrator = "RungeKuttaMerson";
   double accuracy = 1e-4;                // integrator relative accuracy
   double fixed_step = 1e-4;              // s, for integrator "FixedStep"
+  // An accepted step shorter than this, s, is recorded as a warning
+  // (step_size_floor): the integrator is resolving something far faster than
+  // the contact oscillation (about 1e-4 s) or sticking friction (a few
+  // microseconds) it is built for.
+  double step_floor = 1e-8;
 };
 
 struct Parameters {

@@ -10,6 +10,8 @@
 
 #include "vahf/contact/contact_model.h"
 #include "vahf/core/error.h"
+#include "vahf/core/warnings.h"
+#include "vahf/geometry/clearance.h"
 #include "vahf/geometry/tessellation.h"
 #include "vahf/guidance/assembly_force.h"
 #include "vahf/guidance/assembly_torque.h"
@@ -37,6 +39,10 @@ Matrix3d ToEigen(const SimTK::Rotation& r) {
     for (int j = 0; j < 3; ++j) m(i, j) = r[i][j];
   return m;
 }
+bool IsFinite(const contact::RigidMotion& m) {
+  return m.pose.matrix().allFinite() && m.velocity.allFinite() &&
+         m.angular_velocity.allFinite();
+}
 SimTK::Rotation ToSimTK(const Matrix3d& m) {
   SimTK::Mat33 a;
   for (int i = 0; i < 3; ++i)
@@ -47,11 +53,20 @@ SimTK::Rotation ToSimTK(const Matrix3d& m) {
 // What the operator decided at the last decision instant, held until the next
 // (DESIGN.md decision 1). A Simbody discrete variable, so that changing it
 // invalidates the state's dynamics and restarts the integrator cleanly.
+// The contact it met is not held: the force law reads the current contact
+// (guidance::ImpedanceForce), so the force is continuous in the state.
 struct Decision {
   Vector3d estimated_target = Vector3d::Zero();  // T' of Eq. 5
   Matrix3d held_orientation = Matrix3d::Identity();
   double psi = 1.0;
-  guidance::HeldContact contact;
+};
+
+// What the force element computed at a state, kept in a Simbody cache entry
+// of that state so that an accepted step or a sample reads it without a
+// second contact evaluation.
+struct ForceSnapshot {
+  Vector3d assembly_force = Vector3d::Zero();  // the operator's, at the grasp, N
+  contact::ContactForces contact;
 };
 
 // Everything a trial needs at run time, owned for the trial's duration.
@@ -84,6 +99,15 @@ struct TrialContext {
   const SimTK::SimbodyMatterSubsystem* matter = nullptr;
   const SimTK::GeneralForceSubsystem* forces = nullptr;
   SimTK::DiscreteVariableIndex decision_index;
+  SimTK::CacheEntryIndex snapshot_index;
+
+  // The contact normal force over which Eq. 7 passes into Eq. 8, N.
+  double blend_force = 1.0;
+  // Numerical health (DESIGN.md decision 12).
+  Warnings warnings;
+  double penetration_bound = 0;  // m; 0: the scene has no radial fit to bound
+  double clearance = 0;          // the smallest radial clearance, m (0: none)
+  double max_penetration = 0;    // deepest contact at an accepted step or sample, m
 
   // Accumulators, updated at decision instants.
   std::int64_t last_decision = -1;
@@ -97,7 +121,9 @@ struct TrialContext {
   double completion_time = -1;
   std::optional<TraceRow> completion_row;
   std::vector<TraceRow> trace;
+  std::vector<TraceRow> samples;  // every sample_interval of simulated time
   bool record_trace = true;
+  bool integrated = false;  // the integrator was initialized (its counters mean something)
 
   void End(Ending e) {
     ended = e.status;
@@ -131,8 +157,16 @@ struct TrialContext {
         .get();
   }
 
-  // The operator's force at the grasp point and torque about the origin (world).
-  void OperatorLoad(const contact::RigidMotion& m, const Decision& d, Vector3d* force,
+  const ForceSnapshot& SnapshotOf(const SimTK::State& s) const {
+    return static_cast<const SimTK::Value<ForceSnapshot>&>(
+               forces->getCacheEntry(s, snapshot_index))
+        .get();
+  }
+
+  // The operator's force at the grasp point and torque about the origin
+  // (world), with the contact the part meets in this state.
+  void OperatorLoad(const contact::RigidMotion& m, const Decision& d,
+                    const contact::ContactForces& cf, Vector3d* force,
                     Vector3d* torque) const {
     *force = Vector3d::Zero();
     *torque = Vector3d::Zero();
@@ -141,10 +175,11 @@ struct TrialContext {
     const Vector3d v_grasp = m.velocity + m.angular_velocity.cross(r_grasp);
     const auto& g = scene->params.guidance;
     // The arm always carries its own weight; the part's, as guidance says.
-    *force = guidance::ImpedanceForce(
-                 g, d.psi, mass, m.pose.translation(), d.estimated_target, v_grasp,
-                 d.contact, part_mass * scene->gravity,
-                 scene->params.simulation.completion_distance) -
+    const guidance::FeltContact felt{cf.normal_force, cf.friction_force.norm()};
+    *force = guidance::ImpedanceForce(g, d.psi, mass, m.pose.translation(),
+                                      d.estimated_target, v_grasp, felt, blend_force,
+                                      part_mass * scene->gravity,
+                                      scene->params.simulation.completion_distance) -
              hand_mass * scene->gravity;
     const Matrix3d inertia_world =
         m.pose.linear() * inertia_body * m.pose.linear().transpose();
@@ -209,13 +244,21 @@ class OperatorAndContactForce : public SimTK::Force::Custom::Implementation {
   void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
                  SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
     const contact::RigidMotion m = c_->MotionOf(s);
-    Vector3d force, torque;
-    c_->OperatorLoad(m, c_->HeldDecision(s), &force, &torque);
-    if (c_->contact) {
-      const contact::ContactForces f = c_->contact->Evaluate(m);
-      force += f.normal_force + f.friction_force;
-      torque += f.torque;
+    ForceSnapshot& snap = SimTK::Value<ForceSnapshot>::updDowncast(
+                              c_->forces->updCacheEntry(s, c_->snapshot_index))
+                              .upd();
+    snap = ForceSnapshot{};
+    if (!IsFinite(m)) {  // no force from garbage; the step will be rejected or caught
+      c_->warnings.Note(WarningKind::kNonFiniteState, s.getTime(),
+                        "non-finite pose or velocity in a force evaluation");
+      return;
     }
+    if (c_->contact) snap.contact = c_->contact->Evaluate(m);
+    Vector3d torque;
+    c_->OperatorLoad(m, c_->HeldDecision(s), snap.contact, &snap.assembly_force, &torque);
+    const Vector3d force =
+        snap.assembly_force + snap.contact.normal_force + snap.contact.friction_force;
+    torque += snap.contact.torque;
     body_forces[c_->body] += SimTK::SpatialVec(ToSimTK(torque), ToSimTK(force));
   }
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
@@ -223,6 +266,9 @@ class OperatorAndContactForce : public SimTK::Force::Custom::Implementation {
   void realizeTopology(SimTK::State& s) const override {
     c_->decision_index = c_->forces->allocateDiscreteVariable(
         s, SimTK::Stage::Dynamics, new SimTK::Value<Decision>(Decision{}));
+    c_->snapshot_index = c_->forces->allocateCacheEntry(
+        s, SimTK::Stage::Velocity, SimTK::Stage::Dynamics,
+        new SimTK::Value<ForceSnapshot>(ForceSnapshot{}));
   }
 
  private:
@@ -239,8 +285,9 @@ void Decide(TrialContext& c, SimTK::State& s) {
   c.matter->getSystem().realize(s, SimTK::Stage::Velocity);
   const contact::RigidMotion m = c.MotionOf(s);
   const Vector3d T = m.pose.translation();
-  if (std::optional<Ending> bad = CheckState(m, c.part->mass_properties.bounding_radius,
-                                             p.simulation, i, s.getTime())) {
+  if (std::optional<Ending> bad =
+          CheckState(m, c.part->mass_properties.bounding_radius, p.simulation,
+                     fmt::format("decision {}", i), s.getTime())) {
     c.End(std::move(*bad));
     return;
   }
@@ -257,16 +304,13 @@ void Decide(TrialContext& c, SimTK::State& s) {
   const human::FactorValues f = c.FactorsAt(m, centre, c.MotionDirection(centre, T, i == 0));
   c.last_centre = centre;
 
-  // Contact now, held for Eq. 8 until the next decision.
+  // Contact now: for the jam rule and the trace (the force law reads the
+  // current contact at every evaluation, not this one).
   Decision d;
   d.psi = psi;
   contact::ContactForces cf;
   if (c.contact) cf = c.contact->Evaluate(m);
-  d.contact.in_contact = cf.in_contact() && cf.normal_force.norm() > 0;
-  if (d.contact.in_contact) {
-    d.contact.normal = cf.normal_force.normalized();
-    d.contact.friction = cf.friction_force.norm();
-  }
+  const bool in_contact = cf.in_contact() && cf.normal_force.norm() > 0;
 
   // Outcomes decided at this instant (outcome.h).
   DecisionFacts facts;
@@ -276,7 +320,7 @@ void Decide(TrialContext& c, SimTK::State& s) {
   facts.work = c.work;
   facts.shoulder_distance = f.shoulder_distance;
   facts.reach_limit = c.reach_limit;
-  facts.in_contact = d.contact.in_contact;
+  facts.in_contact = in_contact;
   facts.distance = c.DistanceToTarget(m);
   c.progress.Observe(i == 0, facts.time, facts.distance, facts.in_contact,
                      p.simulation.jam_progress);
@@ -299,13 +343,15 @@ void Decide(TrialContext& c, SimTK::State& s) {
       .upd() = d;
 
   Vector3d force, torque;
-  c.OperatorLoad(m, d, &force, &torque);
+  c.OperatorLoad(m, d, cf, &force, &torque);
   c.last_force = force.norm();
+  c.max_penetration = std::max(c.max_penetration, cf.max_depth);
   if (c.record_trace) {
     TraceRow row = TrialContext::PoseRow(s.getTime(), m);
     row.assembly_force = force;
     row.contact_force = cf.normal_force;
     row.friction_force = cf.friction_force;
+    row.penetration = cf.max_depth;
     row.factors = f;
     row.work = c.work;
     row.psi = psi;
@@ -330,6 +376,7 @@ TraceRow FinalRow(TrialContext& c, SimTK::State& s) {
     const contact::ContactForces cf = c.contact->Evaluate(m);
     row.contact_force = cf.normal_force;
     row.friction_force = cf.friction_force;
+    row.penetration = cf.max_depth;
   }
   return row;
 }
@@ -399,6 +446,148 @@ std::vector<FixedPart> FixedParts(const scene::Scene& scene, int position) {
   return out;
 }
 
+// The checks made at every accepted step (DESIGN.md decision 12): the
+// state is finite, the contact depth is within the bound, the step is above
+// the floor, and the integrator's retries since the last step are counted.
+// Returns false when the state is unusable (the trial ends).
+class StepWatch {
+ public:
+  explicit StepWatch(TrialContext& c) : c_(c) {}
+
+  bool Accepted(const SimTK::Integrator& integ, const SimTK::State& s) {
+    c_.matter->getSystem().realize(s, SimTK::Stage::Dynamics);
+    const double t = s.getTime();
+    const contact::RigidMotion m = c_.MotionOf(s);
+    if (std::optional<Ending> bad = CheckState(
+            m, c_.part->mass_properties.bounding_radius, c_.scene->params.simulation,
+            fmt::format("a step after decision {}", c_.last_decision), t)) {
+      if (!IsFinite(m)) c_.warnings.Note(WarningKind::kNonFiniteState, t, bad->detail);
+      c_.End(std::move(*bad));
+      return false;
+    }
+    Depth(c_.SnapshotOf(s).contact.max_depth, t);
+    const double h = integ.getPreviousStepSizeTaken();
+    const double floor = c_.scene->params.simulation.step_floor;
+    if (h < floor)
+      c_.warnings.Note(WarningKind::kStepSizeFloor, t,
+                       fmt::format("step {:.3g} s < floor {:.3g} s", h, floor));
+    const std::int64_t retries = static_cast<std::int64_t>(integ.getNumConvergenceTestFailures()) +
+                                 integ.getNumRealizationFailures() +
+                                 integ.getNumProjectionFailures();
+    if (retries > retries_)
+      c_.warnings.Note(WarningKind::kIntegratorRetry, t,
+                       fmt::format("{} convergence, {} realization, {} projection failures",
+                                   integ.getNumConvergenceTestFailures(),
+                                   integ.getNumRealizationFailures(),
+                                   integ.getNumProjectionFailures()),
+                       retries - retries_);
+    retries_ = retries;
+    return true;
+  }
+
+  // The deepest contact so far, and a warning past the bound.
+  void Depth(double depth, double t) {
+    c_.max_penetration = std::max(c_.max_penetration, depth);
+    if (c_.penetration_bound > 0 && depth > c_.penetration_bound)
+      c_.warnings.Note(WarningKind::kPenetrationBound, t,
+                       fmt::format("depth {:.3g} um > bound {:.3g} um ({} of the {:.3g} um "
+                                   "radial clearance)",
+                                   depth * 1e6, c_.penetration_bound * 1e6,
+                                   c_.scene->params.contact.penetration_fraction,
+                                   c_.clearance * 1e6));
+  }
+
+ private:
+  TrialContext& c_;
+  std::int64_t retries_ = 0;
+};
+
+// A dense trace row at a sample instant (an interpolated state: the
+// trajectory is the same with and without samples).
+TraceRow SampleRow(TrialContext& c, const SimTK::State& s) {
+  c.matter->getSystem().realize(s, SimTK::Stage::Dynamics);
+  const ForceSnapshot& snap = c.SnapshotOf(s);
+  TraceRow row = TrialContext::PoseRow(s.getTime(), c.MotionOf(s));
+  row.assembly_force = snap.assembly_force;
+  row.contact_force = snap.contact.normal_force;
+  row.friction_force = snap.contact.friction_force;
+  row.penetration = snap.contact.max_depth;
+  row.work = c.work;
+  row.psi = c.HeldDecision(s).psi;
+  return row;
+}
+
+// Steps from the initial state to completion, an ending or the time limit,
+// returning at every accepted step (StepWatch) and, when sample_interval > 0,
+// at every multiple of it (a dense trace row from the integrator's
+// interpolant). Returns the time reached.
+//
+// The loop is SimTK::TimeStepper::stepTo's (Simbody 3.7, TimeStepper.cpp)
+// with one difference: TimeStepper passes its report time to the integrator
+// as a time it must not step past, which would cut the steps at every sample
+// and change the trajectory; here only the decision instants and the time
+// limit bound a step, and samples are interpolated inside the steps taken
+// anyway. Time-advanced events are not dispatched: the system has none.
+double Integrate(TrialContext& c, const SimTK::MultibodySystem& system,
+                 SimTK::Integrator& integ, const SimTK::State& initial,
+                 double sample_interval) {
+  using SimTK::Integrator;
+  const double limit = c.scene->params.simulation.time_limit;
+  integ.setReturnEveryInternalStep(true);
+  integ.initialize(initial);
+  c.integrated = true;
+  SimTK::HandleEventsOptions handle_options(integ.getConstraintToleranceInUse());
+  if (integ.isInfinityNormInUse())
+    handle_options.setOption(SimTK::HandleEventsOptions::UseInfinityNorm);
+  StepWatch watch(c);
+  SimTK::Array_<SimTK::EventId> scheduled;
+  double last_event_time = -SimTK::Infinity;
+  std::int64_t k = 1;  // the next sample
+  const auto handle = [&](SimTK::Event::Cause cause, const SimTK::Array_<SimTK::EventId>& ids) {
+    SimTK::HandleEventsResults results;
+    system.handleEvents(integ.updAdvancedState(), cause, ids, handle_options, results);
+    integ.reinitialize(results.getLowestModifiedStage(),
+                       results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate);
+  };
+  while (!integ.isSimulationOver() && !c.ended) {
+    const double now = integ.getTime();
+    if (now >= limit) break;
+    system.realize(integ.getState(), SimTK::Stage::Time);
+    system.realize(integ.getAdvancedState(), SimTK::Stage::Time);
+    double next_event = SimTK::Infinity;
+    system.calcTimeOfNextScheduledEvent(integ.getState(), next_event, scheduled,
+                                        last_event_time != now);
+    const double sample =
+        sample_interval > 0 ? static_cast<double>(k) * sample_interval : SimTK::Infinity;
+    const double report = std::min(sample, limit);
+    switch (integ.stepTo(report, std::min(next_event, limit))) {
+      case Integrator::TimeHasAdvanced:
+        watch.Accepted(integ, integ.getState());
+        break;
+      case Integrator::ReachedReportTime:
+        if (integ.getTime() >= sample && sample < limit) {
+          c.samples.push_back(SampleRow(c, integ.getState()));
+          watch.Depth(c.samples.back().penetration, sample);
+          ++k;
+        }
+        break;
+      case Integrator::ReachedScheduledEvent:
+        handle(SimTK::Event::Cause::Scheduled, scheduled);
+        last_event_time = integ.getTime();
+        break;
+      case Integrator::ReachedEventTrigger:
+        handle(SimTK::Event::Cause::Triggered, integ.getTriggeredEvents());
+        break;
+      case Integrator::EndOfSimulation:
+        handle(SimTK::Event::Cause::Termination, {});
+        break;
+      default:  // StartOfContinuousInterval, ReachedStepLimit: step on
+        break;
+    }
+  }
+  return integ.getTime();
+}
+
 }  // namespace
 
 TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
@@ -437,6 +626,16 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   c.posture = human::StandingPosture(scene.op);
   c.reach_limit = params.reach.BreakpointsFor(scene.op.arm_length, scene.op.height).d3;
   const std::vector<FixedPart> fixed = FixedParts(scene, options.sequence_position);
+  // Eq. 7 passes into Eq. 8 over a fraction of the part's weight under
+  // standard gravity (ISO 80000-3), whatever the scene's gravity.
+  c.blend_force = params.guidance.contact_blend * part.mass * 9.80665;
+  // The penetration bound: a fraction of the smallest radial clearance
+  // between the part at its target and a fixed part (none: no bound).
+  for (const FixedPart& f : fixed)
+    if (const auto gap = geometry::SmallestRadialClearance(
+            part.shape, part.target.Transform(), f.part->shape, f.pose))
+      if (c.clearance == 0 || *gap < c.clearance) c.clearance = *gap;
+  c.penetration_bound = params.contact.penetration_fraction * c.clearance;
   TrialCounters counters;
   if (!fixed.empty()) {  // nothing to touch: no shell, no contact work
     std::vector<contact::Obstacle> obstacles;
@@ -506,14 +705,11 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   if (c.ended) final_row = FinalRow(c, state);  // ended at the first decision
   if (!c.ended) {
     try {
-      SimTK::TimeStepper ts(system, *integ);
-      ts.initialize(state);
-      ts.stepTo(params.simulation.time_limit);
-      end_time = ts.getTime();
+      end_time = Integrate(c, system, *integ, state, options.sample_interval);
       if (c.completion_row) {
         final_row = c.completion_row;
       } else {
-        SimTK::State end_state = ts.getState();
+        SimTK::State end_state = integ->getState();
         final_row = FinalRow(c, end_state);
       }
       if (!c.ended && integ->isSimulationOver() &&
@@ -522,11 +718,13 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
         c.detail = fmt::format(
             "integrator stopped at t = {} s: {}", end_time,
             SimTK::Integrator::getTerminationReasonString(integ->getTerminationReason()));
+        c.warnings.Note(WarningKind::kIntegratorFailure, end_time, c.detail);
       }
     } catch (const std::exception& e) {
       end_time = integ->getTime();
       c.ended = Status::kNumericalFailure;
       c.detail = fmt::format("at t = {} s: {}", end_time, e.what());
+      c.warnings.Note(WarningKind::kIntegratorFailure, end_time, c.detail);
     }
   }
   result.wall_seconds =
@@ -542,10 +740,12 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   result.key = key;
   counters.decisions = c.last_decision + 1;
   counters.rays_cast = c.rays_cast;
-  counters.steps_taken = integ->getNumStepsTaken();
-  counters.steps_attempted = integ->getNumStepsAttempted();
-  counters.error_test_failures = integ->getNumErrorTestFailures();
-  counters.realizations = integ->getNumRealizations();
+  if (c.integrated) {  // an integrator never initialized has no counts to read
+    counters.steps_taken = integ->getNumStepsTaken();
+    counters.steps_attempted = integ->getNumStepsAttempted();
+    counters.error_test_failures = integ->getNumErrorTestFailures();
+    counters.realizations = integ->getNumRealizations();
+  }
   if (c.contact) {
     counters.contact_evaluations =
         static_cast<std::int64_t>(c.contact->counters().evaluations);
@@ -557,6 +757,11 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
         static_cast<std::int64_t>(c.contact->counters().clusters_skipped);
   }
   result.counters = counters;
+  result.warnings = c.warnings;
+  result.max_penetration = c.max_penetration;
+  result.penetration_bound = c.penetration_bound;
+  result.clearance = c.clearance;
+  result.samples = std::move(c.samples);
   if (!final_row) {  // the integrator threw: the last decision is the last known row
     final_row = c.trace.empty() ? TraceRow{} : c.trace.back();
     final_row->work = c.work;

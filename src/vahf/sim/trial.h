@@ -21,13 +21,19 @@ struct TrialOptions {
   int sequence_position = 0;  // which entry of scene.sequence to assemble
   double initial_work = 0.0;  // A carried over from earlier work, J
   bool record_trace = true;
+  // > 0: also record a dense trace row every sample_interval seconds of
+  // simulated time (TrialResult::samples), from the integrator's
+  // interpolant: the trajectory and the result are the same as without.
+  double sample_interval = 0.0;
 };
 
 // Runs one trial with the integrator and accuracy of scene.params.simulation.
 // Same scene, key and options: the same result bits (wall_seconds aside).
 // With visibility mode "raycast", V (Eq. 1) is cast from the operator's eye
 // at every decision, against the fixed parts; with nothing fixed no mesh is
-// built and no ray is cast. Numerical trouble is a status, never an exception.
+// built and no ray is cast. Numerical trouble is a status, never an exception,
+// and every accepted step is checked (the warnings record: non-finite state,
+// contact deeper than the penetration bound, a step under the floor, retries).
 TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
                      const TrialOptions& options = {});
 

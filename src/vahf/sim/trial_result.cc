@@ -35,6 +35,13 @@ std::string TrialResult::BriefReport() const {
       c.shell_points, c.contact_evaluations, c.contact_point_queries, c.clusters_skipped,
       c.broad_phase_skips);
   out += fmt::format("decisions: {}, rays cast: {}\n", c.decisions, c.rays_cast);
+  if (penetration_bound > 0)
+    out += fmt::format("penetration: deepest {:.3g} um, bound {:.3g} um ({:.3g} um radial clearance)\n",
+                       max_penetration * 1e6, penetration_bound * 1e6, clearance * 1e6);
+  else
+    out += fmt::format("penetration: deepest {:.3g} um (no radial fit to bound it)\n",
+                       max_penetration * 1e6);
+  out += fmt::format("warnings: {}\n", warnings.Summary());
   return out;
 }
 

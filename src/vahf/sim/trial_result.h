@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "vahf/core/warnings.h"
 #include "vahf/human/factors.h"
 #include "vahf/rng/stream.h"
 
@@ -20,7 +21,8 @@ enum class Status {
   kExhausted,         // Psi_c fell to its floor (Eq. 6)
   kUnreachable,       // the part lay beyond D3 from the operator's shoulder
   kJammed,            // in contact with no progress for jam_time
-  kNumericalFailure,  // NaN in the state or the integrator failed
+  kNumericalFailure,  // NaN in the state or the integrator failed: a failure of
+                      // the computation, never counted as a failed assembly
 };
 
 const char* StatusName(Status status);
@@ -37,6 +39,7 @@ struct TraceRow {
   human::FactorValues factors;
   double work = 0;  // A, J (Eq. 4, accumulated)
   double psi = 1;   // Psi_c (Eq. 6)
+  double penetration = 0;  // deepest contact point, m
 };
 
 struct TrialCounters {
@@ -66,6 +69,14 @@ struct TrialResult {
   double wall_seconds = 0;       // measured, never part of a digest
   double work = 0;               // A when the trial ended, J (Eq. 4, with the initial work)
   std::vector<TraceRow> trace;   // one row per decision instant (if recorded)
+  std::vector<TraceRow> samples; // one row per sample instant (TrialOptions::sample_interval)
+  // Numerical health: what went wrong at accepted steps, and how deep the
+  // contact went against the bound (penetration_fraction of the smallest
+  // radial clearance between the part at its target and a fixed part).
+  Warnings warnings;
+  double max_penetration = 0;    // m, over accepted steps, decisions and samples
+  double penetration_bound = 0;  // m; 0 when the scene has no radial fit
+  double clearance = 0;          // m; 0 when the scene has no radial fit
   // The part, its factors and A at the instant the trial ended (for a
   // completion, the completion instant: paper Table 1's instant d). Always set.
   TraceRow final_row;

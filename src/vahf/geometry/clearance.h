@@ -1,0 +1,27 @@
+// The radial clearance of a fit: the gap between a cylindrical face of one
+// solid of revolution and a facing cylindrical face of another on the same
+// axis (a rod in a bore, a sleeve on a rod), where the faces overlap along the
+// axis. The contact's penetration bound is a fraction of the smallest one
+// (DESIGN.md decision 7).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <optional>
+
+#include "vahf/geometry/shape.h"
+
+namespace vahf::geometry {
+
+// The smallest radial clearance (m, > 0) between `inner_or_outer` at pose
+// `a` and `other` at pose `b` (part frames in the world): over pairs of
+// cylindrical profile edges (constant r > 0), one facing outward and the other
+// facing it from a larger radius, that overlap along the common axis by more
+// than 1 micrometre. Nothing when the two are not coaxial (axes within 1e-9
+// rad and 1e-9 m), when either is not a solid of revolution, or when no faces
+// face each other.
+std::optional<double> SmallestRadialClearance(const Shape& a_shape,
+                                              const Eigen::Isometry3d& a,
+                                              const Shape& b_shape,
+                                              const Eigen::Isometry3d& b);
+
+}  // namespace vahf::geometry

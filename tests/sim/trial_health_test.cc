@@ -1,0 +1,88 @@
+// A trial's numerical health and its dense trace: sampling reads the
+// integrator's interpolant and changes no bit of the result; the warnings
+// record counts contact deeper than the bound (a soft contact that cannot
+// resolve the 50 um fit) and stays empty where nothing went wrong; a trial
+// that ends at its first decision reports zero integrator counters, never
+// the values of an integrator that never stepped; a clearance is found where
+// the scene has a fit and not where it has none.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "vahf/scene/scene_loader.h"
+#include "vahf/sim/trace_csv.h"
+#include "vahf/sim/trial.h"
+
+namespace vahf::sim {
+namespace {
+
+scene::Scene LoadExample(const std::string& name) {
+  return scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + name);
+}
+
+TEST(TrialHealth, SamplesDoNotChangeTheTrajectory) {
+  const scene::Scene s = LoadExample("peg_in_hole.json");
+  TrialOptions plain, sampled;
+  sampled.sample_interval = 0.5e-3;
+  const TrialResult a = RunTrial(s, {1, 0}, plain);
+  const TrialResult b = RunTrial(s, {1, 0}, sampled);
+  ASSERT_EQ(a.status, Status::kCompleted) << a.detail;
+  EXPECT_EQ(a.completion_time, b.completion_time);  // bit for bit
+  EXPECT_EQ(a.counters.steps_taken, b.counters.steps_taken);
+  ASSERT_EQ(a.trace.size(), b.trace.size());
+  for (std::size_t i = 0; i < a.trace.size(); ++i) {
+    EXPECT_EQ(a.trace[i].position, b.trace[i].position) << "decision " << i;
+    EXPECT_EQ(a.trace[i].velocity, b.trace[i].velocity) << "decision " << i;
+  }
+  EXPECT_TRUE(a.samples.empty());
+  // One row per multiple of the interval before the end, at that instant.
+  ASSERT_EQ(b.samples.size(),
+            static_cast<std::size_t>(std::floor(b.end_time / sampled.sample_interval)));
+  for (std::size_t k = 0; k < b.samples.size(); ++k)
+    EXPECT_DOUBLE_EQ(b.samples[k].time, static_cast<double>(k + 1) * sampled.sample_interval);
+  // The CSV holds both kinds of rows, in time order.
+  const std::string csv = TraceCsv(b);
+  EXPECT_EQ(csv.rfind("row,t,", 0), 0u);
+  EXPECT_NE(csv.find("\nsample,0.0005"), std::string::npos);
+  EXPECT_NE(csv.find("\ndecision,0.1"), std::string::npos);
+  EXPECT_LT(csv.find("\nsample,0.0995"), csv.find("\ndecision,0.1"));
+  EXPECT_LT(csv.find("\ndecision,0.1"), csv.find("\nsample,0.1005"));
+}
+
+TEST(TrialHealth, TooSoftAContactIsAPenetrationWarning) {
+  scene::Scene s = LoadExample("peg_in_hole.json");
+  s.params.contact.stiffness = 1e7;  // Pa/m: a thousand times too soft for the fit
+  const TrialResult r = RunTrial(s, {1, 0}, {0, 0.0, false});
+  EXPECT_NEAR(r.clearance, 50e-6, 1e-12);
+  EXPECT_NEAR(r.penetration_bound, 5e-6, 1e-12);  // 0.1 of the clearance
+  EXPECT_GT(r.max_penetration, r.penetration_bound);
+  const WarningEntry& w = r.warnings.at(WarningKind::kPenetrationBound);
+  EXPECT_GT(w.count, 0);
+  EXPECT_GT(w.first_time, 0.0);
+  EXPECT_NE(w.detail.find("radial clearance"), std::string::npos) << w.detail;
+  EXPECT_NE(r.BriefReport().find("penetration_bound"), std::string::npos);
+}
+
+TEST(TrialHealth, AFreeMoveHasNoWarningAndNoBound) {
+  const TrialResult r = RunTrial(LoadExample("free_move.json"), {1, 0});
+  EXPECT_EQ(r.status, Status::kCompleted) << r.detail;
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.Summary();
+  EXPECT_EQ(r.penetration_bound, 0.0);  // nothing fixed: no fit to bound
+  EXPECT_EQ(r.max_penetration, 0.0);
+}
+
+TEST(TrialHealth, AnEndingAtTheFirstDecisionReadsNoIntegratorCounters) {
+  scene::Scene s = LoadExample("free_move.json");
+  s.op.position = {0.0, -3.0};  // out of reach at the first decision
+  const TrialResult r = RunTrial(s, {1, 0});
+  ASSERT_EQ(r.status, Status::kUnreachable);
+  EXPECT_EQ(r.counters.steps_taken, 0);
+  EXPECT_EQ(r.counters.steps_attempted, 0);
+  EXPECT_EQ(r.counters.error_test_failures, 0);
+  EXPECT_EQ(r.counters.realizations, 0);
+  EXPECT_EQ(r.counters.decisions, 1);
+}
+
+}  // namespace
+}  // namespace vahf::sim
