@@ -442,7 +442,7 @@ TEST(Trial, RayGridAndMeshToleranceOutOfRangeNameTheSceneParameter) {
 }
 
 TEST(Trial, NothingThatCanHideThePartCastsNoRay) {
-  // Free space: no fixed part, so no mesh and no ray (DESIGN.md decision 10).
+  // Free space: no fixed part, so no mesh and no ray (docs/design.md decision 10).
   scene::Scene s = LoadExample("free_move.json");
   s.params.visibility.mode = "raycast";
   const TrialResult r = RunTrial(s, {1, 0});

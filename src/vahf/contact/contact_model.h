@@ -1,5 +1,5 @@
 // Penalty contact between one moving part and the static parts of a scene
-// (DESIGN.md decision 7): the moving part's point shell against each static
+// (docs/design.md decision 7): the moving part's point shell against each static
 // part's exact signed distance, a normal pressure law that is C1 at contact
 // onset with Hunt-Crossley dissipation, and regularised Coulomb friction.
 //

@@ -1,5 +1,5 @@
 // Parameters of the penalty contact between the moving part and the static
-// parts (DESIGN.md decision 7). The force law itself lands with the physics.
+// parts (docs/design.md decision 7). The force law itself lands with the physics.
 #pragma once
 
 namespace vahf::contact {

@@ -2,7 +2,7 @@
 // patches, each with its patch area and outward normal, so that summing
 // pressure * area over the shell integrates a pressure over the surface. The
 // total area, and so the total contact stiffness of a face, does not depend on
-// the spacing (DESIGN.md decision 7).
+// the spacing (docs/design.md decision 7).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,4 +1,4 @@
-// Exact signed distance from a point to a static part (DESIGN.md decision 7):
+// Exact signed distance from a point to a static part (docs/design.md decision 7):
 // negative inside, with the outward unit normal at the nearest surface point.
 //
 // For a solid of revolution the nearest surface point of a point P lies in P's

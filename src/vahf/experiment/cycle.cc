@@ -26,6 +26,8 @@ CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_
     out.time += run.trial.end_time;
     out.work = run.trial.work;
     const bool done = run.trial.status == sim::Status::kCompleted;
+    out.warnings.Add(run.trial.warnings);
+    out.numerical_failure = run.trial.status == sim::Status::kNumericalFailure;
     out.parts.push_back(std::move(run));
     if (!done) return out;
   }

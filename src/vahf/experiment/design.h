@@ -1,4 +1,4 @@
-// The paper's experiments as designs over cycles (DESIGN.md, "Experiments"):
+// The paper's experiments as designs over cycles (docs/design.md, "Experiments"):
 // each runs `trials` cycles (cycle.h) under each of its conditions on the
 // runner's thread pool. Cycle j of every condition uses the same streams
 // (common random numbers), so conditions differ by what defines them only.

@@ -2,7 +2,7 @@
 // solid of revolution and a facing cylindrical face of another on the same
 // axis (a rod in a bore, a sleeve on a rod), where the faces overlap along the
 // axis. The contact's penetration bound is a fraction of the smallest one
-// (DESIGN.md decision 7).
+// (docs/design.md decision 7).
 #pragma once
 
 #include <Eigen/Geometry>

@@ -17,7 +17,7 @@ struct GuidanceParams {
   // part left to gravity and contact, as in drop and slide tests).
   std::string mode = "operator";
   // Damping of F = kappa Psi (T' - T) - b v as a ratio of critical damping,
-  // b = 2 zeta sqrt(kappa Psi m) (DESIGN.md decision 2: an extension, without
+  // b = 2 zeta sqrt(kappa Psi m) (docs/design.md decision 2: an extension, without
   // which the part oscillates about T'). 1: a reach without overshoot.
   double damping_ratio = 1.0;
   // Fraction of the part's weight the operator carries while it moves freely:
@@ -35,7 +35,7 @@ struct GuidanceParams {
   // The assembly torque turns the part toward its held target orientation as
   // a rotational impedance scaled by the part's inertia I:
   // tau = I (Psi w^2 theta - 2 zeta w omega), theta the rotation vector to the
-  // held orientation (DESIGN.md decision 3). w in rad/s.
+  // held orientation (docs/design.md decision 3). w in rad/s.
   double torque_frequency = 20.0;
   double torque_damping_ratio = 1.0;
   // Scale of the random error of the held orientation at eta = 1, degrees per
@@ -48,7 +48,7 @@ struct GuidanceParams {
   // for the integrator while contact forces in an insertion reach several
   // weights within micrometres.
   double contact_blend = 0.1;
-  // Scales of the vision error E_i, metres at eta = 1 (DESIGN.md decision 4):
+  // Scales of the vision error E_i, metres at eta = 1 (docs/design.md decision 4):
   // along the line of sight (depth is hardest to judge) and across it.
   double vision_sigma_depth = 0.010;
   double vision_sigma_lateral = 0.003;
@@ -106,7 +106,7 @@ struct FeltContact {
 // of contact, 1 once the contact pushes with at least blend_force.
 double ContactBlend(double normal_force, double blend_force);
 
-// The force the operator applies between two decisions (DESIGN.md decision 2):
+// The force the operator applies between two decisions (docs/design.md decision 2):
 // an impedance toward the held estimate T', continuous in the state. With
 // w = ContactBlend(|F_n|), n = F_n / |F_n| and P_w = I - w n n^T,
 //   F = kappa Psi P_w (T' - T) + (1 - w) s W_up

@@ -1,4 +1,4 @@
-// The assembly torque (DESIGN.md decision 3): the operator turns the part
+// The assembly torque (docs/design.md decision 3): the operator turns the part
 // toward a held target orientation, drawn at each decision as the target
 // orientation perturbed by a random rotation scaled by eta (like E_i of Eq. 5).
 #pragma once

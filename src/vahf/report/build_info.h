@@ -1,6 +1,6 @@
 // What built this program, for the manifest: a reviewer re-running a seeded
 // experiment sees whether version, compiler or floating-point flags differ
-// (DESIGN.md decision 9). Captured when CMake configures the build
+// (docs/design.md decision 9). Captured when CMake configures the build
 // (cmake/VahfBuildInfo.cmake).
 #pragma once
 

@@ -21,7 +21,12 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
   const std::size_t ns = d.conditions.size();
   std::vector<std::vector<double>> times(ns);
   std::vector<stats::Count> counts(ns);
+  std::vector<std::int64_t> numerical(ns, 0);
   for (const experiment::CycleRecord& r : d.records) {
+    if (r.result.numerical_failure) {  // a failure of the computation, not of the assembly
+      ++numerical[r.condition];
+      continue;
+    }
     ++counts[r.condition].trials;
     if (!r.result.completed) continue;
     ++counts[r.condition].successes;
@@ -29,7 +34,8 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
   }
   const double a_max = scene.params.fatigue.a_max;
   Table segments({"segment", "minute_start", "minute_end", "work_start_J", "work_end_J",
-                  "psi_start", "psi_end", "cycles", "completed", "success_rate",
+                  "psi_start", "psi_end", "cycles", "completed", "numerical_failures",
+                  "success_rate",
                   "wilson_lower", "wilson_upper", "mean_time_s", "ci_lower_s",
                   "ci_upper_s"});
   std::string md = fmt::format(
@@ -37,7 +43,9 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
       "Work rate from {} pilot cycles at A = 0: {:.4g} J per second of assembly. Each "
       "segment's cycles start with the work back-to-back cycles would have done by their "
       "minute; Psi_c = (A_max - A) / A_max with A_max = {:.4g} J (Eq. 6). Success rate with "
-      "its 95 % Wilson interval; mean time of completed cycles with its 95 % t interval.\n\n"
+      "its 95 % Wilson interval, over the cycles that ended without a numerical failure "
+      "(those say nothing about the assembly: see Numerical health); mean time of "
+      "completed cycles with its 95 % t interval.\n\n"
       "| segment | A at start (J) | Psi_c at start | Psi_c at end | success rate | mean time "
       "(s) |\n| --- | --- | --- | --- | --- | --- |\n",
       run.pilot.records.size(), run.work_rate, a_max);
@@ -52,7 +60,8 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
     const double psi0 = human::FatigueCoefficient(c.work_start, a_max);
     const double psi1 = human::FatigueCoefficient(c.work_end, a_max);
     segments.AddRow({c.name, c.minute_start, c.minute_end, c.work_start, c.work_end, psi0,
-                     psi1, counts[s].trials, counts[s].successes, rate, w.lower, w.upper,
+                     psi1, counts[s].trials, counts[s].successes, numerical[s], rate, w.lower,
+                     w.upper,
                      t.mean.value_or(NAN), t.ci ? t.ci->lower : NAN,
                      t.ci ? t.ci->upper : NAN});
     md += fmt::format("| {} | {:.4g} | {:.5f} | {:.5f} | {}/{} = {:.2f} [{:.2f}, {:.2f}] | "

@@ -1,4 +1,4 @@
-// A run's output directory, written whole or not at all (DESIGN.md, "Outputs";
+// A run's output directory, written whole or not at all (docs/design.md, "Outputs";
 // docs/outputs.md). Every file is staged in a sibling directory PATH.partial;
 // Commit() swaps it in for PATH with renames, so PATH holds either the previous
 // complete output or the new complete output, never a mixture or a part.

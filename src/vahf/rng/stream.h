@@ -5,7 +5,7 @@
 // {experiment seed, trial index} and its counter is {decision index, purpose,
 // block}. A draw therefore depends only on where it is asked for, never on how
 // many other draws were made before, by which thread, or in which order: the
-// basis of vahf's bit-for-bit reproducibility (DESIGN.md, decision 9). There is
+// basis of vahf's bit-for-bit reproducibility (docs/design.md, decision 9). There is
 // no global random state anywhere in vahf.
 #pragma once
 

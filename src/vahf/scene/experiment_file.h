@@ -13,7 +13,7 @@ namespace vahf::scene {
 
 inline constexpr const char* kExperimentFormat = "vahf-experiment/1";
 
-// The experiment kinds of DESIGN.md, "Experiments".
+// The experiment kinds of docs/design.md, "Experiments".
 const std::vector<std::string>& ExperimentKinds();
 
 // An operator of an assembly_time experiment: the scene's operator with this

@@ -13,7 +13,7 @@
 
 namespace vahf::scene {
 
-// The operator's control loop and how a trial ends (DESIGN.md decisions 1, 8).
+// The operator's control loop and how a trial ends (docs/design.md decisions 1, 8).
 struct SimulationParams {
   // Interval between the operator's decisions, s: human factors and the Eq. 5
   // draws are evaluated at t_i = i * decision_interval and held in between.

@@ -1,5 +1,5 @@
 // The checks that end a trial at a decision instant other than completion
-// (DESIGN.md decision 10): an unusable state (non-finite, or diverging), the
+// (docs/design.md decision 10): an unusable state (non-finite, or diverging), the
 // operator exhausted (Eq. 6 at its floor), the part out of reach (beyond D3)
 // and a jam (in contact without progress). Pure functions of what the decision
 // measured, so each rule is tested without a simulation.

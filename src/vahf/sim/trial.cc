@@ -51,7 +51,7 @@ SimTK::Rotation ToSimTK(const Matrix3d& m) {
 }
 
 // What the operator decided at the last decision instant, held until the next
-// (DESIGN.md decision 1). A Simbody discrete variable, so that changing it
+// (docs/design.md decision 1). A Simbody discrete variable, so that changing it
 // invalidates the state's dynamics and restarts the integrator cleanly.
 // The contact it met is not held: the force law reads the current contact
 // (guidance::ImpedanceForce), so the force is continuous in the state.
@@ -103,7 +103,7 @@ struct TrialContext {
 
   // The contact normal force over which Eq. 7 passes into Eq. 8, N.
   double blend_force = 1.0;
-  // Numerical health (DESIGN.md decision 12).
+  // Numerical health (docs/design.md decision 12).
   Warnings warnings;
   double penetration_bound = 0;  // m; 0: the scene has no radial fit to bound
   double clearance = 0;          // the smallest radial clearance, m (0: none)
@@ -446,7 +446,7 @@ std::vector<FixedPart> FixedParts(const scene::Scene& scene, int position) {
   return out;
 }
 
-// The checks made at every accepted step (DESIGN.md decision 12): the
+// The checks made at every accepted step (docs/design.md decision 12): the
 // state is finite, the contact depth is within the bound, the step is above
 // the floor, and the integrator's retries since the last step are counted.
 // Returns false when the state is unusable (the trial ends).

@@ -1,6 +1,6 @@
 // One trial: the assembling part at one position of the scene's sequence,
 // moved by gravity, contact and the simulated operator until it reaches its
-// target or fails (paper Sec. 3.1, Fig. 2; DESIGN.md decisions 1-3, 6-10).
+// target or fails (paper Sec. 3.1, Fig. 2; docs/design.md decisions 1-3, 6-10).
 //
 // The Simbody system holds only what the scene needs: the assembling part on
 // a free mobilizer; gravity; one force element for the operator's force and

@@ -1,5 +1,5 @@
 // Success rates: the Wilson score interval for a proportion and Fisher's exact
-// test for "the success rate fell" (DESIGN.md decision 8: the assembly success
+// test for "the success rate fell" (docs/design.md decision 8: the assembly success
 // rate counts completed trials over attempted ones), on GSL.
 #pragma once
 

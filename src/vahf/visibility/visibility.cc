@@ -20,7 +20,7 @@ namespace {
 // Embree picks its kernels by the CPU it runs on (SSE2 ... AVX-512, with or
 // without FMA), so a hit decision near an edge could differ between machines.
 // Pinned to the baseline SSE2 kernels, like the rest of vahf is built for
-// baseline x86-64 (DESIGN.md decision 9): the same instructions everywhere.
+// baseline x86-64 (docs/design.md decision 9): the same instructions everywhere.
 // One thread: BVH builds and queries run in the caller's thread.
 #if defined(__x86_64__) || defined(_M_X64)
 constexpr const char* kDeviceConfig = "threads=1,isa=sse2";

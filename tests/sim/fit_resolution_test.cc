@@ -1,0 +1,94 @@
+// Does the contact resolve the fit? An independent geometric check
+// (tests/support/penetration_oracle.h: the true surfaces from the profiles,
+// none of the contact model's code) of trial trajectories sampled every
+// 0.5 ms (TrialOptions::sample_interval): the assembling part against every
+// fixed part must stay within 10 % of the scene's smallest radial clearance
+// (docs/design.md decision 7). The oracle itself is first checked against closed
+// forms: a cylinder offset sideways in a bore (depth e - c) and a tilted
+// cylinder dipping its rim into a slab (depth R sin(theta) - h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "support/penetration_oracle.h"
+#include "vahf/scene/scene_loader.h"
+#include "vahf/sim/trial.h"
+
+namespace vahf::sim {
+namespace {
+
+using testing::Penetration;
+using testing::RevolvedSolid;
+
+geometry::RevolvedProfile Profile(std::vector<geometry::ProfilePoint> p) {
+  p.push_back(p.front());
+  return geometry::MakeRevolvedProfile(p);
+}
+
+Eigen::Isometry3d At(const Eigen::Vector3d& x, double tilt_x_rad = 0) {
+  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+  p.linear() = Eigen::AngleAxisd(tilt_x_rad, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  p.translation() = x;
+  return p;
+}
+
+TEST(PenetrationOracle, CylinderOffsetInABoreIsEMinusC) {
+  const double R = 0.01, c = 50e-6;
+  const RevolvedSolid peg(Profile({{0, 0}, {R, 0}, {R, 0.05}, {0, 0.05}}));
+  const RevolvedSolid bore(Profile({{0, -0.05}, {0.03, -0.05}, {0.03, 0.0}, {R + c, 0.0},
+                                    {R + c, -0.04}, {0, -0.04}}));
+  const Eigen::Isometry3d bore_pose = At({0, 0, 0});
+  for (double e : {20e-6, 60e-6, 150e-6}) {
+    const double d = Penetration(peg, At({e, 0, -0.03}), bore, bore_pose);
+    EXPECT_NEAR(d, std::max(0.0, e - c), 1e-9) << "offset " << e;
+  }
+}
+
+TEST(PenetrationOracle, TiltedRimIntoASlabIsRSinThetaMinusH) {
+  const double R = 0.01, h = 20e-6, theta = 0.5 * M_PI / 180;
+  const RevolvedSolid peg(Profile({{0, 0}, {R, 0}, {R, 0.05}, {0, 0.05}}));
+  const RevolvedSolid slab(Profile({{0, -0.1}, {0.2, -0.1}, {0.2, 0.0}, {0, 0.0}}));
+  const double d = Penetration(peg, At({0, 0, h}, theta), slab, At({0, 0, 0}));
+  EXPECT_NEAR(d, R * std::sin(theta) - h, 1e-9);
+}
+
+// The deepest the assembling part gets into any fixed part over a sampled
+// trial, by the oracle.
+double DeepestOverTrial(const scene::Scene& s, const TrialResult& r) {
+  const scene::Part& moving = s.parts[static_cast<std::size_t>(s.sequence[0])];
+  const RevolvedSolid m(std::get<geometry::RevolvedProfile>(moving.shape));
+  double deepest = 0;
+  for (const scene::Part& p : s.parts) {
+    if (p.role != scene::Role::kBase) continue;
+    const RevolvedSolid fixed(std::get<geometry::RevolvedProfile>(p.shape));
+    for (const TraceRow& row : r.samples) {
+      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+      pose.linear() = row.orientation.toRotationMatrix();
+      pose.translation() = row.position;
+      deepest = std::max(deepest, Penetration(m, pose, fixed, p.initial.Transform()));
+    }
+  }
+  return deepest;
+}
+
+TEST(FitResolution, PegStaysWithinTenPercentOfItsClearance) {
+  const scene::Scene s =
+      scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/peg_in_hole.json");
+  TrialOptions options;
+  options.record_trace = false;
+  options.sample_interval = 0.5e-3;
+  const TrialResult r = RunTrial(s, {1, 0}, options);
+  ASSERT_EQ(r.status, Status::kCompleted) << r.detail;
+  ASSERT_GT(r.samples.size(), 100u);
+  const double deepest = DeepestOverTrial(s, r);
+  std::printf("peg seed 1: deepest %.3g um by the oracle, %.3g um by the contact model, "
+              "bound %.3g um\n",
+              deepest * 1e6, r.max_penetration * 1e6, r.penetration_bound * 1e6);
+  EXPECT_NEAR(r.clearance, 50e-6, 1e-12);
+  EXPECT_LT(deepest, 0.1 * r.clearance);
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.Summary();
+}
+
+}  // namespace
+}  // namespace vahf::sim
