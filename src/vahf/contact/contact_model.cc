@@ -14,16 +14,37 @@ double PairFriction(double a, double b) { return a + b > 0 ? 2 * a * b / (a + b)
 
 }  // namespace
 
-ContactModel::ContactModel(std::vector<ShellPoint> shell, double shell_bounding_radius,
-                           double moving_friction, std::vector<Obstacle> obstacles,
-                           const ContactParams& params)
+ContactModel::ContactModel(std::vector<ShellPoint> shell, SignedDistance moving_field,
+                           double moving_bounding_radius, double moving_friction,
+                           std::vector<Obstacle> obstacles, const ContactParams& params)
     : shell_(std::move(shell)),
-      shell_radius_(shell_bounding_radius),
+      moving_field_(std::move(moving_field)),
+      shell_radius_(moving_bounding_radius),
       moving_friction_(moving_friction),
       obstacles_(std::move(obstacles)),
       params_(params) {
   VAHF_CHECK(shell_.size() < (std::size_t{1} << 31), "point shell too large");
   if (!shell_.empty()) BuildTree(0, shell_.size());
+  rim_sets_.reserve(obstacles_.size());
+  for (const Obstacle& o : obstacles_) rim_sets_.push_back(BuildRimSet(o.rim));
+}
+
+ContactModel::RimSet ContactModel::BuildRimSet(const std::vector<RimPoint>& rim) {
+  VAHF_CHECK(rim.size() < (std::size_t{1} << 31), "rim too large");
+  RimSet set;
+  if (rim.empty()) return set;
+  const auto position = [](const RimPoint& q) { return q.position; };
+  const geometry::BoundingSphere all = geometry::BoundPoints(rim.begin(), rim.end(), position);
+  set.centre = all.centre;
+  set.radius = all.radius;
+  for (std::size_t begin = 0; begin < rim.size(); begin += kRimBlockSize) {
+    const std::size_t end = std::min(rim.size(), begin + kRimBlockSize);
+    const geometry::BoundingSphere b =
+        geometry::BoundPoints(rim.begin() + begin, rim.begin() + end, position);
+    set.blocks.push_back({b.centre, b.radius, static_cast<std::uint32_t>(begin),
+                          static_cast<std::uint32_t>(end)});
+  }
+  return set;
 }
 
 void ContactModel::BuildTree(std::size_t begin, std::size_t end) {
@@ -49,18 +70,38 @@ void ContactModel::BuildTree(std::size_t begin, std::size_t end) {
   nodes_[index].escape = static_cast<std::uint32_t>(nodes_.size());
 }
 
-double ContactModel::Pressure(const ContactParams& p, double depth, double depth_rate) {
+double ContactModel::Law(double k, double x0, double c, double depth, double depth_rate) {
   if (!(depth > 0)) return 0.0;
-  const double elastic = depth < p.onset_depth
-                             ? p.stiffness * depth * depth / (2 * p.onset_depth)
-                             : p.stiffness * (depth - 0.5 * p.onset_depth);
-  return elastic * std::max(0.0, 1.0 + p.dissipation * depth_rate);
+  const double elastic = depth < x0 ? k * depth * depth / (2 * x0) : k * (depth - 0.5 * x0);
+  return elastic * std::max(0.0, 1.0 + c * depth_rate);
+}
+
+double ContactModel::Pressure(const ContactParams& p, double depth, double depth_rate) {
+  return Law(p.stiffness, p.onset_depth, p.dissipation, depth, depth_rate);
+}
+
+double ContactModel::LineLoad(const ContactParams& p, double depth, double depth_rate) {
+  return Law(p.line_stiffness, p.onset_depth, p.dissipation, depth, depth_rate);
+}
+
+bool ContactModel::AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
+                              const Eigen::Vector3d& u, double fn, double mu,
+                              ContactForces* out) const {
+  if (!(fn > 0)) return false;
+  const Eigen::Vector3d v_t = v - v.dot(u) * u;
+  const double slip = v_t.norm();
+  const Eigen::Vector3d ft = -mu * fn / std::max(slip, params_.friction_transition_speed) * v_t;
+  out->normal_force += fn * u;
+  out->friction_force += ft;
+  out->torque += r.cross(fn * u + ft);
+  return true;
 }
 
 ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
   ++counters_.evaluations;
   ContactForces out;
-  for (const Obstacle& o : obstacles_) {
+  for (std::size_t index = 0; index < obstacles_.size(); ++index) {
+    const Obstacle& o = obstacles_[index];
     // Broad phase: bounding spheres about the two frame origins.
     const double reach = o.bounding_radius + shell_radius_;
     if ((m.pose.translation() - o.pose.translation()).squaredNorm() > reach * reach) {
@@ -99,21 +140,58 @@ ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
         const Eigen::Vector3d r = m.pose.linear() * s.position;  // origin to point, world
         const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);
         const double depth_rate = -v.dot(n);
-        const double fn = Pressure(params_, depth, depth_rate) * s.area;
-        if (!(fn > 0)) continue;
-        const Eigen::Vector3d v_t = v - v.dot(n) * n;
-        const double slip = v_t.norm();
-        const Eigen::Vector3d ft =
-            -mu * fn / std::max(slip, params_.friction_transition_speed) * v_t;
-        out.normal_force += fn * n;
-        out.friction_force += ft;
-        out.torque += r.cross(fn * n + ft);
+        if (!AddContact(r, v, n, Pressure(params_, depth, depth_rate) * s.area, mu, &out))
+          continue;
         ++out.points_in_contact;
         out.max_depth = std::max(out.max_depth, depth);
       }
     }
+    EvaluateRims(index, m, mu, &out);
   }
   return out;
+}
+
+void ContactModel::EvaluateRims(std::size_t index, const RigidMotion& m, double mu,
+                                ContactForces* out) const {
+  const Obstacle& o = obstacles_[index];
+  const RimSet& set = rim_sets_[index];
+  if (set.blocks.empty()) return;
+  // Rim points go to the moving frame with one transform.
+  const Eigen::Isometry3d obstacle_in_moving = m.pose.inverse() * o.pose;
+  if ((obstacle_in_moving * set.centre).norm() > set.radius + shell_radius_) {
+    ++counters_.rims_skipped;
+    return;
+  }
+  const Eigen::Matrix3d& r_world_moving = m.pose.linear();
+  for (const RimBlock& block : set.blocks) {
+    const Eigen::Vector3d c_m = obstacle_in_moving * block.centre;
+    const bool clear =
+        ((c_m.array() + block.radius) <= moving_field_.lower().array()).any() ||
+        ((c_m.array() - block.radius) >= moving_field_.upper().array()).any() ||
+        moving_field_.At(c_m).distance > block.radius;
+    if (clear) {
+      ++counters_.rim_blocks_skipped;
+      continue;
+    }
+    for (std::size_t k = block.begin; k < block.end; ++k) {
+      const RimPoint& q = o.rim[k];
+      ++counters_.rim_queries;
+      const Eigen::Vector3d p_m = obstacle_in_moving * q.position;
+      const std::optional<Distance> d = moving_field_.Penetration(p_m);
+      if (!d) continue;
+      const double depth = -d->distance;
+      if (!(depth > 0)) continue;
+      // The rim pushes the moving part inwards, against its outward normal.
+      const Eigen::Vector3d u = -(r_world_moving * d->normal);
+      const Eigen::Vector3d r = r_world_moving * p_m;  // origin to point, world
+      const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);  // its material
+      const double depth_rate = -v.dot(u);
+      if (!AddContact(r, v, u, LineLoad(params_, depth, depth_rate) * q.length, mu, out))
+        continue;
+      ++out->rim_points_in_contact;
+      out->max_depth = std::max(out->max_depth, depth);
+    }
+  }
 }
 
 }  // namespace vahf::contact

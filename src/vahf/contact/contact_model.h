@@ -1,13 +1,20 @@
 // Penalty contact between one moving part and the static parts of a scene
 // (docs/design.md decision 7): the moving part's point shell against each static
-// part's exact signed distance, a normal pressure law that is C1 at contact
-// onset with Hunt-Crossley dissipation, and regularised Coulomb friction.
+// part's exact signed distance, and each static part's convex edges (rims,
+// rim.h) against the moving part's exact signed distance; a normal law that is
+// C1 at contact onset with Hunt-Crossley dissipation, and regularised Coulomb
+// friction.
 //
 // Normal pressure at penetration depth x (m), rate xdot (m/s):
 //   p(x) = k x^2 / (2 x0)          for x < x0   (C1 onset: p(0) = p'(0) = 0)
 //   p(x) = k (x - x0 / 2)          for x >= x0  (linear, slope k)
 //   p    *= max(0, 1 + c xdot)                  (Hunt and Crossley, 1975)
-// Friction on each point opposes its slip velocity v_t:
+// A rim point x deep inside the moving part carries the same law per metre of
+// edge with line_stiffness for k (N/m per m), times the length it stands for,
+// and pushes the moving part along minus its outward normal there; xdot is
+// then the moving material's velocity there along that normal.
+// Friction on each point (shell or rim) opposes the moving material's slip
+// velocity v_t there:
 //   f = -mu |f_n| v_t / max(|v_t|, v_s)        (Coulomb above v_s, linear below)
 // with the pair coefficient mu = 2 mu1 mu2 / (mu1 + mu2), the combination
 // Simbody's contact forces use (SimTK ContactMaterial, HuntCrossleyForce).
@@ -20,16 +27,19 @@
 
 #include "vahf/contact/contact_params.h"
 #include "vahf/contact/point_shell.h"
+#include "vahf/contact/rim.h"
 #include "vahf/contact/signed_distance.h"
 
 namespace vahf::contact {
 
-// A static part: its shape's signed distance and where it stands.
+// A static part: its shape's signed distance, where it stands, and its convex
+// edges (MakeRims; empty: its edges are seen only by the moving shell).
 struct Obstacle {
   SignedDistance field;
-  Eigen::Isometry3d pose;  // part frame in the world
-  double friction;         // its Coulomb coefficient
-  double bounding_radius;  // about its frame origin, m
+  Eigen::Isometry3d pose;     // part frame in the world
+  double friction;            // its Coulomb coefficient
+  double bounding_radius;     // about its frame origin, m
+  std::vector<RimPoint> rim;  // in the part frame
 };
 
 // The moving part's motion: its frame in the world, and the velocity of its
@@ -44,9 +54,10 @@ struct ContactForces {
   Eigen::Vector3d normal_force = Eigen::Vector3d::Zero();    // N, world
   Eigen::Vector3d friction_force = Eigen::Vector3d::Zero();  // N, world
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // N m about the moving origin, world
-  int points_in_contact = 0;
-  double max_depth = 0.0;  // m
-  bool in_contact() const { return points_in_contact > 0; }
+  int points_in_contact = 0;      // shell points
+  int rim_points_in_contact = 0;  // static rim points inside the moving part
+  double max_depth = 0.0;         // m, the deepest shell or rim point
+  bool in_contact() const { return points_in_contact + rim_points_in_contact > 0; }
 };
 
 // Work counters: what the broad phase saved and what the narrow phase did.
@@ -55,13 +66,19 @@ struct ContactCounters {
   std::uint64_t pairs_skipped = 0;     // obstacle pairs rejected by bounding spheres
   std::uint64_t point_queries = 0;     // shell points tested against an obstacle
   std::uint64_t clusters_skipped = 0;  // shell tree nodes proven clear of an obstacle
+  std::uint64_t rims_skipped = 0;      // obstacles' rims wholly clear of the moving sphere
+  std::uint64_t rim_queries = 0;       // rim points tested against the moving part
+  std::uint64_t rim_blocks_skipped = 0;  // runs of rim points proven clear of it
 };
 
 class ContactModel {
  public:
-  ContactModel(std::vector<ShellPoint> shell, double shell_bounding_radius,
-               double moving_friction, std::vector<Obstacle> obstacles,
-               const ContactParams& params);
+  // The moving part: its point shell and its exact signed distance, both in
+  // its own frame (the frame RigidMotion places), the radius of a sphere about
+  // that frame's origin holding it, and its Coulomb coefficient.
+  ContactModel(std::vector<ShellPoint> shell, SignedDistance moving_field,
+               double moving_bounding_radius, double moving_friction,
+               std::vector<Obstacle> obstacles, const ContactParams& params);
 
   ContactForces Evaluate(const RigidMotion& motion) const;
 
@@ -71,6 +88,10 @@ class ContactModel {
 
   // The normal pressure law alone (for tests), Pa.
   static double Pressure(const ContactParams& params, double depth, double depth_rate);
+  // The rim's line law alone (for tests), N/m: Pressure with line_stiffness.
+  static double LineLoad(const ContactParams& params, double depth, double depth_rate);
+  // Rim points per culling block (see RimBlock).
+  static constexpr std::size_t kRimBlockSize = 32;
 
  private:
   // A bounding-sphere tree over the shell points (part frame), built once by
@@ -89,11 +110,43 @@ class ContactModel {
   static constexpr std::size_t kLeafSize = 32;
   void BuildTree(std::size_t begin, std::size_t end);
 
+  // An obstacle's rim points are culled in runs of kRimBlockSize consecutive
+  // samples (in MakeRims order), each with a bounding sphere in the obstacle
+  // frame, skipped whole when the moving part's signed distance at its centre
+  // exceeds its radius (1-Lipschitz again); all of them are skipped when the
+  // sphere about the whole rim misses the moving part's bounding sphere. The
+  // points are visited in order either way.
+  struct RimBlock {
+    Eigen::Vector3d centre;
+    double radius;
+    std::uint32_t begin, end;  // rim points covered
+  };
+  struct RimSet {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // about the whole rim
+    double radius = 0;
+    std::vector<RimBlock> blocks;
+  };
+  static RimSet BuildRimSet(const std::vector<RimPoint>& rim);
+
+  // The law shared by faces and rims: stiffness k, onset x0, dissipation c.
+  static double Law(double k, double x0, double c, double depth, double depth_rate);
+  // Adds a normal force fn pushing the moving part along the world unit vector
+  // u at r (world, from its origin), and the friction against the moving
+  // material's velocity v there; false (nothing added) when fn is not positive.
+  bool AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
+                  const Eigen::Vector3d& u, double fn, double mu,
+                  ContactForces* out) const;
+  // The obstacle's rim points against the moving part, after its shell points.
+  void EvaluateRims(std::size_t index, const RigidMotion& motion, double mu,
+                    ContactForces* out) const;
+
   std::vector<ShellPoint> shell_;
   std::vector<Node> nodes_;
+  SignedDistance moving_field_;
   double shell_radius_;
   double moving_friction_;
   std::vector<Obstacle> obstacles_;
+  std::vector<RimSet> rim_sets_;  // one per obstacle
   ContactParams params_;
   mutable ContactCounters counters_;
 };

@@ -20,6 +20,19 @@ struct ContactParams {
   double friction_transition_speed = 1e-3;
   // Spacing of the point shell on the moving part's surface, m.
   double shell_spacing = 1e-3;
+  // Line load per metre of penetration per metre of a static part's convex
+  // edge (rim.h), N/m per m = Pa. The default is the face law's stiffness over
+  // a strip one shell spacing wide, 1e10 Pa/m * 1e-3 m: an edge pressed into
+  // the moving part is about as stiff as the 1 mm patches of shell along it
+  // would be if they saw it. Like the face law it is a numerical penalty, far
+  // softer than steel: the load per unit length per unit approach of an elastic
+  // line contact is of the order of the contact modulus, up to a logarithm of
+  // the contact width (K. L. Johnson, Contact Mechanics, Cambridge University
+  // Press 1985, two-dimensional contact of cylinders), and steel on steel has
+  // E* = E / (2 (1 - nu^2)) = 1.15e11 Pa for E = 210 GPa, nu = 0.3.
+  double line_stiffness = 1e7;
+  // Spacing of the samples along the static parts' convex edges, m.
+  double rim_spacing = 0.5e-3;
   // The penetration bound as a fraction of the scene's smallest radial
   // clearance: a contact deeper than this at an accepted step is a warning
   // (penetration_bound). 0.1: a penalty contact that resolves a fit must keep

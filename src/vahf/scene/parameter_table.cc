@@ -55,6 +55,8 @@ std::vector<ParamSpec> MakeTable() {
       {"contact", "dissipation", "s/m", R::kNonNegative, "Hunt-Crossley dissipation", VAHF_REAL(contact.dissipation)},
       {"contact", "friction_transition_speed", "m/s", R::kPositive, "slip speed of the regularised Coulomb law", VAHF_REAL(contact.friction_transition_speed)},
       {"contact", "shell_spacing", "m", R::kPositive, "point spacing of the moving part's contact shell", VAHF_REAL(contact.shell_spacing)},
+      {"contact", "line_stiffness", "Pa", R::kPositive, "line load per metre of penetration per metre of a static part's convex edge", VAHF_REAL(contact.line_stiffness)},
+      {"contact", "rim_spacing", "m", R::kPositive, "sample spacing along the static parts' convex edges (rims)", VAHF_REAL(contact.rim_spacing)},
       {"contact", "penetration_fraction", "1", R::kPositive, "penetration bound as a fraction of the smallest radial clearance (a warning past it)", VAHF_REAL(contact.penetration_fraction)},
       {"visibility", "mode", "-", R::kChoice, "raycast (Eq. 1), constant, or off (V = 1)", nullptr, nullptr, VAHF_TEXT(visibility.mode), {"raycast", "constant", "off"}},
       {"visibility", "value", "1", R::kUnit, "V when mode is constant", VAHF_REAL(visibility.value)},

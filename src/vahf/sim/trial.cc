@@ -641,11 +641,13 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
     std::vector<contact::Obstacle> obstacles;
     for (const FixedPart& f : fixed)
       obstacles.push_back({contact::SignedDistance(f.part->shape), f.pose,
-                           f.part->friction, f.part->mass_properties.bounding_radius});
+                           f.part->friction, f.part->mass_properties.bounding_radius,
+                           contact::MakeRims(f.part->shape, params.contact.rim_spacing)});
     auto shell = contact::MakePointShell(part.shape, params.contact.shell_spacing);
     counters.shell_points = static_cast<std::int64_t>(shell.size());
-    c.contact.emplace(std::move(shell), part.mass_properties.bounding_radius,
-                      part.friction, std::move(obstacles), params.contact);
+    c.contact.emplace(std::move(shell), contact::SignedDistance(part.shape),
+                      part.mass_properties.bounding_radius, part.friction,
+                      std::move(obstacles), params.contact);
   }
   // Eq. 1 by ray casting only when the scene asks for it and something could
   // hide the part; a scene with V given or switched off tessellates nothing.

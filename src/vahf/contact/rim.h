@@ -1,0 +1,40 @@
+// Samples of a solid's convex edges ("rims"), the static side of edge contact
+// (docs/design.md decision 7, docs/physics.md, Contact). The moving part's point
+// shell cannot see a static part's edge: a bore's rim can sink between two
+// shell points of the moving part. Each rim sample is therefore also queried
+// against the moving part's exact signed distance, and carries the length of
+// edge it stands for, so that summing a line load * length over the samples
+// integrates it along the edge whatever the spacing.
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+#include <vector>
+
+#include "vahf/geometry/shape.h"
+
+namespace vahf::contact {
+
+struct RimPoint {
+  Eigen::Vector3d position;  // on the edge, in the part frame, m
+  double length;             // of edge it stands for, m
+};
+
+// A profile vertex is a convex edge when the polygon turns left there (it is
+// counter-clockwise) by more than this, i.e. its interior angle is below
+// 179 deg. A blunter edge is all but flat: a face pressed on it is wider than
+// a shell spacing and the point shell resolves it; roundoff-straight vertices
+// (a profile edge split in two) must give no rim at all.
+inline constexpr double kMinRimTurnRad = M_PI / 180.0;
+
+// For a solid of revolution: each profile vertex off the axis (r > 0) whose
+// interior angle is below 179 deg gives a circle of n = ceil(2 pi r / spacing)
+// samples at azimuths 2 pi (j + 1/2) / n, each of length 2 pi r / n. Straight
+// and concave vertices (a bore's bottom corner) give none, nor does the axis.
+// For a box: its 12 edges, each split into ceil(L / spacing) equal segments
+// sampled at their midpoints, each of the segment's length. Circles and edges
+// come one after the other, each a run of consecutive samples. A count that is
+// an integer to within 1e-9 is not rounded up (10 mm at 1 mm gives 10).
+std::vector<RimPoint> MakeRims(const geometry::Shape& shape, double spacing);
+
+}  // namespace vahf::contact
