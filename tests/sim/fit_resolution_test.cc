@@ -72,9 +72,11 @@ double DeepestOverTrial(const scene::Scene& s, const TrialResult& r) {
   return deepest;
 }
 
+// The resolving configuration (experiments/scenes/peg_in_hole_resolved.json:
+// stiffness by the bound rule with its barrier, CPodes).
 TEST(FitResolution, PegStaysWithinTenPercentOfItsClearance) {
   const scene::Scene s =
-      scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/peg_in_hole.json");
+      scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/peg_in_hole_resolved.json");
   TrialOptions options;
   options.record_trace = false;
   options.sample_interval = 0.5e-3;
@@ -87,7 +89,12 @@ TEST(FitResolution, PegStaysWithinTenPercentOfItsClearance) {
               deepest * 1e6, r.max_penetration * 1e6, r.penetration_bound * 1e6);
   EXPECT_NEAR(r.clearance, 50e-6, 1e-12);
   EXPECT_LT(deepest, 0.1 * r.clearance);
-  EXPECT_TRUE(r.warnings.empty()) << r.warnings.Summary();
+  // Expected: CPodes' retries and its nanosecond steps at the impact on the
+  // barrier. Anything else is not.
+  EXPECT_EQ(r.warnings.at(WarningKind::kPenetrationBound).count, 0) << r.warnings.Summary();
+  EXPECT_EQ(r.warnings.at(WarningKind::kNonFiniteState).count, 0) << r.warnings.Summary();
+  EXPECT_EQ(r.warnings.at(WarningKind::kIntegratorFailure).count, 0) << r.warnings.Summary();
+  EXPECT_LE(r.max_penetration, r.penetration_bound);
 }
 
 }  // namespace

@@ -50,6 +50,24 @@ TEST(TrialHealth, SamplesDoNotChangeTheTrajectory) {
   EXPECT_LT(csv.find("\ndecision,0.1"), csv.find("\nsample,0.1005"));
 }
 
+// CPodes stops its steps at any report time it is given: samples are
+// interpolated between accepted steps instead, so they change nothing here
+// either (the resolving peg scene, integrated by CPodes).
+TEST(TrialHealth, SamplesDoNotChangeACPodesTrajectory) {
+  const scene::Scene s = LoadExample("peg_in_hole_resolved.json");
+  ASSERT_EQ(s.params.simulation.integrator, "CPodes");
+  TrialOptions plain, sampled;
+  plain.record_trace = sampled.record_trace = false;
+  sampled.sample_interval = 0.5e-3;
+  const TrialResult a = RunTrial(s, {1, 0}, plain);
+  const TrialResult b = RunTrial(s, {1, 0}, sampled);
+  ASSERT_EQ(a.status, Status::kCompleted) << a.detail;
+  EXPECT_EQ(a.completion_time, b.completion_time);  // bit for bit
+  EXPECT_EQ(a.counters.steps_taken, b.counters.steps_taken);
+  EXPECT_EQ(a.final_row.position, b.final_row.position);
+  EXPECT_GT(b.samples.size(), 300u);
+}
+
 TEST(TrialHealth, TooSoftAContactIsAPenetrationWarning) {
   scene::Scene s = LoadExample("peg_in_hole.json");
   s.params.contact.stiffness = 1e7;  // Pa/m: a thousand times too soft for the fit

@@ -16,7 +16,8 @@ double PairFriction(double a, double b) { return a + b > 0 ? 2 * a * b / (a + b)
 
 ContactModel::ContactModel(std::vector<ShellPoint> shell, SignedDistance moving_field,
                            double moving_bounding_radius, double moving_friction,
-                           std::vector<Obstacle> obstacles, const ContactParams& params)
+                           std::vector<Obstacle> obstacles, const ContactParams& params,
+                           std::vector<RimPoint> moving_rim)
     : shell_(std::move(shell)),
       moving_field_(std::move(moving_field)),
       shell_radius_(moving_bounding_radius),
@@ -27,6 +28,8 @@ ContactModel::ContactModel(std::vector<ShellPoint> shell, SignedDistance moving_
   if (!shell_.empty()) BuildTree(0, shell_.size());
   rim_sets_.reserve(obstacles_.size());
   for (const Obstacle& o : obstacles_) rim_sets_.push_back(BuildRimSet(o.rim));
+  moving_rim_ = std::move(moving_rim);
+  moving_rim_set_ = BuildRimSet(moving_rim_);
 }
 
 ContactModel::RimSet ContactModel::BuildRimSet(const std::vector<RimPoint>& rim) {
@@ -70,18 +73,33 @@ void ContactModel::BuildTree(std::size_t begin, std::size_t end) {
   nodes_[index].escape = static_cast<std::uint32_t>(nodes_.size());
 }
 
-double ContactModel::Law(double k, double x0, double c, double depth, double depth_rate) {
+double ContactModel::Law(double k, double x0, double c, double b, double depth,
+                         double depth_rate) {
   if (!(depth > 0)) return 0.0;
-  const double elastic = depth < x0 ? k * depth * depth / (2 * x0) : k * (depth - 0.5 * x0);
+  // The C1 elastic law and its slope.
+  const auto e = [&](double x) { return x < x0 ? k * x * x / (2 * x0) : k * (x - 0.5 * x0); };
+  const auto de = [&](double x) { return x < x0 ? k * x / x0 : k; };
+  double elastic;
+  if (!(b > 0)) {
+    elastic = e(depth);
+  } else {
+    const double xc = b * (1.0 - kBarrierReserve);
+    const double x = std::min(depth, xc);
+    const double s = 1.0 / (1.0 - x / b);  // 1 / (1 - x / b)
+    elastic = e(x) * s * s;
+    if (depth > xc)  // along the tangent at xc: d/dx [e h] = e' h + e h', h' = 2 s^3 / b
+      elastic += (de(xc) * s * s + e(xc) * 2.0 * s * s * s / b) * (depth - xc);
+  }
   return elastic * std::max(0.0, 1.0 + c * depth_rate);
 }
 
 double ContactModel::Pressure(const ContactParams& p, double depth, double depth_rate) {
-  return Law(p.stiffness, p.onset_depth, p.dissipation, depth, depth_rate);
+  return Law(p.stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth, depth_rate);
 }
 
 double ContactModel::LineLoad(const ContactParams& p, double depth, double depth_rate) {
-  return Law(p.line_stiffness, p.onset_depth, p.dissipation, depth, depth_rate);
+  return Law(p.line_stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth,
+             depth_rate);
 }
 
 bool ContactModel::AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
@@ -146,9 +164,42 @@ ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
         out.max_depth = std::max(out.max_depth, depth);
       }
     }
+    EvaluateMovingRims(index, m, mu, &out);
     EvaluateRims(index, m, mu, &out);
   }
   return out;
+}
+
+void ContactModel::EvaluateMovingRims(std::size_t index, const RigidMotion& m, double mu,
+                                      ContactForces* out) const {
+  const Obstacle& o = obstacles_[index];
+  const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
+  const Eigen::Matrix3d& r_world_obstacle = o.pose.linear();
+  for (const RimBlock& block : moving_rim_set_.blocks) {
+    const Eigen::Vector3d c_o = moving_in_obstacle * block.centre;
+    const bool clear = ((c_o.array() + block.radius) <= o.field.lower().array()).any() ||
+                       ((c_o.array() - block.radius) >= o.field.upper().array()).any() ||
+                       o.field.At(c_o).distance > block.radius;
+    if (clear) {
+      ++counters_.rim_blocks_skipped;
+      continue;
+    }
+    for (std::size_t k = block.begin; k < block.end; ++k) {
+      const RimPoint& q = moving_rim_[k];
+      ++counters_.rim_queries;
+      const std::optional<Distance> d = o.field.Penetration(moving_in_obstacle * q.position);
+      if (!d) continue;
+      const double depth = -d->distance;
+      if (!(depth > 0)) continue;
+      const Eigen::Vector3d n = r_world_obstacle * d->normal;  // out of the obstacle
+      const Eigen::Vector3d r = m.pose.linear() * q.position;  // origin to point, world
+      const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);
+      if (!AddContact(r, v, n, LineLoad(params_, depth, -v.dot(n)) * q.length, mu, out))
+        continue;
+      ++out->rim_points_in_contact;
+      out->max_depth = std::max(out->max_depth, depth);
+    }
+  }
 }
 
 void ContactModel::EvaluateRims(std::size_t index, const RigidMotion& m, double mu,

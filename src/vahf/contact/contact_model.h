@@ -6,9 +6,18 @@
 // friction.
 //
 // Normal pressure at penetration depth x (m), rate xdot (m/s):
-//   p(x) = k x^2 / (2 x0)          for x < x0   (C1 onset: p(0) = p'(0) = 0)
-//   p(x) = k (x - x0 / 2)          for x >= x0  (linear, slope k)
+//   e(x) = k x^2 / (2 x0)          for x < x0   (C1 onset: e(0) = e'(0) = 0)
+//   e(x) = k (x - x0 / 2)          for x >= x0  (linear, slope k)
+//   p(x) = e(x) / (1 - x / b)^2                 (hardening barrier at depth b)
 //   p    *= max(0, 1 + c xdot)                  (Hunt and Crossley, 1975)
+// The barrier makes the stiffness rise without bound as the depth nears b, so
+// the penetration stays below b under any load the integrator resolves: the
+// energy stored by the time x reaches b (1 - eps) grows like k b^2 / eps (an
+// inverse-square barrier in the spirit of incremental potential contact: M.
+// Li et al., ACM Trans. Graph. 39(4) 49, 2020). Past x_c = b (1 - eps),
+// eps = kBarrierReserve, the law continues along its tangent (C1), for a
+// trial step that overshoots. b = 0: no barrier, the law stays linear. A
+// trial sets b to the penetration bound (contact_params.h).
 // A rim point x deep inside the moving part carries the same law per metre of
 // edge with line_stiffness for k (N/m per m), times the length it stands for,
 // and pushes the moving part along minus its outward normal there; xdot is
@@ -76,9 +85,14 @@ class ContactModel {
   // The moving part: its point shell and its exact signed distance, both in
   // its own frame (the frame RigidMotion places), the radius of a sphere about
   // that frame's origin holding it, and its Coulomb coefficient.
+  // `moving_rim`: the moving part's own convex edges (MakeRims, its frame),
+  // queried against each obstacle's field with the line law, so that its
+  // edges are seen where they are and not only by shell points half a
+  // spacing inside them.
   ContactModel(std::vector<ShellPoint> shell, SignedDistance moving_field,
                double moving_bounding_radius, double moving_friction,
-               std::vector<Obstacle> obstacles, const ContactParams& params);
+               std::vector<Obstacle> obstacles, const ContactParams& params,
+               std::vector<RimPoint> moving_rim = {});
 
   ContactForces Evaluate(const RigidMotion& motion) const;
 
@@ -92,6 +106,9 @@ class ContactModel {
   static double LineLoad(const ContactParams& params, double depth, double depth_rate);
   // Rim points per culling block (see RimBlock).
   static constexpr std::size_t kRimBlockSize = 32;
+  // The barrier's reserve eps: the law leaves the barrier for its tangent at
+  // depth b (1 - eps), where it is 1 / eps^2 = 1e6 times the linear law.
+  static constexpr double kBarrierReserve = 1e-3;
 
  private:
   // A bounding-sphere tree over the shell points (part frame), built once by
@@ -129,7 +146,8 @@ class ContactModel {
   static RimSet BuildRimSet(const std::vector<RimPoint>& rim);
 
   // The law shared by faces and rims: stiffness k, onset x0, dissipation c.
-  static double Law(double k, double x0, double c, double depth, double depth_rate);
+  static double Law(double k, double x0, double c, double barrier, double depth,
+                    double depth_rate);
   // Adds a normal force fn pushing the moving part along the world unit vector
   // u at r (world, from its origin), and the friction against the moving
   // material's velocity v there; false (nothing added) when fn is not positive.
@@ -137,6 +155,9 @@ class ContactModel {
                   const Eigen::Vector3d& u, double fn, double mu,
                   ContactForces* out) const;
   // The obstacle's rim points against the moving part, after its shell points.
+  // The moving part's rims against obstacle `index`'s field.
+  void EvaluateMovingRims(std::size_t index, const RigidMotion& motion, double mu,
+                          ContactForces* out) const;
   void EvaluateRims(std::size_t index, const RigidMotion& motion, double mu,
                     ContactForces* out) const;
 
@@ -147,6 +168,8 @@ class ContactModel {
   double moving_friction_;
   std::vector<Obstacle> obstacles_;
   std::vector<RimSet> rim_sets_;  // one per obstacle
+  std::vector<RimPoint> moving_rim_;
+  RimSet moving_rim_set_;
   ContactParams params_;
   mutable ContactCounters counters_;
 };

@@ -108,6 +108,7 @@ struct TrialContext {
   double penetration_bound = 0;  // m; 0: the scene has no radial fit to bound
   double clearance = 0;          // the smallest radial clearance, m (0: none)
   double max_penetration = 0;    // deepest contact at an accepted step or sample, m
+  double stiffness = 0, line_stiffness = 0;  // the contact's, as the trial set them
 
   // Accumulators, updated at decision instants.
   std::int64_t last_decision = -1;
@@ -468,7 +469,7 @@ class StepWatch {
     Depth(c_.SnapshotOf(s).contact.max_depth, t);
     const double h = integ.getPreviousStepSizeTaken();
     const double floor = c_.scene->params.simulation.step_floor;
-    if (h < floor)
+    if (h > 0 && h < floor)  // h = 0: no step since a restart
       c_.warnings.Note(WarningKind::kStepSizeFloor, t,
                        fmt::format("step {:.3g} s < floor {:.3g} s", h, floor));
     const std::int64_t retries = static_cast<std::int64_t>(integ.getNumConvergenceTestFailures()) +
@@ -502,8 +503,7 @@ class StepWatch {
   std::int64_t retries_ = 0;
 };
 
-// A dense trace row at a sample instant (an interpolated state: the
-// trajectory is the same with and without samples).
+// A dense trace row at a sample state.
 TraceRow SampleRow(TrialContext& c, const SimTK::State& s) {
   c.matter->getSystem().realize(s, SimTK::Stage::Dynamics);
   const ForceSnapshot& snap = c.SnapshotOf(s);
@@ -517,17 +517,63 @@ TraceRow SampleRow(TrialContext& c, const SimTK::State& s) {
   return row;
 }
 
+// Dense samples between accepted steps, by cubic Hermite interpolation of q
+// (with qdot) and u (with udot) between the two step ends, the quaternion
+// renormalised: third order, and the integrator never sees a sample time, so
+// the trajectory is the same bits with and without samples whatever the
+// integrator (asking the integrator for report times would not be: CPodes
+// stops its steps at them).
+class Sampler {
+ public:
+  Sampler(TrialContext& c, double interval) : c_(c), interval_(interval) {}
+
+  // The integrator advanced to state `now` (realized to Acceleration): emit
+  // every sample time in (previous, now], then remember `now`.
+  void Advanced(const SimTK::State& now, double limit) {
+    if (interval_ <= 0) return;
+    if (have_previous_ && now.getTime() > t0_) {
+      const double t1 = now.getTime(), h = t1 - t0_;
+      for (;;) {
+        const double t = static_cast<double>(next_) * interval_;
+        if (t > t1 || t >= limit) break;
+        const double s = (t - t0_) / h;
+        // Hermite basis on [0, 1].
+        const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+        const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+        SimTK::State x = now;
+        x.setTime(t);
+        x.updQ() = h00 * q0_ + (h10 * h) * qdot0_ + h01 * now.getQ() + (h11 * h) * now.getQDot();
+        x.updU() = h00 * u0_ + (h10 * h) * udot0_ + h01 * now.getU() + (h11 * h) * now.getUDot();
+        c_.matter->getSystem().realize(x, SimTK::Stage::Position);
+        c_.matter->getSystem().project(x, 1e-10);  // the quaternion back to unit length
+        c_.samples.push_back(SampleRow(c_, x));
+        ++next_;
+      }
+    }
+    have_previous_ = true;
+    t0_ = now.getTime();
+    q0_ = now.getQ();
+    qdot0_ = now.getQDot();
+    u0_ = now.getU();
+    udot0_ = now.getUDot();
+  }
+
+ private:
+  TrialContext& c_;
+  double interval_;
+  std::int64_t next_ = 1;
+  bool have_previous_ = false;
+  double t0_ = 0;
+  SimTK::Vector q0_, qdot0_, u0_, udot0_;
+};
+
 // Steps from the initial state to completion, an ending or the time limit,
-// returning at every accepted step (StepWatch) and, when sample_interval > 0,
-// at every multiple of it (a dense trace row from the integrator's
-// interpolant). Returns the time reached.
+// returning at every accepted step (StepWatch, Sampler). Returns the time
+// reached.
 //
-// The loop is SimTK::TimeStepper::stepTo's (Simbody 3.7, TimeStepper.cpp)
-// with one difference: TimeStepper passes its report time to the integrator
-// as a time it must not step past, which would cut the steps at every sample
-// and change the trajectory; here only the decision instants and the time
-// limit bound a step, and samples are interpolated inside the steps taken
-// anyway. Time-advanced events are not dispatched: the system has none.
+// The loop is SimTK::TimeStepper::stepTo's (Simbody 3.7, TimeStepper.cpp),
+// returning at every internal step; time-advanced events are not dispatched
+// (the system has none).
 double Integrate(TrialContext& c, const SimTK::MultibodySystem& system,
                  SimTK::Integrator& integ, const SimTK::State& initial,
                  double sample_interval) {
@@ -540,9 +586,10 @@ double Integrate(TrialContext& c, const SimTK::MultibodySystem& system,
   if (integ.isInfinityNormInUse())
     handle_options.setOption(SimTK::HandleEventsOptions::UseInfinityNorm);
   StepWatch watch(c);
+  Sampler sampler(c, sample_interval);
+  sampler.Advanced(integ.getState(), limit);
   SimTK::Array_<SimTK::EventId> scheduled;
   double last_event_time = -SimTK::Infinity;
-  std::int64_t k = 1;  // the next sample
   const auto handle = [&](SimTK::Event::Cause cause, const SimTK::Array_<SimTK::EventId>& ids) {
     SimTK::HandleEventsResults results;
     system.handleEvents(integ.updAdvancedState(), cause, ids, handle_options, results);
@@ -557,20 +604,14 @@ double Integrate(TrialContext& c, const SimTK::MultibodySystem& system,
     double next_event = SimTK::Infinity;
     system.calcTimeOfNextScheduledEvent(integ.getState(), next_event, scheduled,
                                         last_event_time != now);
-    const double sample =
-        sample_interval > 0 ? static_cast<double>(k) * sample_interval : SimTK::Infinity;
-    const double report = std::min(sample, limit);
-    switch (integ.stepTo(report, std::min(next_event, limit))) {
-      case Integrator::TimeHasAdvanced:
-        watch.Accepted(integ, integ.getState());
-        break;
-      case Integrator::ReachedReportTime:
-        if (integ.getTime() >= sample && sample < limit) {
-          c.samples.push_back(SampleRow(c, integ.getState()));
-          watch.Depth(c.samples.back().penetration, sample);
-          ++k;
-        }
-        break;
+    const Integrator::SuccessfulStepStatus status =
+        integ.stepTo(limit, std::min(next_event, limit));
+    if (integ.getTime() > now) {  // the trajectory advanced to integ.getState()
+      system.realize(integ.getState(), SimTK::Stage::Acceleration);
+      if (!watch.Accepted(integ, integ.getState())) break;
+      sampler.Advanced(integ.getState(), limit);
+    }
+    switch (status) {
       case Integrator::ReachedScheduledEvent:
         handle(SimTK::Event::Cause::Scheduled, scheduled);
         last_event_time = integ.getTime();
@@ -581,9 +622,13 @@ double Integrate(TrialContext& c, const SimTK::MultibodySystem& system,
       case Integrator::EndOfSimulation:
         handle(SimTK::Event::Cause::Termination, {});
         break;
-      default:  // StartOfContinuousInterval, ReachedStepLimit: step on
-        break;
+      default:  // TimeHasAdvanced, ReachedReportTime, StartOfContinuousInterval,
+        continue;  // ReachedStepLimit: step on
     }
+    // An event may have changed what the forces depend on (a decision):
+    // interpolate the next step from the state after it.
+    system.realize(integ.getState(), SimTK::Stage::Acceleration);
+    sampler.Advanced(integ.getState(), limit);
   }
   return integ.getTime();
 }
@@ -645,9 +690,26 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
                            contact::MakeRims(f.part->shape, params.contact.rim_spacing)});
     auto shell = contact::MakePointShell(part.shape, params.contact.shell_spacing);
     counters.shell_points = static_cast<std::int64_t>(shell.size());
+    contact::ContactParams contact_params = params.contact;
+    if (params.contact.stiffness_rule == "bound" && c.penetration_bound > 0) {
+      contact_params.barrier_depth = c.penetration_bound;  // the bound it is checked against
+      // docs/physics.md, Contact stiffness: the largest steady load sinks a
+      // fraction of the bound over a short edge.
+      const double pull = c.operator_acts ? params.guidance.kappa *
+                                                (part.initial.position - part.target.position).norm()
+                                          : 0.0;
+      const double load = pull + part.mass * scene.gravity.norm();
+      const double l = params.contact.rule_contact_length;
+      contact_params.line_stiffness =
+          load / (l * params.contact.rule_depth_fraction * c.penetration_bound);
+      contact_params.stiffness = contact_params.line_stiffness / l;
+    }
+    c.stiffness = contact_params.stiffness;
+    c.line_stiffness = contact_params.line_stiffness;
     c.contact.emplace(std::move(shell), contact::SignedDistance(part.shape),
                       part.mass_properties.bounding_radius, part.friction,
-                      std::move(obstacles), params.contact);
+                      std::move(obstacles), contact_params,
+                      contact::MakeRims(part.shape, params.contact.rim_spacing));
   }
   // Eq. 1 by ray casting only when the scene asks for it and something could
   // hide the part; a scene with V given or switched off tessellates nothing.
@@ -763,6 +825,8 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   result.max_penetration = c.max_penetration;
   result.penetration_bound = c.penetration_bound;
   result.clearance = c.clearance;
+  result.stiffness = c.stiffness;
+  result.line_stiffness = c.line_stiffness;
   result.samples = std::move(c.samples);
   if (!final_row) {  // the integrator threw: the last decision is the last known row
     final_row = c.trace.empty() ? TraceRow{} : c.trace.back();
