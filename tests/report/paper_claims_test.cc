@@ -51,15 +51,24 @@ std::unique_ptr<Ran> RunShipped(const std::string& name, int trials) {
   return none;
 }
 
-// Table 1, Sec. 4: eta rises as each part nears its final position. Reproduced.
+// Table 1, Sec. 4: eta rises as each part nears its final position.
+// Reproduced for the piston rod and the guide sleeve. The seal ring's rise is
+// not significant at this size since the guidance became continuous in the
+// state (issue 10): eta(d) - eta(a) = 0.038, 95 % CI [-0.027, 0.103] over 4
+// cycles (measured); it stays positive, and the paper run's size tests it.
 TEST(PaperClaims, EtaRisesAsEachPartNearsItsTarget) {
   const auto r = RunShipped("table1", 4);
   const auto& claims = r->section.summary.at("claims");
   ASSERT_EQ(claims.size(), 3u);
   for (const auto& c : claims) {
-    std::printf("%s: %s\n", c.at("claim").get<std::string>().c_str(),
-                c.at("evidence").get<std::string>().c_str());
-    EXPECT_TRUE(c.at("reproduced").get<bool>()) << c.dump();
+    const std::string claim = c.at("claim").get<std::string>();
+    std::printf("%s: %s\n", claim.c_str(), c.at("evidence").get<std::string>().c_str());
+    if (claim.find("seal_ring") == std::string::npos)
+      EXPECT_TRUE(c.at("reproduced").get<bool>()) << c.dump();
+    else
+      EXPECT_NE(c.at("evidence").get<std::string>().find("eta(d) - eta(a) = 0.0"),
+                std::string::npos)
+          << "the seal ring's rise is small and positive: " << c.dump();
   }
 }
 
@@ -69,11 +78,12 @@ TEST(PaperClaims, EtaRisesAsEachPartNearsItsTarget) {
 // (posture, so f, r, g), and at this size the difference is not significant.
 // What the model does instead: the male - female difference is small (under
 // 0.5 s against cycles of about 1.5 s) and not significant.
-// (2) Fig. 12: subassembly time falls with the part's mass and size.
-// Reproduced at this size: piston rod (3.6 kg) slower than guide sleeve
-// (0.8 kg) slower than seal ring (25 g), each step one-sided Welch p < 0.05
-// (at the paper run's size the sleeve-seal step is weaker: see the report).
-TEST(PaperClaims, AssemblyTimeSexNotReproducedMassReproduced) {
+// (2) Fig. 12: subassembly time falls with the part's mass and size. Half
+// reproduced since the guidance became continuous in the state (issue 10):
+// the piston rod (3.6 kg) is significantly slower than the guide sleeve
+// (0.8 kg), but the seal ring (25 g) is not faster than the sleeve (measured
+// at this size: sleeve - seal = -0.059 s, p(heavier slower) = 0.99).
+TEST(PaperClaims, AssemblyTimeSexNotReproducedMassHalfReproduced) {
   const auto r = RunShipped("assembly_time", 4);
   const nlohmann::json& claim = ClaimContaining(r->section, "male operators");
   EXPECT_FALSE(claim.at("reproduced").get<bool>()) << claim.dump();
@@ -81,7 +91,14 @@ TEST(PaperClaims, AssemblyTimeSexNotReproducedMassReproduced) {
   EXPECT_GT(t.at("p_less").get<double>(), 0.05) << t.dump();
   EXPECT_LT(std::abs(t.at("mean_difference_s").get<double>()), 0.5) << t.dump();
   const nlohmann::json& mass = ClaimContaining(r->section, "subassembly time");
-  EXPECT_TRUE(mass.at("reproduced").get<bool>()) << mass.dump();
+  EXPECT_FALSE(mass.at("reproduced").get<bool>()) << mass.dump();
+  const nlohmann::json& steps = r->section.summary.at("tests").at("heavier_vs_lighter");
+  ASSERT_EQ(steps.size(), 2u);
+  EXPECT_EQ(steps[0].at("heavier"), "piston_rod");
+  EXPECT_GT(steps[0].at("mean_difference_s").get<double>(), 0.0) << steps.dump();
+  EXPECT_LT(steps[0].at("p_heavier_slower").get<double>(), 0.05) << steps.dump();
+  EXPECT_EQ(steps[1].at("lighter"), "seal_ring");
+  EXPECT_GT(steps[1].at("p_heavier_slower").get<double>(), 0.05) << steps.dump();
 }
 
 // Sec. 5.3: the general condition lies between the best and the worst. Half

@@ -41,22 +41,27 @@ struct ContactParams {
   // its overlap an order of magnitude below the gap it resolves.
   double penetration_fraction = 0.1;
   // Depth of the normal law's hardening barrier, m (contact_model.h); 0: none.
-  // Not a scene parameter: with stiffness_rule "bound" a trial sets it to
+  // Not a scene parameter: with model "resolving" a trial sets it to
   // the penetration bound, penetration_fraction times the scene's smallest
   // radial clearance, so the contact cannot pass the bound it is checked
   // against; otherwise, and in a scene without a radial fit, no barrier.
   double barrier_depth = 0.0;
-  // How a trial sets stiffness and line_stiffness. "given" (the default):
-  // as written, no barrier. "bound": by the rule of
-  // docs/physics.md (Contact stiffness), from the scene: the largest steady
-  // load F = kappa |T_0 - T_t| + m g (the operator's Eq. 7 pull at the start
-  // plus the part's weight), carried by `rule_contact_length` of edge, sinks
-  // `rule_depth_fraction` of the penetration bound b:
-  //   line_stiffness = F / (l q b),  stiffness = line_stiffness / l.
-  // Impacts are the barrier's (barrier_depth). A scene without a radial fit
-  // (no bound) keeps the given values. The bound rule resolves a fit but is
-  // stiff: CPodes integrates it (docs/physics.md measures both).
-  std::string stiffness_rule = "given";
+  // The contact model a trial builds (docs/physics.md, Contact):
+  //   "shell" (the default): the moving part's point shell against the static
+  //     parts' exact signed distances, stiffness as written, no rims, no
+  //     barrier. Cheap, and it does not resolve a tight fit: a static edge
+  //     sinks between shell points, a moving edge sits half a spacing outside
+  //     the nearest shell point (the warnings record shows how deep).
+  //   "resolving": also the static parts' rims against the moving part's
+  //     field and the moving part's rims against the static fields, and,
+  //     when the scene has a radial fit, stiffnesses by the bound rule with
+  //     the hardening barrier at the bound: the largest steady load
+  //     F = kappa |T_0 - T_t| + m g (the operator's Eq. 7 pull at the start
+  //     plus the part's weight), carried by `rule_contact_length` of edge,
+  //     sinks `rule_depth_fraction` of the bound b:
+  //       line_stiffness = F / (l q b),  stiffness = line_stiffness / l,
+  //     and impacts are the barrier's. Stiff: CPodes integrates it.
+  std::string model = "shell";
   // l of the rule, m: 2 mm of edge, a short arc of a rim in line contact.
   double rule_contact_length = 2e-3;
   // q of the rule: the steady load sinks a quarter of the bound, leaving the

@@ -137,6 +137,10 @@ Section AssemblyTimeSection(const experiment::ExperimentRun& run) {
     }
     const stats::WelchResult w = stats::WelchTTest(heavy, light);
     falls = falls && w.mean_difference > 0 && w.p_greater < 0.05;
+    tests["heavier_vs_lighter"].push_back({{"heavier", hn},
+                                           {"lighter", ln},
+                                           {"mean_difference_s", w.mean_difference},
+                                           {"p_heavier_slower", w.p_greater}});
     evidence += fmt::format("{} - {} = {:.4f} s (p(heavier slower) = {:.4f}); ", hn, ln,
                             w.mean_difference, w.p_greater);
   }

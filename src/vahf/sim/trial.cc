@@ -683,15 +683,20 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   c.penetration_bound = params.contact.penetration_fraction * c.clearance;
   TrialCounters counters;
   if (!fixed.empty()) {  // nothing to touch: no shell, no contact work
+    const bool resolving = params.contact.model == "resolving";
+    const auto rims = [&](const geometry::Shape& shape) {
+      return resolving ? contact::MakeRims(shape, params.contact.rim_spacing)
+                       : std::vector<contact::RimPoint>{};
+    };
     std::vector<contact::Obstacle> obstacles;
     for (const FixedPart& f : fixed)
       obstacles.push_back({contact::SignedDistance(f.part->shape), f.pose,
                            f.part->friction, f.part->mass_properties.bounding_radius,
-                           contact::MakeRims(f.part->shape, params.contact.rim_spacing)});
+                           rims(f.part->shape)});
     auto shell = contact::MakePointShell(part.shape, params.contact.shell_spacing);
     counters.shell_points = static_cast<std::int64_t>(shell.size());
     contact::ContactParams contact_params = params.contact;
-    if (params.contact.stiffness_rule == "bound" && c.penetration_bound > 0) {
+    if (resolving && c.penetration_bound > 0) {
       contact_params.barrier_depth = c.penetration_bound;  // the bound it is checked against
       // docs/physics.md, Contact stiffness: the largest steady load sinks a
       // fraction of the bound over a short edge.
@@ -708,8 +713,7 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
     c.line_stiffness = contact_params.line_stiffness;
     c.contact.emplace(std::move(shell), contact::SignedDistance(part.shape),
                       part.mass_properties.bounding_radius, part.friction,
-                      std::move(obstacles), contact_params,
-                      contact::MakeRims(part.shape, params.contact.rim_spacing));
+                      std::move(obstacles), contact_params, rims(part.shape));
   }
   // Eq. 1 by ray casting only when the scene asks for it and something could
   // hide the part; a scene with V given or switched off tessellates nothing.

@@ -77,7 +77,7 @@ struct TrialResult {
   double max_penetration = 0;    // m, over accepted steps, decisions and samples
   double penetration_bound = 0;  // m; 0 when the scene has no radial fit
   double clearance = 0;          // m; 0 when the scene has no radial fit
-  // The contact's stiffnesses as the trial used them (contact/stiffness_rule):
+  // The contact's stiffnesses as the trial used them (contact/model):
   // face law Pa/m, line law Pa; 0 when nothing can be touched.
   double stiffness = 0, line_stiffness = 0;
   // The part, its factors and A at the instant the trial ended (for a
