@@ -72,6 +72,20 @@ TEST(PaperClaims, EtaRisesAsEachPartNearsItsTarget) {
   }
 }
 
+// Numerical health of the same run: no numerical failure and no warning but
+// the one the shell contact is known for (docs/physics.md, Contact): the
+// cylinder's parts sink deeper than a tenth of their 28-34 um fits.
+TEST(PaperClaims, Table1RunHasOnlyTheExpectedWarnings) {
+  const auto r = RunShipped("table1", 4);
+  const nlohmann::json& health = r->section.summary.at("health");
+  for (const auto& c : health.at("conditions")) {
+    EXPECT_EQ(c.at("numerical_failures"), 0) << c.dump();
+    for (const auto& [kind, w] : c.at("warnings").items())
+      EXPECT_EQ(kind, "penetration_bound") << "unexpected warning: " << w.dump();
+  }
+  EXPECT_NE(r->section.markdown.find("### Numerical health"), std::string::npos);
+}
+
 // Sec. 5.2, one run for both claims.
 // (1) The three male operators assemble faster than the three female ones.
 // NOT reproduced: in the model sex acts only through stature and arm length

@@ -1,5 +1,7 @@
 #include "vahf/report/section.h"
 
+#include "vahf/report/health.h"
+
 #include <fmt/format.h>
 
 #include "vahf/core/error.h"
@@ -36,7 +38,10 @@ Table CyclesTable(const experiment::DesignRun& run) {
   return t;
 }
 
-Section SectionFor(const experiment::ExperimentRun& run) {
+namespace {
+
+// The analysis of the run's kind.
+Section KindSection(const experiment::ExperimentRun& run) {
   const std::string& kind = run.file->kind;
   if (kind == "table1") return Table1Section(run);
   if (kind == "assembly_time") return AssemblyTimeSection(run);
@@ -44,6 +49,15 @@ Section SectionFor(const experiment::ExperimentRun& run) {
   if (kind == "fatigue") return FatigueSection(run);
   VAHF_CHECK(false, "no section for this kind");
   return {};
+}
+
+}  // namespace
+
+Section SectionFor(const experiment::ExperimentRun& run) {
+  Section out = KindSection(run);
+  out.summary["health"] = HealthJson(run.run);
+  out.markdown += HealthMarkdown(run.run);
+  return out;
 }
 
 }  // namespace vahf::report

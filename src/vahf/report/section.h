@@ -48,7 +48,8 @@ Section AssemblyTimeSection(const experiment::ExperimentRun& run);
 Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run);
 Section FatigueSection(const experiment::ExperimentRun& run);
 
-// The section of a run of any kind but "paper".
+// The section of a run of any kind but "paper", with its numerical health
+// (health.h) in summary["health"] and at the end of its markdown.
 Section SectionFor(const experiment::ExperimentRun& run);
 
 }  // namespace vahf::report

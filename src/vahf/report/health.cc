@@ -1,0 +1,87 @@
+#include "vahf/report/health.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace vahf::report {
+namespace {
+
+struct ConditionHealth {
+  std::int64_t cycles = 0, numerical_failures = 0;
+  Warnings warnings;
+  double max_penetration = 0, bound = 0;  // m; bound 0: no radial fit
+};
+
+std::vector<ConditionHealth> Collect(const experiment::DesignRun& run) {
+  std::vector<ConditionHealth> out(run.conditions.size());
+  for (const experiment::CycleRecord& r : run.records) {
+    ConditionHealth& h = out[r.condition];
+    ++h.cycles;
+    if (r.result.numerical_failure) ++h.numerical_failures;
+    h.warnings.Add(r.result.warnings);
+    for (const experiment::PartRun& p : r.result.parts) {
+      h.max_penetration = std::max(h.max_penetration, p.trial.max_penetration);
+      if (p.trial.penetration_bound > 0)
+        h.bound = h.bound > 0 ? std::min(h.bound, p.trial.penetration_bound)
+                              : p.trial.penetration_bound;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json HealthJson(const experiment::DesignRun& run) {
+  nlohmann::json conditions = nlohmann::json::array();
+  std::int64_t total = 0;
+  const std::vector<ConditionHealth> health = Collect(run);
+  for (std::size_t c = 0; c < health.size(); ++c) {
+    const ConditionHealth& h = health[c];
+    nlohmann::json warnings = nlohmann::json::object();
+    for (int k = 0; k < kWarningKinds; ++k) {
+      const WarningEntry& e = h.warnings.at(static_cast<WarningKind>(k));
+      if (e.count == 0) continue;
+      warnings[WarningName(static_cast<WarningKind>(k))] = {
+          {"count", e.count}, {"first_time_s", e.first_time}, {"detail", e.detail}};
+    }
+    total += h.warnings.total();
+    conditions.push_back({{"condition", run.conditions[c].name},
+                          {"cycles", h.cycles},
+                          {"numerical_failures", h.numerical_failures},
+                          {"max_penetration_m", h.max_penetration},
+                          {"penetration_bound_m", h.bound},
+                          {"warnings", warnings}});
+  }
+  return {{"conditions", conditions}, {"warnings", total}};
+}
+
+std::string HealthMarkdown(const experiment::DesignRun& run) {
+  std::string md =
+      "\n### Numerical health\n\nPer condition: cycles ended by a numerical failure (left "
+      "out of success rates), the deepest contact of any part trial against the "
+      "penetration bound (a tenth of the scene's smallest radial clearance), and the "
+      "warnings of every accepted step (counts; the first occurrence is in "
+      "summary.json).\n\n"
+      "| condition | cycles | numerical failures | deepest contact (um) | bound (um) | "
+      "warnings |\n| --- | --- | --- | --- | --- | --- |\n";
+  const std::vector<ConditionHealth> health = Collect(run);
+  for (std::size_t c = 0; c < health.size(); ++c) {
+    const ConditionHealth& h = health[c];
+    std::string warnings;
+    for (int k = 0; k < kWarningKinds; ++k) {
+      const WarningEntry& e = h.warnings.at(static_cast<WarningKind>(k));
+      if (e.count == 0) continue;
+      warnings += fmt::format("{}{} {}", warnings.empty() ? "" : ", ",
+                              WarningName(static_cast<WarningKind>(k)), e.count);
+    }
+    md += fmt::format("| {} | {} | {} | {:.3g} | {} | {} |\n", run.conditions[c].name,
+                      h.cycles, h.numerical_failures, h.max_penetration * 1e6,
+                      h.bound > 0 ? fmt::format("{:.3g}", h.bound * 1e6) : "-",
+                      warnings.empty() ? "none" : warnings);
+  }
+  return md;
+}
+
+}  // namespace vahf::report
