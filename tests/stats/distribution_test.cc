@@ -1,6 +1,6 @@
 // Quantiles, the two-sample Kolmogorov-Smirnov distance and its p-value, and
-// the normal shift a KS distance amounts to: hand-computed samples, and
-// Kolmogorov's series evaluated with mpmath (30 digits) for the p-values.
+// the shift a KS distance amounts to: hand-computed samples, and Kolmogorov's
+// series evaluated with mpmath (30 digits) for the p-values.
 #include "vahf/stats/distribution.h"
 
 #include <gtest/gtest.h>
@@ -69,21 +69,44 @@ TEST(KolmogorovQ, MatchesTheSeriesOnBothBranches) {
   EXPECT_THROW(KolmogorovQ(NAN), std::invalid_argument);
 }
 
-TEST(NormalShift, KsDistanceInTheUnitOfTheData) {
-  // Means 2 sd apart: D = 2 Phi(1) - 1 = 0.682689492137086.
-  EXPECT_NEAR(KsDistanceOfNormalShift(2.0, 1.0), 0.682689492137086, 1e-14);
-  EXPECT_NEAR(NormalShiftForKsDistance(0.682689492137086, 1.0), 2.0, 1e-12);
-  // D = 0.3, sd = 2: 4 Phi^-1(0.65) = 1.54128186563027 (mpmath).
-  EXPECT_NEAR(NormalShiftForKsDistance(0.3, 2.0), 1.54128186563027, 1e-12);
-  EXPECT_NEAR(KsDistanceOfNormalShift(NormalShiftForKsDistance(0.3, 2.0), 2.0), 0.3, 1e-14);
-  EXPECT_EQ(NormalShiftForKsDistance(0.0, 2.0), 0.0);
-  EXPECT_EQ(NormalShiftForKsDistance(0.0, 0.0), 0.0);
-  const double inf = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(NormalShiftForKsDistance(1.0, 2.0), inf);
-  EXPECT_EQ(NormalShiftForKsDistance(0.2, 0.0), inf);  // a point mass moved
-  EXPECT_THROW(NormalShiftForKsDistance(1.5, 1.0), std::invalid_argument);
-  EXPECT_THROW(NormalShiftForKsDistance(0.5, -1.0), std::invalid_argument);
-  EXPECT_THROW(KsDistanceOfNormalShift(1.0, 0.0), std::invalid_argument);
+// The sample 1, 2, 4, 7 shifted by delta: windows (x - delta, x] hold one
+// point for delta in (0, 1], two (2 and 1) up to 2, three (4, 2, 1) up to
+// 3, and all four beyond 6.
+TEST(KsShift, DistanceOfTheSampleFromItselfShifted) {
+  const std::vector<double> xs = {7, 1, 4, 2};
+  EXPECT_EQ(KsDistanceOfShift(xs, 0.0), 0.0);
+  EXPECT_EQ(KsDistanceOfShift(xs, 0.5), 0.25);
+  EXPECT_EQ(KsDistanceOfShift(xs, 1.0), 0.25);
+  EXPECT_EQ(KsDistanceOfShift(xs, 1.5), 0.5);
+  EXPECT_EQ(KsDistanceOfShift(xs, 3.5), 0.75);
+  EXPECT_EQ(KsDistanceOfShift(xs, 6.5), 1.0);
+  // The same as the two-sample statistic of the sample and its shifted copy.
+  for (double delta : {0.5, 1.5, 2.5, 3.5, 5.5, 6.5}) {
+    std::vector<double> shifted = xs;
+    for (double& x : shifted) x += delta;
+    EXPECT_EQ(KsDistanceOfShift(xs, delta), KolmogorovSmirnovTest(xs, shifted).distance)
+        << delta;
+  }
+}
+
+TEST(KsShift, EquivalentShiftIsTheSmallestShiftReachingTheDistance) {
+  const std::vector<double> xs = {7, 1, 4, 2};
+  EXPECT_EQ(KsEquivalentShift(xs, 0.0), 0.0);
+  EXPECT_EQ(KsEquivalentShift(xs, 0.25), 0.0);  // any difference at all gives 1/n
+  EXPECT_EQ(KsEquivalentShift(xs, 0.5), 1.0);   // 2 - 1
+  EXPECT_EQ(KsEquivalentShift(xs, 0.75), 3.0);  // 4 - 1
+  EXPECT_EQ(KsEquivalentShift(xs, 1.0), 6.0);   // 7 - 1
+  EXPECT_EQ(KsEquivalentShift(xs, 0.5 + 1e-15), 1.0);  // a distance's rounding
+  EXPECT_EQ(KsEquivalentShift({3.0}, 1.0), 0.0);
+  // Just above it the shifted sample reaches the distance; at it, not yet.
+  for (double d : {0.5, 0.75, 1.0}) {
+    const double shift = KsEquivalentShift(xs, d);
+    EXPECT_GE(KsDistanceOfShift(xs, shift + 1e-9), d) << d;
+    EXPECT_LT(KsDistanceOfShift(xs, shift), d) << d;
+  }
+  EXPECT_THROW(KsEquivalentShift(xs, 1.5), std::invalid_argument);
+  EXPECT_THROW(KsEquivalentShift({}, 0.5), std::invalid_argument);
+  EXPECT_THROW(KsDistanceOfShift(xs, -1.0), std::invalid_argument);
 }
 
 }  // namespace

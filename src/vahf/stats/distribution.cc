@@ -1,7 +1,6 @@
 #include "vahf/stats/distribution.h"
 
 #include <fmt/format.h>
-#include <gsl/gsl_cdf.h>
 #include <gsl/gsl_statistics_double.h>
 
 #include <algorithm>
@@ -76,25 +75,39 @@ double KolmogorovQ(double lambda) {
   return std::clamp(2 * sum, 0.0, 1.0);
 }
 
-double NormalShiftForKsDistance(double distance, double sd) {
-  if (!(distance >= 0 && distance <= 1))
-    throw std::invalid_argument(fmt::format(
-        "NormalShiftForKsDistance: distance = {}: must lie in [0, 1]", distance));
-  if (!(sd >= 0) || !std::isfinite(sd))
+double KsDistanceOfShift(const std::vector<double>& xs, double delta) {
+  internal::RequireFinite(xs, "KsDistanceOfShift");
+  internal::RequireSize(xs, 1, "KsDistanceOfShift");
+  if (!(delta >= 0) || !std::isfinite(delta))
     throw std::invalid_argument(
-        fmt::format("NormalShiftForKsDistance: sd = {}: must be finite and >= 0", sd));
-  if (distance == 0) return 0.0;
-  // Distinct distributions that no normal of this sd separates by D < 1.
-  if (distance == 1 || sd == 0) return std::numeric_limits<double>::infinity();
-  return 2 * sd * gsl_cdf_ugaussian_Pinv(0.5 * (1 + distance));
+        fmt::format("KsDistanceOfShift: delta = {}: must be finite and >= 0", delta));
+  std::vector<double> s = xs;
+  std::sort(s.begin(), s.end());
+  // The most order statistics i..j with s[j] - s[i] < delta (a window
+  // (x - delta, x] ending at s[j] holds them), by two pointers.
+  std::size_t most = 0;
+  for (std::size_t i = 0, j = 0; j < s.size(); ++j) {
+    while (!(s[j] - s[i] < delta) && i < j) ++i;
+    if (s[j] - s[i] < delta) most = std::max(most, j - i + 1);
+  }
+  return static_cast<double>(most) / static_cast<double>(s.size());
 }
 
-double KsDistanceOfNormalShift(double delta, double sd) {
-  if (!(delta >= 0) || !(sd > 0) || !std::isfinite(sd))
-    throw std::invalid_argument(fmt::format(
-        "KsDistanceOfNormalShift: delta = {}, sd = {}: need delta >= 0, finite sd > 0",
-        delta, sd));
-  return 2 * gsl_cdf_ugaussian_P(delta / (2 * sd)) - 1;
+double KsEquivalentShift(const std::vector<double>& xs, double distance) {
+  internal::RequireFinite(xs, "KsEquivalentShift");
+  internal::RequireSize(xs, 1, "KsEquivalentShift");
+  if (!(distance >= 0 && distance <= 1))
+    throw std::invalid_argument(
+        fmt::format("KsEquivalentShift: distance = {}: must lie in [0, 1]", distance));
+  std::vector<double> s = xs;
+  std::sort(s.begin(), s.end());
+  const std::size_t n = s.size();
+  // k = ceil(n D), with room for the rounding of a distance i/n - j/n.
+  const auto k = static_cast<std::size_t>(std::ceil(distance * static_cast<double>(n) - 1e-9));
+  if (k <= 1) return 0.0;
+  double shift = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + k <= n; ++i) shift = std::min(shift, s[i + k - 1] - s[i]);
+  return shift;
 }
 
 }  // namespace vahf::stats

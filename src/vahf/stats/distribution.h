@@ -1,7 +1,7 @@
 // Comparing two distributions (the precision experiment: completion times
 // under a setting against the reference): sample quantiles, the two-sample
-// Kolmogorov-Smirnov distance with its asymptotic p-value, and the location
-// shift of a normal distribution that a KS distance amounts to.
+// Kolmogorov-Smirnov distance with its asymptotic p-value, and the shift of a
+// sample that a KS distance amounts to.
 #pragma once
 
 #include <cstddef>
@@ -43,17 +43,24 @@ KolmogorovSmirnov KolmogorovSmirnovTest(const std::vector<double>& a,
 // (Numerical Recipes, 3rd ed., Sec. 6.14.12). Q(0) = 1; lambda >= 0.
 double KolmogorovQ(double lambda);
 
-// The shift delta between two normal distributions of standard deviation sd
-// whose Kolmogorov-Smirnov distance is D: sup_x |Phi((x - mu)/sd) -
-// Phi((x - mu - delta)/sd)| is taken at the midpoint x = mu + delta/2, where it
-// is 2 Phi(delta / (2 sd)) - 1; so delta = 2 sd Phi^-1((1 + D) / 2). It puts
-// a KS distance in the unit of the completion time, to set it against the
-// Monte Carlo noise. D in [0, 1], sd >= 0; D = 0 gives 0, and D = 1 or sd = 0
-// with D > 0 (distributions no normal shift explains) infinity.
-double NormalShiftForKsDistance(double distance, double sd);
+// The KS distance between the sample and itself shifted by delta >= 0:
+// sup_x F(x) - F(x - delta), the largest share of the sample in a window
+// (x - delta, x]. It is k/n once delta exceeds the smallest span
+// x_(i+k-1) - x_(i) of k consecutive order statistics. n >= 1.
+double KsDistanceOfShift(const std::vector<double>& xs, double delta);
 
-// The inverse: the KS distance 2 Phi(delta / (2 sd)) - 1 of two normal
-// distributions of standard deviation sd > 0 whose means differ by delta >= 0.
-double KsDistanceOfNormalShift(double delta, double sd);
+// A KS distance D in the unit of the data: the smallest shift of the sample
+// xs whose KS distance from xs itself reaches D, inf {delta : KsDistanceOfShift
+// (xs, delta) >= D}; with k = ceil(n D), that is 0 for k <= 1 and the
+// smallest span of k consecutive order statistics otherwise. D is the
+// distance of two samples of xs's size n (a multiple of 1/n), in [0, 1].
+//
+// It is read off the sample rather than a model (a normal distribution would
+// give 2 sd Phi^-1((1 + D)/2)), so it respects the resolution of a small
+// sample: a distance of 1/n, which any difference at all produces, is worth no
+// shift, and a distance the sample cannot tell from a shift of delta is worth
+// less than delta. Use: is the KS distance of a setting's completion times from
+// the reference's more than a shift by the Monte Carlo noise would make?
+double KsEquivalentShift(const std::vector<double>& xs, double distance);
 
 }  // namespace vahf::stats
