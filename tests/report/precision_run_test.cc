@@ -93,6 +93,10 @@ Output RunAndWrite(const scene::ExperimentFile& file, int threads) {
 }
 
 void WritesTheDocumentedFiles(const Output& one) {
+  const std::string report = Read(std::filesystem::path(one.dir) / "report.md");
+  EXPECT_NE(report.find("cycles per condition: peg_in_hole 3\n"), std::string::npos);
+  EXPECT_EQ(report.find("The paper's claims"), std::string::npos);  // precision has none
+  EXPECT_NE(report.find("**Recommended for peg_in_hole: "), std::string::npos);
   for (const char* f :
        {"manifest.json", "report.md", "summary.json", "measured.json", "precision_trials.csv",
         "precision_settings.csv", "precision_wall.csv",

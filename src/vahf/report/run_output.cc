@@ -37,8 +37,19 @@ void AddInputs(const scene::ExperimentFile& f, std::vector<std::string>* paths) 
   if (!f.paper_table_path.empty()) add(f.paper_table_path);
 }
 
-// "10", or for a paper run each experiment's: "table1 8, fatigue 12".
+// "10", or for a paper run each experiment's: "table1 8, fatigue 12", or for
+// a precision run each scene's: "hydraulic_cylinder 3, peg_in_hole 8".
 std::string CyclesPerCondition(const experiment::ExperimentRun& run) {
+  if (run.file->kind == "precision") {
+    std::string out;
+    std::string last;
+    for (const experiment::Condition& c : run.run.conditions) {
+      if (c.group == last) continue;
+      last = c.group;
+      out += fmt::format("{}{} {}", out.empty() ? "" : ", ", c.group, c.trials);
+    }
+    return out;
+  }
   if (run.parts.empty()) return std::to_string(run.trials);
   std::string out;
   for (const auto& p : run.parts)
