@@ -106,6 +106,26 @@ json Paper(const std::vector<std::string>& listed) {
           {"experiments", listed}};
 }
 
+json Accuracy(const std::string& integrator, double accuracy) {
+  return {{"simulation/integrator", integrator}, {"simulation/accuracy", accuracy}};
+}
+
+json Precision() {
+  return {{"format", "vahf-experiment/1"},
+          {"name", "precision_test"},
+          {"kind", "precision"},
+          {"seed", 3},
+          {"trials", 4},
+          {"scenes", {SourcePath("experiments/scenes/peg_in_hole.json"),
+                      {{"scene", CylinderScene()}, {"trials", 2}}}},
+          {"reference", Accuracy("RungeKuttaMerson", 1e-8)},
+          {"settings",
+           {Accuracy("RungeKuttaMerson", 1e-3), Accuracy("CPodes", 2.5e-5),
+            {{"visibility/grid", 16}}, {{"contact/shell_spacing", 0.004}},
+            {{"simulation/accuracy", 1e-5}}}},
+          {"noise_trials", 10}};
+}
+
 // Writes `doc` to DIR/experiment.json and expects LoadExperiment to throw an
 // InputError naming that file at `where`, whose rule contains `rule` and,
 // unless `value` is empty, whose value contains `value` (ignoring case).
@@ -134,7 +154,8 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       {"assembly_time.json", "assembly_time"},
       {"human_factors_groups.json", "human_factors_groups"},
       {"fatigue.json", "fatigue"},
-      {"paper.json", "paper"}};
+      {"paper.json", "paper"},
+      {"precision.json", "precision"}};
   std::set<std::string> found;
   for (const auto& entry :
        std::filesystem::directory_iterator(SourcePath("experiments"))) {
@@ -150,6 +171,8 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
     EXPECT_EQ(e.seed, 1u) << name;
     if (e.kind == "paper") {
       EXPECT_TRUE(e.scene_path.empty()) << name;
+    } else if (e.kind == "precision") {  // its first scene
+      EXPECT_EQ(e.scene_path, e.precision.scenes.at(0).path) << name;
     } else {
       EXPECT_TRUE(std::filesystem::equivalent(e.scene_path, CylinderScene())) << name;
       EXPECT_EQ(e.scene.name, "hydraulic_cylinder") << name;
@@ -704,6 +727,226 @@ TEST(PaperErrorsTest, ErrorInAListedExperimentNamesThatFile) {
 }
 
 // ---------------------------------------------------------------------------
+// Precision experiments (precision).
+
+TEST(PrecisionTest, ScenesReferenceAndSettingsLoad) {
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Precision()));
+  const PrecisionDesign& d = e.precision;
+  EXPECT_EQ(d.noise_trials, 10);
+  EXPECT_EQ(d.reference.label, "reference: RungeKuttaMerson 1e-8");
+  EXPECT_EQ(d.reference.pointer, "/reference");
+  std::vector<std::string> labels, pointers;
+  for (const PrecisionSetting& s : d.settings) {
+    labels.push_back(s.label);
+    pointers.push_back(s.pointer);
+  }
+  EXPECT_THAT(labels, ElementsAre("RungeKuttaMerson 1e-3", "CPodes 2.5e-5",
+                                  "visibility/grid 16", "contact/shell_spacing 4e-3",
+                                  "simulation/accuracy 1e-5"));
+  EXPECT_THAT(pointers, ElementsAre("/settings/0", "/settings/1", "/settings/2",
+                                    "/settings/3", "/settings/4"));
+  EXPECT_TRUE(d.settings[0].AccuracyOnly());
+  EXPECT_FALSE(d.settings[2].AccuracyOnly());
+  EXPECT_TRUE(d.settings[4].AccuracyOnly());  // the scene's integrator
+  ASSERT_EQ(d.scenes.size(), 2u);
+  EXPECT_EQ(d.scenes[0].scene.name, "peg_in_hole");
+  EXPECT_EQ(d.scenes[0].trials, 0);  // the file's
+  EXPECT_EQ(d.scenes[1].scene.name, "hydraulic_cylinder");
+  EXPECT_EQ(d.scenes[1].trials, 2);
+  EXPECT_EQ(e.scene_path, d.scenes[0].path);  // the manifest's scene
+  EXPECT_EQ(e.trials, 4);
+}
+
+// Each setting is applied on top of each scene's own parameters: what it does
+// not set keeps the scene's value (the cylinder sets shell_spacing 2 mm,
+// hand_mass 1.5 kg and time_limit 10 s).
+TEST(PrecisionTest, ASettingKeepsTheScenesOtherParameters) {
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Precision()));
+  const PrecisionScene& cylinder = e.precision.scenes[1];
+  const Parameters& scene = cylinder.scene.params;
+  EXPECT_DOUBLE_EQ(scene.contact.shell_spacing, 0.002);
+  EXPECT_EQ(scene.simulation.integrator, "RungeKuttaMerson");
+  EXPECT_DOUBLE_EQ(scene.simulation.accuracy, 1e-4);
+
+  const Parameters& cpodes = cylinder.settings[1].params;
+  EXPECT_EQ(cpodes.simulation.integrator, "CPodes");
+  EXPECT_DOUBLE_EQ(cpodes.simulation.accuracy, 2.5e-5);
+  EXPECT_DOUBLE_EQ(cpodes.contact.shell_spacing, 0.002);
+  EXPECT_DOUBLE_EQ(cpodes.guidance.hand_mass, 1.5);
+  EXPECT_DOUBLE_EQ(cpodes.simulation.time_limit, 10.0);
+
+  const Parameters& grid = cylinder.settings[2].params;
+  EXPECT_EQ(grid.visibility.grid, 16);
+  EXPECT_DOUBLE_EQ(grid.simulation.accuracy, 1e-4);  // the scene's, not the reference's
+
+  const Parameters& shell = cylinder.settings[3].params;
+  EXPECT_DOUBLE_EQ(shell.contact.shell_spacing, 0.004);
+  const Parameters& accuracy = cylinder.settings[4].params;
+  EXPECT_EQ(accuracy.simulation.integrator, "RungeKuttaMerson");
+  EXPECT_DOUBLE_EQ(accuracy.simulation.accuracy, 1e-5);
+
+  EXPECT_DOUBLE_EQ(cylinder.reference.params.simulation.accuracy, 1e-8);
+  EXPECT_DOUBLE_EQ(cylinder.reference.params.contact.shell_spacing, 0.002);
+  // The peg sets no shell spacing: the default.
+  EXPECT_DOUBLE_EQ(e.precision.scenes[0].settings[1].params.contact.shell_spacing,
+                   Parameters().contact.shell_spacing);
+}
+
+TEST(PrecisionTest, NoiseTrialsDefault) {
+  json doc = Precision();
+  doc.erase("noise_trials");
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
+  EXPECT_EQ(e.precision.noise_trials, PrecisionDesign::kDefaultNoiseTrials);
+  // The most cycles per condition of any paper experiment.
+  int most = 0;
+  for (const ExperimentFile& x :
+       LoadExperiment(SourcePath("experiments/paper.json")).experiments)
+    most = std::max(most, x.trials);
+  EXPECT_EQ(PrecisionDesign::kDefaultNoiseTrials, most);
+}
+
+TEST(PrecisionTest, LabelsAreReadable) {
+  using Overrides = std::vector<std::pair<std::string, json>>;
+  EXPECT_EQ(SettingLabel(Overrides{{"simulation/accuracy", 1e-4},
+                                   {"simulation/integrator", "CPodes"}}),
+            "CPodes 1e-4");
+  EXPECT_EQ(SettingLabel(Overrides{{"visibility/grid", 16}}), "visibility/grid 16");
+  EXPECT_EQ(SettingLabel(Overrides{{"contact/stiffness", 1e10}}), "contact/stiffness 1e10");
+  EXPECT_EQ(SettingLabel(Overrides{{"guidance/kappa", 400.0}}), "guidance/kappa 400");
+  EXPECT_EQ(SettingLabel(Overrides{{"simulation/accuracy", 0.05}}),
+            "simulation/accuracy 0.05");
+  EXPECT_EQ(SettingLabel(Overrides{{"simulation/accuracy", 1.0 / 3e6}}),
+            "simulation/accuracy 3.3333333333333335e-7");
+  EXPECT_EQ(SettingLabel(Overrides{{"visibility/mode", "off"}, {"visibility/grid", 8}}),
+            "visibility/mode off, visibility/grid 8");
+  EXPECT_EQ(SettingLabel(Overrides{}), "scene parameters");
+}
+
+TEST(PrecisionTest, CheckListsScenesReferenceAndSettings) {
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Precision()));
+  const std::string text = DescribePrecision(e);
+  EXPECT_THAT(text, HasSubstr("Monte Carlo noise of an experiment with 10 cycles"));
+  EXPECT_THAT(text, HasSubstr("peg_in_hole ("));
+  EXPECT_THAT(text, HasSubstr("): 1 part(s), 4 cycles per setting"));
+  EXPECT_THAT(text, HasSubstr("): 3 part(s), 2 cycles per setting"));
+  EXPECT_THAT(text, HasSubstr("reference: RungeKuttaMerson 1e-8 (/reference): "
+                              "simulation/accuracy = 1e-08, simulation/integrator = "
+                              "\"RungeKuttaMerson\""));
+  EXPECT_THAT(text, HasSubstr("settings (5):"));
+  EXPECT_THAT(text, HasSubstr("visibility/grid 16"));
+  EXPECT_THAT(text, HasSubstr("(/settings/3): contact/shell_spacing = 0.004"));
+}
+
+TEST(PrecisionErrorsTest, UnknownParameterName) {
+  json doc = Precision();
+  doc["settings"][1]["simulation/acuracy"] = 1e-4;
+  ExpectError(doc, "/settings/1/simulation~1acuracy",
+              "unknown key 'simulation/acuracy' (did you mean 'simulation/accuracy'?)",
+              "0.0001");
+  doc = Precision();
+  doc["reference"]["accuracy"] = 1e-8;
+  ExpectError(doc, "/reference/accuracy", "unknown key 'accuracy'");
+}
+
+TEST(PrecisionErrorsTest, ValueBreaksTheParametersRule) {
+  json doc = Precision();
+  doc["settings"][3] = Accuracy("RungeKuttaMerson", -1e-3);
+  ExpectError(doc, "/settings/3/simulation~1accuracy", "must be > 0", "-0.001");
+  doc["settings"][3] = Accuracy("RungeKutta4", 1e-3);
+  ExpectError(doc, "/settings/3/simulation~1integrator", "must be one of", "\"RungeKutta4\"");
+  doc["settings"][3] = {{"visibility/grid", 2.5}};
+  ExpectError(doc, "/settings/3/visibility~1grid", "must be an integer", "2.5");
+  doc["settings"][3] = {{"guidance/weight_support", 1.5}};
+  ExpectError(doc, "/settings/3/guidance~1weight_support", "must lie in [0, 1]", "1.5");
+  doc = Precision();
+  doc["reference"]["simulation/accuracy"] = "1e-8";
+  ExpectError(doc, "/reference/simulation~1accuracy", "must be a number, not a string");
+}
+
+TEST(PrecisionErrorsTest, WholeMessageNamesFilePointerValueAndRule) {
+  json doc = Precision();
+  doc["settings"][3] = Accuracy("CPodes", 0);
+  const std::string path = WriteJson(TestDir() / "experiment.json", doc);
+  try {
+    LoadExperiment(path);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": /settings/3/simulation~1accuracy = 0.0: must be > 0");
+  }
+}
+
+// The rules that tie parameters together are checked on each scene with the
+// setting applied, and name the setting.
+TEST(PrecisionErrorsTest, RulesThatTieParametersTogether) {
+  json doc = Precision();
+  doc["settings"][2] = {{"sight/plateau_from_deg", 50}};  // beyond plateau_to_deg 45
+  ExpectError(doc, "/settings/2", "applied to scene 'peg_in_hole'");
+  ExpectError(doc, "/settings/2", "the plateau must satisfy 0 < plateau_from_deg (50)");
+  doc = Precision();
+  doc["reference"]["reach/d1_arm_fraction"] = 1.0;  // D1 = 0.74 m > D2 = 0.68 m
+  ExpectError(doc, "/reference", "reach breakpoints must increase for this operator");
+}
+
+TEST(PrecisionErrorsTest, RequiredKeysAndTheirShapes) {
+  for (const char* key : {"scenes", "reference", "settings"}) {
+    SCOPED_TRACE(key);
+    json doc = Precision();
+    doc.erase(key);
+    ExpectError(doc, std::string("/") + key,
+                std::string("required field '") + key + "' is missing", "(missing)");
+  }
+  json doc = Precision();
+  doc["settings"] = json::array();
+  ExpectError(doc, "/settings", "at least 1 element");
+  doc["settings"] = {Accuracy("CPodes", 1e-4), "fast"};
+  ExpectError(doc, "/settings/1", "must be an object, not a string", "\"fast\"");
+  doc = Precision();
+  doc["reference"] = 1e-8;
+  ExpectError(doc, "/reference", "must be an object, not a number");
+  doc = Precision();
+  doc["scenes"] = json::array();
+  ExpectError(doc, "/scenes", "at least 1 element");
+}
+
+TEST(PrecisionErrorsTest, RepeatedSettings) {
+  json doc = Precision();
+  doc["settings"].push_back(Accuracy("CPodes", 2.5e-5));
+  ExpectError(doc, "/settings/5", "repeats the setting at /settings/1");
+  doc = Precision();
+  doc["settings"][2] = Accuracy("RungeKuttaMerson", 1e-8);
+  ExpectError(doc, "/settings/2", "repeats the reference");
+}
+
+TEST(PrecisionErrorsTest, NoiseTrialsOutOfRange) {
+  json doc = Precision();
+  doc["noise_trials"] = 0;
+  ExpectError(doc, "/noise_trials", "must lie in [1, 10000000]", "0");
+  doc["noise_trials"] = 2.5;
+  ExpectError(doc, "/noise_trials", "must be an integer", "2.5");
+}
+
+TEST(PrecisionErrorsTest, Scenes) {
+  json doc = Precision();
+  doc["scenes"][1] = "no_such_scene.json";
+  ExpectError(doc, "/scenes/1", "no scene file at", "no_such_scene.json");
+  doc = Precision();
+  doc["scenes"][1]["trials"] = 0;
+  ExpectError(doc, "/scenes/1/trials", "must lie in [1, 10000000]", "0");
+  doc = Precision();
+  doc["scenes"][1]["trails"] = 3;
+  ExpectError(doc, "/scenes/1/trails", "did you mean 'trials'?");
+  doc = Precision();
+  doc["scenes"][1] = {{"trials", 3}};
+  ExpectError(doc, "/scenes/1/scene", "required field 'scene' is missing");
+  doc = Precision();
+  doc["scenes"].push_back(SourcePath("experiments/scenes/peg_in_hole.json"));
+  ExpectError(doc, "/scenes/2", "scene names must be unique in a precision experiment");
+  doc = Precision();
+  doc["scene"] = CylinderScene();
+  ExpectError(doc, "/scene", "a precision experiment names its scenes in \"scenes\"");
+}
+
+// ---------------------------------------------------------------------------
 // A key that only another kind reads is an error naming the key and the kind.
 
 struct WrongKindCase {
@@ -722,9 +965,13 @@ TEST(WrongKindTest, EachKeyWithEachOtherKind) {
       {"fatigue", {{"segments", 4}}, "fatigue"},
       {"paper_table", SourcePath("reference/paper/table1.json"), "table1"},
       {"experiments", json::array({SourcePath("experiments/table1.json")}), "paper"},
+      {"scenes", json::array({CylinderScene()}), "precision"},
+      {"reference", {{"simulation/accuracy", 1e-8}}, "precision"},
+      {"settings", json::array({{{"simulation/accuracy", 1e-3}}}), "precision"},
+      {"noise_trials", 12, "precision"},
   };
-  const std::vector<std::string> kinds = {"table1", "assembly_time",
-                                          "human_factors_groups", "fatigue", "paper"};
+  const std::vector<std::string> kinds = {"table1", "assembly_time", "human_factors_groups",
+                                          "fatigue", "paper", "precision"};
   for (const WrongKindCase& c : cases) {
     for (const std::string& kind : kinds) {
       if (kind == c.reader) continue;
@@ -732,6 +979,8 @@ TEST(WrongKindTest, EachKeyWithEachOtherKind) {
       json doc;
       if (kind == "paper") {
         doc = Paper({SourcePath("experiments/table1.json")});
+      } else if (kind == "precision") {
+        doc = Precision();
       } else if (kind == "human_factors_groups") {
         doc = HumanFactorsGroups();
       } else {

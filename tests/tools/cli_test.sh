@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Tests of the vahf command's exit status and output: `check` on a valid scene,
 # a malformed scene (one-line error naming the file, JSON pointer and rule,
-# exit 2), a missing file and invalid JSON (exit 2); `reference`; `--help`; and
-# bad options (exit 2); `run`: the same results digest on 1 and 2 threads, a
-# bad experiment (exit 2), an --out that is not a vahf output (refused, exit 2,
-# untouched) and SIGINT (exit 130, no output directory left).
+# exit 2), a missing file and invalid JSON (exit 2), the precision experiment
+# (its settings listed) and a bad precision setting (exit 2); `reference`;
+# `--help`; and bad options (exit 2); `run`: the same results digest on 1 and
+# 2 threads, a bad experiment (exit 2), an --out that is not a vahf output
+# (refused, exit 2, untouched) and SIGINT (exit 130, no output directory left).
 #
 # Usage: cli_test.sh VAHF_EXECUTABLE REPO_ROOT
 set -uo pipefail
@@ -156,6 +157,29 @@ EOF
 run check "$experiment"
 expect_status "check experiment" 0
 expect_in "check experiment" "$out" "valid experiment"
+
+# --- check: the precision experiment lists its scenes, reference and settings.
+run check "$root/experiments/precision.json"
+expect_status "check precision" 0
+for text in "kind precision" "peg_in_hole (" "hydraulic_cylinder (" \
+    "reference: RungeKuttaMerson 1e-8 (/reference)" "settings (9):" \
+    "RungeKuttaMerson 1e-3" "CPodes 1e-6" "(/settings/8): simulation/accuracy = 1e-06" \
+    "valid experiment"; do
+  expect_in "check precision" "$out" "$text"
+done
+
+# --- check: a precision setting naming no parameter: one line, the pointer, the rule.
+bad_precision=$tmp/bad_precision.json
+cat >"$bad_precision" <<EOF
+{"format": "vahf-experiment/1", "name": "bad_precision", "kind": "precision",
+ "scenes": ["$scene"], "reference": {"simulation/accuracy": 1e-8},
+ "settings": [{"simulation/acuracy": 1e-4}]}
+EOF
+run check "$bad_precision"
+expect_status "check precision with an unknown parameter" 2
+expect_lines "check precision with an unknown parameter" "$err" 1
+expect_in "check precision with an unknown parameter" "$err" \
+  "$bad_precision: /settings/0/simulation~1acuracy = 0.0001: unknown key 'simulation/acuracy' (did you mean 'simulation/accuracy'?)"
 
 # --- check without a file is a usage error.
 run check

@@ -37,7 +37,9 @@ int Check(const std::string& path) {
                 e.kind == "paper"
                     ? ""
                     : (", " + std::to_string(e.trials) + " cycles per condition").c_str());
-    if (e.kind == "paper") {
+    if (e.kind == "precision") {
+      std::fputs(vahf::scene::DescribePrecision(e).c_str(), stdout);
+    } else if (e.kind == "paper") {
       for (const vahf::scene::ExperimentFile& x : e.experiments)
         std::printf("  %s (%s): kind %s, %d cycles per condition, scene %s\n",
                     x.name.c_str(), x.file.c_str(), x.kind.c_str(), x.trials,

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "vahf/core/error.h"
+#include "vahf/experiment/precision_design.h"
 
 namespace vahf::experiment {
 
@@ -12,13 +15,17 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
   VAHF_CHECK(trials >= 1, "at least one cycle per condition");
   DesignRun out;
   out.conditions = std::move(conditions);
-  const std::size_t n = static_cast<std::size_t>(trials);
-  const std::size_t total = out.conditions.size() * n;
+  // Condition c's cycles are indices [first[c], first[c + 1]) of the run.
+  std::vector<std::size_t> first = {0};
+  for (const Condition& c : out.conditions)
+    first.push_back(first.back() + static_cast<std::size_t>(c.trials > 0 ? c.trials : trials));
   const auto& conds = out.conditions;
-  out.records = RunIndexed<CycleRecord>(total, options, [&](std::size_t k) {
+  out.records = RunIndexed<CycleRecord>(first.back(), options, [&](std::size_t k) {
     CycleRecord r;
-    r.condition = k / n;
-    const std::size_t j = k % n;
+    r.condition = static_cast<std::size_t>(
+        std::upper_bound(first.begin(), first.end(), k) - first.begin() - 1);
+    const std::size_t j = k - first[r.condition];
+    const std::size_t n = first[r.condition + 1] - first[r.condition];
     r.cycle = first_cycle + j;
     const Condition& c = conds[r.condition];
     const double u = (static_cast<double>(j) + 0.5) / static_cast<double>(n);
@@ -107,10 +114,13 @@ ExperimentRun RunExperiment(const scene::ExperimentFile& file, const RunSettings
       conditions.push_back(c);
     }
     out.run = RunDesign(conditions, out.trials, out.seed, false, options);
+  } else if (kind == "precision") {
+    out.run = RunDesign(PrecisionConditions(file, settings.trials), out.trials, out.seed,
+                        false, options);
   } else {
     throw InputError(file.file, "/kind", kind,
-                     "vahf run runs table1, assembly_time, human_factors_groups, fatigue "
-                     "and paper");
+                     "vahf run runs table1, assembly_time, human_factors_groups, fatigue, "
+                     "precision and paper");
   }
   return out;
 }

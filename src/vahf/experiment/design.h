@@ -9,6 +9,8 @@
 //   fatigue               a pilot at A = 0 that measures the operator's work
 //                         rate, then one condition per segment of the hour
 //                         (Sec. 5.4), see RunExperiment;
+//   precision             per scene, the reference and one condition per
+//                         setting of the integrator or model (precision_design.h);
 //   paper                 each experiment it lists.
 #pragma once
 
@@ -24,9 +26,10 @@
 namespace vahf::experiment {
 
 struct Condition {
-  std::string name;   // operator, working condition or segment
-  std::string group;  // an operator's sex; empty otherwise
+  std::string name;   // operator, working condition, segment or precision setting
+  std::string group;  // an operator's sex; a precision setting's scene; else empty
   std::shared_ptr<const scene::Scene> scene;
+  int trials = 0;     // > 0: this condition's cycles instead of RunDesign's `trials`
   // Cycle j of N starts at minute start + (end - start) (j + 0.5) / N of the
   // operator's working time, with the work A done by then (fatigue; else 0).
   double minute_start = 0, minute_end = 0;
@@ -46,8 +49,9 @@ struct DesignRun {
   std::vector<CycleRecord> records;  // condition-major, then cycle: fixed order
 };
 
-// Runs `trials` cycles of every condition, with stream indices first_cycle,
-// first_cycle + 1, ... Same inputs: the same records, whatever options.threads.
+// Runs `trials` cycles of every condition (or the condition's own `trials`),
+// with stream indices first_cycle, first_cycle + 1, ... Same inputs: the same
+// records, whatever options.threads.
 DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t seed,
                     bool record_trace, const RunnerOptions& options,
                     std::uint64_t first_cycle = 0);

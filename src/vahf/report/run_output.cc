@@ -4,6 +4,7 @@
 
 #include <map>
 
+#include "vahf/core/error.h"
 #include "vahf/report/manifest.h"
 #include "vahf/report/output_directory.h"
 #include "vahf/report/plot.h"
@@ -32,11 +33,23 @@ void AddInputs(const scene::ExperimentFile& f, std::vector<std::string>* paths) 
   };
   add(f.scene_path);
   for (const auto& c : f.conditions) add(c.scene_path);
+  for (const auto& s : f.precision.scenes) add(s.path);
   if (!f.paper_table_path.empty()) add(f.paper_table_path);
 }
 
-// "10", or for a paper run each experiment's: "table1 8, fatigue 12".
+// "10", or for a paper run each experiment's: "table1 8, fatigue 12", or for
+// a precision run each scene's: "hydraulic_cylinder 3, peg_in_hole 8".
 std::string CyclesPerCondition(const experiment::ExperimentRun& run) {
+  if (run.file->kind == "precision") {
+    std::string out;
+    std::string last;
+    for (const experiment::Condition& c : run.run.conditions) {
+      if (c.group == last) continue;
+      last = c.group;
+      out += fmt::format("{}{} {}", out.empty() ? "" : ", ", c.group, c.trials);
+    }
+    return out;
+  }
   if (run.parts.empty()) return std::to_string(run.trials);
   std::string out;
   for (const auto& p : run.parts)
@@ -44,7 +57,11 @@ std::string CyclesPerCondition(const experiment::ExperimentRun& run) {
   return out;
 }
 
+// The claims of every section; nothing when no section tests one (precision).
 std::string ClaimsMarkdown(const std::vector<Section>& sections) {
+  bool any = false;
+  for (const Section& s : sections) any = any || !s.summary.at("claims").empty();
+  if (!any) return "";
   std::string md =
       "## The paper's claims\n\n| claim | reproduced | test | evidence |\n"
       "| --- | --- | --- | --- |\n";
@@ -83,6 +100,21 @@ RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& 
     result_files.push_back(name);
   }
   const std::string digest = ResultsDigest(results);
+  // Measured files: written, never digested.
+  std::vector<std::string> measured_files;
+  nlohmann::json measured;
+  for (const Section& s : sections) {
+    for (const auto& [name, table] : s.measured_tables) {
+      VAHF_CHECK(!results.count(name), "a measured file is named as a result file");
+      out.Write(name, table.ToCsv());
+      measured_files.push_back(name);
+    }
+    if (!s.measured.is_null()) measured["sections"][s.kind] = s.measured;
+  }
+  if (!measured.is_null()) {
+    out.Write("measured.json", measured.dump(1) + "\n");
+    measured_files.push_back("measured.json");
+  }
 
   // Manifest: the experiment file, the first scene, and every file read.
   const scene::ExperimentFile& first = run.parts.empty() ? file : *run.parts[0].file;
@@ -105,6 +137,7 @@ RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& 
     const InputFile f = DescribeInputFile(p);
     manifest["inputs"].push_back({{"path", f.path}, {"sha256", f.sha256}});
   }
+  if (!measured_files.empty()) manifest["measured_files"] = measured_files;
   if (!run.parts.empty()) {
     for (const auto& part : run.parts)
       manifest["experiments"].push_back({{"name", part.file->name},
@@ -140,6 +173,9 @@ RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& 
     md += "Tables: ";
     for (std::size_t k = 0; k < s.tables.size(); ++k)
       md += fmt::format("{}`{}`", k ? ", " : "", s.tables[k].first);
+    for (const auto& [name, table] : s.measured_tables)
+      md += fmt::format(", `{}` (measured, outside the digest)", name);
+    if (!s.measured.is_null()) md += ", `measured.json` (measured, outside the digest)";
     md += ".\n\n";
   }
   out.Write("report.md", md);

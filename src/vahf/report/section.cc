@@ -47,6 +47,7 @@ Section KindSection(const experiment::ExperimentRun& run) {
   if (kind == "assembly_time") return AssemblyTimeSection(run);
   if (kind == "human_factors_groups") return HumanFactorsGroupsSection(run);
   if (kind == "fatigue") return FatigueSection(run);
+  if (kind == "precision") return PrecisionSection(run);
   VAHF_CHECK(false, "no section for this kind");
   return {};
 }

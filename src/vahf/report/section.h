@@ -27,6 +27,12 @@ struct Section {
   nlohmann::json summary;  // always holds "claims": a list (possibly empty)
   std::string markdown;
   std::vector<Plot> plots;
+  // What this machine measured (wall times) and what follows from it: written
+  // beside the results but outside the results digest (docs/outputs.md,
+  // "Measured files"), as tables and as this section's part of measured.json
+  // (null: none).
+  std::vector<std::pair<std::string, Table>> measured_tables;
+  nlohmann::json measured;
 };
 
 // A claim of the paper tested on the run: `reproduced` when the statistical
@@ -40,13 +46,15 @@ nlohmann::json Claim(const std::string& claim, bool reproduced, const std::strin
 std::string MeanCi(const stats::Summary& s);
 
 // One row per part trial of every cycle: condition, group, cycle, part,
-// status, start and completion times, work. Every kind writes it.
+// status, start and completion times, work. Every paper kind writes it.
 Table CyclesTable(const experiment::DesignRun& run);
 
 Section Table1Section(const experiment::ExperimentRun& run);
 Section AssemblyTimeSection(const experiment::ExperimentRun& run);
 Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run);
 Section FatigueSection(const experiment::ExperimentRun& run);
+// Error against run time of each setting (report/precision.h).
+Section PrecisionSection(const experiment::ExperimentRun& run);
 
 // The section of a run of any kind but "paper", with its numerical health
 // (health.h) in summary["health"] and at the end of its markdown.

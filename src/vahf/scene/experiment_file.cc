@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
 
+#include "vahf/core/error.h"
 #include "vahf/scene/json_reader.h"
+#include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
 
 namespace vahf::scene {
@@ -58,13 +61,168 @@ std::vector<OperatorEntry> ReadOperators(const JsonNode& node, const Scene& scen
   return out;
 }
 
+// A number for a label: shortest exact form, scientific (1e-4, 2.5e-3) when
+// small or large.
+std::string NumberText(double x) {
+  const double a = std::fabs(x);
+  if (a == 0 || (a >= 1e-2 && a < 1e5)) return fmt::format("{}", x);
+  for (int digits = 0;; ++digits) {
+    const std::string s = fmt::format("{:.{}e}", x, digits);
+    if (std::stod(s) != x && digits < 17) continue;
+    const std::size_t e = s.find('e');
+    std::string exponent = s.substr(e + 1);  // "-04", "+05"
+    const bool negative = exponent[0] == '-';
+    exponent = exponent.substr(1);
+    while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
+    return s.substr(0, e) + "e" + (negative ? "-" : "") + exponent;
+  }
+}
+
+std::string ValueText(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number_float()) return NumberText(v.get<double>());
+  return v.dump();
+}
+
+// A setting or the reference: an object of "group/key": value, each read by
+// the parameter table's rule (on a scratch copy: the scenes get them later).
+PrecisionSetting ReadSetting(const JsonNode& node) {
+  node.ExpectObject(ParamNames());
+  PrecisionSetting s;
+  s.pointer = node.path();
+  Parameters scratch;
+  for (const auto& item : node.json().items()) {
+    const JsonNode value = node.Required(item.key());
+    ReadParamValue(*FindParam(item.key()), value, &scratch);
+    s.overrides.emplace_back(item.key(), item.value());
+  }
+  s.label = SettingLabel(s.overrides);
+  return s;
+}
+
+// The scene with the setting's overrides, checked by the rules that tie
+// parameters together (the scene loader's); a violation names the setting.
+Scene Apply(const Scene& scene, const PrecisionSetting& setting, const JsonNode& node) {
+  Scene out = scene;
+  for (const auto& [name, value] : setting.overrides)
+    ReadParamValue(*FindParam(name), node.Required(name), &out.params);
+  for (const std::string& violation :
+       {out.params.sight.Violation(), out.params.glance.Violation(),
+        out.params.reach.Violation(out.op.arm_length, out.op.height)})
+    if (!violation.empty())
+      node.Fail("applied to scene '" + scene.name + "' (" + scene.file + "): " + violation);
+  return out;
+}
+
+void ReadPrecision(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+  PrecisionDesign& d = e->precision;
+  if (auto scene = root.Optional("scene"))
+    scene->Fail("a precision experiment names its scenes in \"scenes\"");
+  const JsonNode reference = root.Required("reference");
+  d.reference = ReadSetting(reference);
+  d.reference.label = "reference: " + d.reference.label;
+  const JsonNode settings = root.Required("settings");
+  const std::size_t n = settings.ArraySize(1);
+  for (std::size_t k = 0; k < n; ++k) {
+    PrecisionSetting s = ReadSetting(settings.At(k));
+    if (s.overrides == d.reference.overrides)
+      settings.At(k).Fail("repeats the reference (it is compared with itself anyway)");
+    for (const PrecisionSetting& other : d.settings)
+      if (other.label == s.label)
+        settings.At(k).Fail("repeats the setting at " + other.pointer);
+    d.settings.push_back(std::move(s));
+  }
+  if (auto noise = root.Optional("noise_trials"))
+    d.noise_trials = static_cast<int>(noise->Integer(1, 10'000'000));
+
+  const JsonNode scenes = root.Required("scenes");
+  const std::size_t m = scenes.ArraySize(1);
+  for (std::size_t k = 0; k < m; ++k) {
+    const JsonNode entry = scenes.At(k);
+    PrecisionScene ps;
+    if (entry.json().is_object()) {
+      entry.ExpectObject({"scene", "trials"});
+      ps.path = ResolvePath(entry.Required("scene"), path, "scene");
+      if (auto t = entry.Optional("trials"))
+        ps.trials = static_cast<int>(t->Integer(1, 10'000'000));
+    } else {
+      ps.path = ResolvePath(entry, path, "scene");
+    }
+    ps.scene = LoadScene(ps.path);
+    for (const PrecisionScene& other : d.scenes)
+      if (other.scene.name == ps.scene.name)
+        entry.Fail("scene names must be unique in a precision experiment ('" +
+                   ps.scene.name + "' is also " + other.path + ")");
+    ps.reference = Apply(ps.scene, d.reference, reference);
+    for (std::size_t s = 0; s < n; ++s)
+      ps.settings.push_back(Apply(ps.scene, d.settings[s], settings.At(s)));
+    d.scenes.push_back(std::move(ps));
+  }
+  e->scene_path = d.scenes[0].path;
+  e->scene = d.scenes[0].scene;
+}
+
 }  // namespace
+
+bool PrecisionSetting::AccuracyOnly() const {
+  bool accuracy = false;
+  for (const auto& [name, value] : overrides) {
+    if (name == "simulation/accuracy") {
+      accuracy = true;
+    } else if (name != "simulation/integrator") {
+      return false;
+    }
+  }
+  return accuracy;
+}
+
+std::string SettingLabel(
+    const std::vector<std::pair<std::string, nlohmann::json>>& overrides) {
+  if (overrides.empty()) return "scene parameters";
+  const nlohmann::json* integrator = nullptr;
+  const nlohmann::json* accuracy = nullptr;
+  for (const auto& [name, value] : overrides) {
+    if (name == "simulation/integrator") integrator = &value;
+    if (name == "simulation/accuracy") accuracy = &value;
+  }
+  if (integrator && accuracy && overrides.size() == 2)
+    return ValueText(*integrator) + " " + ValueText(*accuracy);
+  std::string out;
+  for (const auto& [name, value] : overrides)
+    out += (out.empty() ? "" : ", ") + name + " " + ValueText(value);
+  return out;
+}
+
+std::string DescribePrecision(const ExperimentFile& e) {
+  const PrecisionDesign& d = e.precision;
+  std::string out = fmt::format(
+      "precision: each setting against the reference on common random numbers; Monte "
+      "Carlo noise of an experiment with {} cycles per condition\n",
+      d.noise_trials);
+  out += fmt::format("scenes ({}):\n", d.scenes.size());
+  for (const PrecisionScene& s : d.scenes)
+    out += fmt::format("  {} ({}): {} part(s), {} cycles per setting\n", s.scene.name, s.path,
+                       s.scene.sequence.size(), s.trials > 0 ? s.trials : e.trials);
+  const auto overrides = [](const PrecisionSetting& s) {
+    std::string o;
+    for (const auto& [name, value] : s.overrides)
+      o += fmt::format("{}{} = {}", o.empty() ? "" : ", ", name, value.dump());
+    return o.empty() ? std::string("(none)") : o;
+  };
+  out += fmt::format("{} ({}): {}\n", d.reference.label, d.reference.pointer,
+                     overrides(d.reference));
+  out += fmt::format("settings ({}):\n", d.settings.size());
+  for (const PrecisionSetting& s : d.settings)
+    out += fmt::format("  {:<32} ({}): {}\n", s.label, s.pointer, overrides(s));
+  return out;
+}
 
 ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string& path) {
   const JsonNode root(document, path);
   root.ExpectObject({"format", "name", "description", "kind", "scene", "seed", "trials",
                      "operators", "conditions", "instants_s", "paper_cycle_s", "fatigue",
-                     "experiments", "paper_table"});
+                     "experiments", "paper_table", "scenes", "reference", "settings",
+                     "noise_trials"});
   const JsonNode format = root.Required("format");
   if (format.String() != kExperimentFormat)
     format.Fail(std::string("an experiment file declares \"format\": \"") +
@@ -90,6 +248,8 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
   only_for("fatigue", "fatigue");
   only_for("experiments", "paper");
   only_for("paper_table", "table1");
+  for (const char* key : {"scenes", "reference", "settings", "noise_trials"})
+    only_for(key, "precision");
   if (auto t = root.Optional("paper_table"))
     e.paper_table_path = ResolvePath(*t, path, "paper table");
 
@@ -107,6 +267,11 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
         list.At(k).Fail("a paper experiment cannot list another paper experiment");
       e.experiments.push_back(ParseExperiment(doc, sub));
     }
+    return e;
+  }
+
+  if (e.kind == "precision") {
+    ReadPrecision(root, path, &e);
     return e;
   }
 

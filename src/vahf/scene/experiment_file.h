@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vahf/scene/scene.h"
@@ -40,6 +41,44 @@ struct FatigueDesign {
   int pilot_cycles = 0;  // cycles from A = 0 that measure the work rate; 0: `trials`
 };
 
+// A set of parameter overrides of a precision experiment, as written:
+// "group/key" (ParamName) -> value, in name order.
+struct PrecisionSetting {
+  std::string label;    // "RungeKuttaMerson 1e-4", "visibility/grid 16"
+  std::string pointer;  // where the file holds it: "/settings/3", "/reference"
+  std::vector<std::pair<std::string, nlohmann::json>> overrides;
+  // Exactly simulation/accuracy, with or without simulation/integrator: a point
+  // of its integrator's work-precision line.
+  bool AccuracyOnly() const;
+};
+
+// A scene of a precision experiment with the parameters of each setting
+// applied on top of its own, each validated as the scene loader does.
+struct PrecisionScene {
+  std::string path;
+  Scene scene;           // as its file gives it
+  int trials = 0;        // > 0: this scene's cycles per setting instead of `trials`
+  Scene reference;       // scene + the reference's overrides
+  std::vector<Scene> settings;  // scene + each setting's overrides, in file order
+};
+
+// Error against run time (docs/experiments.md, "precision").
+struct PrecisionDesign {
+  std::vector<PrecisionScene> scenes;
+  PrecisionSetting reference;
+  std::vector<PrecisionSetting> settings;
+  // Cycles per condition of the experiment that will use the recommended
+  // setting: its Monte Carlo noise is the reference's standard deviation over
+  // sqrt(noise_trials). Default: the most of any paper experiment (fatigue's 12).
+  int noise_trials = kDefaultNoiseTrials;
+  static constexpr int kDefaultNoiseTrials = 12;
+};
+
+// "RungeKuttaMerson 1e-4" for an integrator and accuracy, else "group/key
+// value" joined by ", "; "scene parameters" for no overrides. Numbers in their
+// shortest exact form, powers of ten as 1e-4.
+std::string SettingLabel(const std::vector<std::pair<std::string, nlohmann::json>>& overrides);
+
 struct ExperimentFile {
   std::string file;
   std::string name;
@@ -61,8 +100,15 @@ struct ExperimentFile {
   // beside the virtual values; empty: no comparison.
   std::string paper_table_path;
   FatigueDesign fatigue;                   // fatigue
+  // precision: the scenes, reference and settings; `scene_path` and `scene`
+  // are its first scene's (the manifest's "scene").
+  PrecisionDesign precision;
   std::vector<ExperimentFile> experiments; // paper: the experiments it runs
 };
+
+// What `vahf check` prints about a precision experiment: its scenes with
+// their cycles, the reference and every setting with its overrides.
+std::string DescribePrecision(const ExperimentFile& file);
 
 // Loads the experiment and the scene it names; errors name whichever file
 // holds the fault.

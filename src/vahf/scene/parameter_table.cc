@@ -98,6 +98,33 @@ const std::vector<ParamSpec>& ParameterTable() {
   return table;
 }
 
+std::string ParamName(const ParamSpec& spec) {
+  return std::string(spec.group) + "/" + spec.key;
+}
+
+std::vector<std::string> ParamNames() {
+  std::vector<std::string> names;
+  for (const ParamSpec& s : ParameterTable()) names.push_back(ParamName(s));
+  return names;
+}
+
+const ParamSpec* FindParam(const std::string& name) {
+  for (const ParamSpec& s : ParameterTable())
+    if (ParamName(s) == name) return &s;
+  return nullptr;
+}
+
+void ReadParamValue(const ParamSpec& s, const JsonNode& v, Parameters* p) {
+  switch (s.rule) {
+    case ParamRule::kPositive: s.real(*p) = v.Positive(); break;
+    case ParamRule::kNonNegative: s.real(*p) = v.NonNegative(); break;
+    case ParamRule::kUnit: s.real(*p) = v.InRange(0.0, 1.0); break;
+    case ParamRule::kAngle: s.real(*p) = v.InRange(0.0, 180.0); break;
+    case ParamRule::kCount: s.count(*p) = static_cast<int>(v.Integer(1, 1 << 16)); break;
+    case ParamRule::kChoice: s.text(*p) = v.Choice(s.choices); break;
+  }
+}
+
 std::string ParamValueText(const ParamSpec& spec, const Parameters& p) {
   Parameters q = p;  // the accessors are the loader's, which writes through them
   if (spec.real) return fmt::format("{}", spec.real(q));

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "vahf/scene/json_reader.h"
 #include "vahf/scene/parameters.h"
 
 namespace vahf::scene {
@@ -34,6 +35,19 @@ struct ParamSpec {
 };
 
 const std::vector<ParamSpec>& ParameterTable();
+
+// "group/key": how `vahf params`, docs/parameters.md and an experiment's
+// parameter overrides name a parameter.
+std::string ParamName(const ParamSpec& spec);
+// Every parameter's name, in table order.
+std::vector<std::string> ParamNames();
+// The spec of "group/key", or nullptr.
+const ParamSpec* FindParam(const std::string& name);
+
+// Reads `value` into `p` by the spec's rule: the InputError of a value that
+// breaks it names the node (the scene loader's and the experiment files' one
+// reader of parameter values).
+void ReadParamValue(const ParamSpec& spec, const JsonNode& value, Parameters* p);
 
 // The value of a parameter in `p`, as text.
 std::string ParamValueText(const ParamSpec& spec, const Parameters& p);

@@ -132,16 +132,7 @@ void ReadParameters(const JsonNode& node, Parameters* p) {
       if (group != s.group) continue;
       const auto v = g->Optional(s.key);
       if (!v) continue;
-      switch (s.rule) {
-        case ParamRule::kPositive: s.real(*p) = v->Positive(); break;
-        case ParamRule::kNonNegative: s.real(*p) = v->NonNegative(); break;
-        case ParamRule::kUnit: s.real(*p) = v->InRange(0.0, 1.0); break;
-        case ParamRule::kAngle: s.real(*p) = v->InRange(0.0, 180.0); break;
-        case ParamRule::kCount:
-          s.count(*p) = static_cast<int>(v->Integer(1, 1 << 16));
-          break;
-        case ParamRule::kChoice: s.text(*p) = v->Choice(s.choices); break;
-      }
+      ReadParamValue(s, *v, p);
     }
   }
   // Rules that tie parameters together.
