@@ -96,7 +96,8 @@ int Trial(const TrialArgs& a) {
   if (!a.trace.empty()) vahf::WriteFileAtomically(a.trace, vahf::sim::TraceCsv(r));
   std::fputs(r.BriefReport().c_str(), stdout);
   if (!a.trace.empty())
-    std::printf("trace: %s (%zu rows)\n", a.trace.c_str(), r.trace.size());
+    std::printf("trace: %s (%zu decision rows, %zu sample rows)\n", a.trace.c_str(),
+                r.trace.size(), r.samples.size());
   return 0;
 }
 

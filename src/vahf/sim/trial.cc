@@ -710,7 +710,7 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
       contact_params.stiffness = contact_params.line_stiffness / l;
     }
     c.stiffness = contact_params.stiffness;
-    c.line_stiffness = contact_params.line_stiffness;
+    c.line_stiffness = resolving ? contact_params.line_stiffness : 0.0;  // no rims otherwise
     c.contact.emplace(std::move(shell), contact::SignedDistance(part.shape),
                       part.mass_properties.bounding_radius, part.friction,
                       std::move(obstacles), contact_params, rims(part.shape));

@@ -41,9 +41,11 @@ std::string TrialResult::BriefReport() const {
   else
     out += fmt::format("penetration: deepest {:.3g} um (no radial fit to bound it)\n",
                        max_penetration * 1e6);
-  if (stiffness > 0)
+  if (line_stiffness > 0)
     out += fmt::format("contact stiffness: {:.3g} Pa/m (faces), {:.3g} Pa (edges)\n", stiffness,
                        line_stiffness);
+  else if (stiffness > 0)
+    out += fmt::format("contact stiffness: {:.3g} Pa/m (faces)\n", stiffness);
   out += fmt::format("warnings: {}\n", warnings.Summary());
   return out;
 }

@@ -78,7 +78,8 @@ struct TrialResult {
   double penetration_bound = 0;  // m; 0 when the scene has no radial fit
   double clearance = 0;          // m; 0 when the scene has no radial fit
   // The contact's stiffnesses as the trial used them (contact/model):
-  // face law Pa/m, line law Pa; 0 when nothing can be touched.
+  // face law Pa/m, line law Pa; 0 when nothing can be touched (the line law:
+  // when the contact model has no rims).
   double stiffness = 0, line_stiffness = 0;
   // The part, its factors and A at the instant the trial ended (for a
   // completion, the completion instant: paper Table 1's instant d). Always set.
