@@ -1,0 +1,199 @@
+#include "vahf/sim/stepping.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace vahf::sim::internal {
+namespace {
+
+// The checks made at every accepted step (docs/design.md decision 12): the
+// state is finite, the contact depth is within the bound, the step is above
+// the floor, and the integrator's retries since the last step are counted.
+// Returns false when the state is unusable (the trial ends).
+class StepWatch {
+ public:
+  explicit StepWatch(TrialContext& c) : c_(c) {}
+
+  bool Accepted(const SimTK::Integrator& integ, const SimTK::State& s) {
+    c_.matter->getSystem().realize(s, SimTK::Stage::Dynamics);
+    const double t = s.getTime();
+    const contact::RigidMotion m = c_.MotionOf(s);
+    if (std::optional<Ending> bad = CheckState(
+            m, c_.part->mass_properties.bounding_radius, c_.scene->params.simulation,
+            fmt::format("a step after decision {}", c_.last_decision), t)) {
+      if (!IsFinite(m)) c_.warnings.Note(WarningKind::kNonFiniteState, t, bad->detail);
+      c_.End(std::move(*bad));
+      return false;
+    }
+    Depth(c_.SnapshotOf(s).contact.max_depth, t);
+    const double h = integ.getPreviousStepSizeTaken();
+    const double floor = c_.scene->params.simulation.step_floor;
+    if (h > 0 && h < floor)  // h = 0: no step since a restart
+      c_.warnings.Note(WarningKind::kStepSizeFloor, t,
+                       fmt::format("step {:.3g} s < floor {:.3g} s", h, floor));
+    const std::int64_t retries = static_cast<std::int64_t>(integ.getNumConvergenceTestFailures()) +
+                                 integ.getNumRealizationFailures() +
+                                 integ.getNumProjectionFailures();
+    if (retries > retries_)
+      c_.warnings.Note(WarningKind::kIntegratorRetry, t,
+                       fmt::format("{} convergence, {} realization, {} projection failures",
+                                   integ.getNumConvergenceTestFailures(),
+                                   integ.getNumRealizationFailures(),
+                                   integ.getNumProjectionFailures()),
+                       retries - retries_);
+    retries_ = retries;
+    return true;
+  }
+
+  // The deepest contact so far, and a warning past the bound.
+  void Depth(double depth, double t) {
+    c_.max_penetration = std::max(c_.max_penetration, depth);
+    if (c_.penetration_bound > 0 && depth > c_.penetration_bound)
+      c_.warnings.Note(WarningKind::kPenetrationBound, t,
+                       fmt::format("depth {:.3g} um > bound {:.3g} um ({} of the {:.3g} um "
+                                   "radial clearance)",
+                                   depth * 1e6, c_.penetration_bound * 1e6,
+                                   c_.scene->params.contact.penetration_fraction,
+                                   c_.clearance * 1e6));
+  }
+
+ private:
+  TrialContext& c_;
+  std::int64_t retries_ = 0;
+};
+
+// A dense trace row at a sample state.
+TraceRow SampleRow(TrialContext& c, const SimTK::State& s) {
+  c.matter->getSystem().realize(s, SimTK::Stage::Dynamics);
+  const ForceSnapshot& snap = c.SnapshotOf(s);
+  TraceRow row = TrialContext::PoseRow(s.getTime(), c.MotionOf(s));
+  row.assembly_force = snap.assembly_force;
+  row.contact_force = snap.contact.normal_force;
+  row.friction_force = snap.contact.friction_force;
+  row.penetration = snap.contact.max_depth;
+  row.work = c.work;
+  row.psi = c.HeldDecision(s).psi;
+  return row;
+}
+
+// Dense samples between accepted steps, by cubic Hermite interpolation of q
+// (with qdot) and u (with udot) between the two step ends, the quaternion
+// renormalised: third order, and the integrator never sees a sample time, so
+// the trajectory is the same bits with and without samples whatever the
+// integrator (asking the integrator for report times would not be: CPodes
+// stops its steps at them).
+class Sampler {
+ public:
+  Sampler(TrialContext& c, double interval) : c_(c), interval_(interval) {}
+
+  // The integrator advanced to state `now` (realized to Acceleration): emit
+  // every sample time in (previous, now], then remember `now`.
+  void Advanced(const SimTK::State& now, double limit) {
+    if (interval_ <= 0) return;
+    if (have_previous_ && now.getTime() > t0_) {
+      const double t1 = now.getTime(), h = t1 - t0_;
+      for (;;) {
+        const double t = static_cast<double>(next_) * interval_;
+        if (t > t1 || t >= limit) break;
+        const double s = (t - t0_) / h;
+        // Hermite basis on [0, 1].
+        const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+        const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+        SimTK::State x = now;
+        x.setTime(t);
+        x.updQ() = h00 * q0_ + (h10 * h) * qdot0_ + h01 * now.getQ() + (h11 * h) * now.getQDot();
+        x.updU() = h00 * u0_ + (h10 * h) * udot0_ + h01 * now.getU() + (h11 * h) * now.getUDot();
+        c_.matter->getSystem().realize(x, SimTK::Stage::Position);
+        c_.matter->getSystem().project(x, 1e-10);  // the quaternion back to unit length
+        c_.samples.push_back(SampleRow(c_, x));
+        ++next_;
+      }
+    }
+    have_previous_ = true;
+    t0_ = now.getTime();
+    q0_ = now.getQ();
+    qdot0_ = now.getQDot();
+    u0_ = now.getU();
+    udot0_ = now.getUDot();
+  }
+
+ private:
+  TrialContext& c_;
+  double interval_;
+  std::int64_t next_ = 1;
+  bool have_previous_ = false;
+  double t0_ = 0;
+  SimTK::Vector q0_, qdot0_, u0_, udot0_;
+};
+
+}  // namespace
+
+// Steps from the initial state to completion, an ending or the time limit,
+// returning at every accepted step (StepWatch, Sampler). Returns the time
+// reached.
+//
+// The loop is SimTK::TimeStepper::stepTo's (Simbody 3.7, TimeStepper.cpp),
+// returning at every internal step; time-advanced events are not dispatched
+// (the system has none).
+double Integrate(TrialContext& c, const SimTK::MultibodySystem& system,
+                 SimTK::Integrator& integ, const SimTK::State& initial,
+                 double sample_interval) {
+  using SimTK::Integrator;
+  const double limit = c.scene->params.simulation.time_limit;
+  integ.setReturnEveryInternalStep(true);
+  integ.initialize(initial);
+  c.integrated = true;
+  SimTK::HandleEventsOptions handle_options(integ.getConstraintToleranceInUse());
+  if (integ.isInfinityNormInUse())
+    handle_options.setOption(SimTK::HandleEventsOptions::UseInfinityNorm);
+  StepWatch watch(c);
+  Sampler sampler(c, sample_interval);
+  sampler.Advanced(integ.getState(), limit);
+  SimTK::Array_<SimTK::EventId> scheduled;
+  double last_event_time = -SimTK::Infinity;
+  const auto handle = [&](SimTK::Event::Cause cause, const SimTK::Array_<SimTK::EventId>& ids) {
+    SimTK::HandleEventsResults results;
+    system.handleEvents(integ.updAdvancedState(), cause, ids, handle_options, results);
+    integ.reinitialize(results.getLowestModifiedStage(),
+                       results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate);
+  };
+  while (!integ.isSimulationOver() && !c.ended) {
+    const double now = integ.getTime();
+    if (now >= limit) break;
+    system.realize(integ.getState(), SimTK::Stage::Time);
+    system.realize(integ.getAdvancedState(), SimTK::Stage::Time);
+    double next_event = SimTK::Infinity;
+    system.calcTimeOfNextScheduledEvent(integ.getState(), next_event, scheduled,
+                                        last_event_time != now);
+    const Integrator::SuccessfulStepStatus status =
+        integ.stepTo(limit, std::min(next_event, limit));
+    if (integ.getTime() > now) {  // the trajectory advanced to integ.getState()
+      system.realize(integ.getState(), SimTK::Stage::Acceleration);
+      if (!watch.Accepted(integ, integ.getState())) break;
+      sampler.Advanced(integ.getState(), limit);
+    }
+    switch (status) {
+      case Integrator::ReachedScheduledEvent:
+        handle(SimTK::Event::Cause::Scheduled, scheduled);
+        last_event_time = integ.getTime();
+        break;
+      case Integrator::ReachedEventTrigger:
+        handle(SimTK::Event::Cause::Triggered, integ.getTriggeredEvents());
+        break;
+      case Integrator::EndOfSimulation:
+        handle(SimTK::Event::Cause::Termination, {});
+        break;
+      default:  // TimeHasAdvanced, ReachedReportTime, StartOfContinuousInterval,
+        continue;  // ReachedStepLimit: step on
+    }
+    // An event may have changed what the forces depend on (a decision):
+    // interpolate the next step from the state after it.
+    system.realize(integ.getState(), SimTK::Stage::Acceleration);
+    sampler.Advanced(integ.getState(), limit);
+  }
+  return integ.getTime();
+}
+
+}  // namespace vahf::sim::internal
