@@ -162,8 +162,8 @@ expect_in "check experiment" "$out" "valid experiment"
 run check "$root/experiments/precision.json"
 expect_status "check precision" 0
 for text in "kind precision" "peg_in_hole (" "hydraulic_cylinder (" \
-    "reference: RungeKuttaMerson 1e-8 (/reference)" "settings (9):" \
-    "RungeKuttaMerson 1e-3" "CPodes 1e-6" "(/settings/8): simulation/accuracy = 1e-06" \
+    "reference: RungeKuttaMerson 1e-8 (/reference)" "settings (13):" \
+    "RungeKuttaMerson 1e-3" "CPodes 1e-6" "(/settings/8): simulation/accuracy = 1e-06" "visibility/grid 32" "contact/shell_spacing 5e-4" \
     "valid experiment"; do
   expect_in "check precision" "$out" "$text"
 done

@@ -147,14 +147,24 @@ RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& 
   out.Write(OutputDirectory::kMarkerFile, manifest.dump(1) + "\n");
 
   // Report: what ran, the claims, then each section with its plots.
+  std::string integration;  // each distinct setting of the scenes the run used
+  for (const experiment::ExperimentRun* leaf : Leaves(run)) {
+    const auto& sim = leaf->file->scene.params.simulation;
+    const std::string one = fmt::format("{} at accuracy {:g}, contact model {}", sim.integrator,
+                                        sim.accuracy, leaf->file->scene.params.contact.model);
+    if (integration.find(one) == std::string::npos)
+      integration += (integration.empty() ? "" : "; ") + one;
+  }
   std::string md = fmt::format(
       "# vahf report: {}\n\n{}\n\n"
       "- experiment file: `{}` (kind {}), seed {}, cycles per condition: {}\n"
+      "- integration: {} (the scenes' simulation/integrator, simulation/accuracy and "
+      "contact/model; docs/experiments.md, precision, measures the error they buy)\n"
       "- threads: {}, wall time: {:.1f} s (not part of any result file)\n"
       "- results digest (SHA-256 over the CSV tables and summary.json): `{}`\n"
       "- program: {} ({}), {} {}\n\n",
       file.name, file.description, file.file, file.kind, run.seed, CyclesPerCondition(run),
-      info.threads,
+      integration, info.threads,
       info.wall_seconds, digest, m.build.version, m.build.git_describe, m.build.compiler_id,
       m.build.compiler_version);
   md += ClaimsMarkdown(sections);
