@@ -30,7 +30,9 @@ class StepWatch {
     Depth(c_.SnapshotOf(s).contact.max_depth, t);
     const double h = integ.getPreviousStepSizeTaken();
     const double floor = c_.scene->params.simulation.step_floor;
-    if (h > 0 && h < floor)  // h = 0: no step since a restart
+    // The first steps after a start or an event are the integrator probing
+    // its step size (CPodes begins near 1e-11 s), not a sign of trouble.
+    if (++steps_since_restart_ > kProbingSteps && h > 0 && h < floor)
       c_.warnings.Note(WarningKind::kStepSizeFloor, t,
                        fmt::format("step {:.3g} s < floor {:.3g} s", h, floor));
     const std::int64_t retries = static_cast<std::int64_t>(integ.getNumConvergenceTestFailures()) +
@@ -47,6 +49,9 @@ class StepWatch {
     return true;
   }
 
+  // The integrator restarted (initialization or an event handled).
+  void Restarted() { steps_since_restart_ = 0; }
+
   // The deepest contact so far, and a warning past the bound.
   void Depth(double depth, double t) {
     c_.max_penetration = std::max(c_.max_penetration, depth);
@@ -62,6 +67,8 @@ class StepWatch {
  private:
   TrialContext& c_;
   std::int64_t retries_ = 0;
+  static constexpr int kProbingSteps = 3;
+  int steps_since_restart_ = 0;
 };
 
 // A dense trace row at a sample state.
@@ -188,6 +195,7 @@ double Integrate(TrialContext& c, const SimTK::MultibodySystem& system,
       default:  // TimeHasAdvanced, ReachedReportTime, StartOfContinuousInterval,
         continue;  // ReachedStepLimit: step on
     }
+    watch.Restarted();
     // An event may have changed what the forces depend on (a decision):
     // interpolate the next step from the state after it.
     system.realize(integ.getState(), SimTK::Stage::Acceleration);
