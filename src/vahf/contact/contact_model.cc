@@ -12,6 +12,15 @@ namespace {
 
 double PairFriction(double a, double b) { return a + b > 0 ? 2 * a * b / (a + b) : 0.0; }
 
+// True when no point of the sphere (centre c, in the field's frame) can be
+// inside the solid: outside its bounds, or farther from it than the radius
+// (a signed distance is 1-Lipschitz).
+bool SphereClear(const SignedDistance& field, const Eigen::Vector3d& c, double radius) {
+  return ((c.array() + radius) <= field.lower().array()).any() ||
+         ((c.array() - radius) >= field.upper().array()).any() ||
+         field.At(c).distance > radius;
+}
+
 }  // namespace
 
 ContactModel::ContactModel(std::vector<ShellPoint> shell, SignedDistance moving_field,
@@ -133,9 +142,7 @@ ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
     for (std::size_t i = 0; i < nodes_.size();) {
       const Node& node = nodes_[i];
       const Eigen::Vector3d c_o = moving_in_obstacle * node.centre;
-      const bool clear = ((c_o.array() + node.radius) <= o.field.lower().array()).any() ||
-                         ((c_o.array() - node.radius) >= o.field.upper().array()).any() ||
-                         o.field.At(c_o).distance > node.radius;
+      const bool clear = SphereClear(o.field, c_o, node.radius);
       if (clear) {
         ++counters_.clusters_skipped;
         i = node.escape;
@@ -177,9 +184,7 @@ void ContactModel::EvaluateMovingRims(std::size_t index, const RigidMotion& m, d
   const Eigen::Matrix3d& r_world_obstacle = o.pose.linear();
   for (const RimBlock& block : moving_rim_set_.blocks) {
     const Eigen::Vector3d c_o = moving_in_obstacle * block.centre;
-    const bool clear = ((c_o.array() + block.radius) <= o.field.lower().array()).any() ||
-                       ((c_o.array() - block.radius) >= o.field.upper().array()).any() ||
-                       o.field.At(c_o).distance > block.radius;
+    const bool clear = SphereClear(o.field, c_o, block.radius);
     if (clear) {
       ++counters_.rim_blocks_skipped;
       continue;
@@ -216,10 +221,7 @@ void ContactModel::EvaluateRims(std::size_t index, const RigidMotion& m, double 
   const Eigen::Matrix3d& r_world_moving = m.pose.linear();
   for (const RimBlock& block : set.blocks) {
     const Eigen::Vector3d c_m = obstacle_in_moving * block.centre;
-    const bool clear =
-        ((c_m.array() + block.radius) <= moving_field_.lower().array()).any() ||
-        ((c_m.array() - block.radius) >= moving_field_.upper().array()).any() ||
-        moving_field_.At(c_m).distance > block.radius;
+    const bool clear = SphereClear(moving_field_, c_m, block.radius);
     if (clear) {
       ++counters_.rim_blocks_skipped;
       continue;
