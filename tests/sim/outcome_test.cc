@@ -23,7 +23,7 @@ contact::RigidMotion Moving(const Eigen::Vector3d& v, const Eigen::Vector3d& w) 
 
 TEST(CheckState, AFiniteSlowStateIsUsable) {
   scene::SimulationParams sim;
-  EXPECT_FALSE(CheckState(Moving({1, 0, 0}, {0, 0, 1}), 0.1, sim, "decision 3", 0.3));
+  EXPECT_FALSE(CheckState(Moving({1, 0, 0}, {0, 0, 1}), 0.1, sim, "decision", 3, 0.3));
 }
 
 TEST(CheckState, EveryNonFiniteComponentIsANumericalFailure) {
@@ -32,23 +32,23 @@ TEST(CheckState, EveryNonFiniteComponentIsANumericalFailure) {
   const double inf = std::numeric_limits<double>::infinity();
   contact::RigidMotion m = Moving({0, 0, 0}, {0, 0, 0});
   m.pose.translation().y() = nan;
-  std::optional<Ending> e = CheckState(m, 0.1, sim, "decision 7", 0.7);
+  std::optional<Ending> e = CheckState(m, 0.1, sim, "decision", 7, 0.7);
   ASSERT_TRUE(e);
   EXPECT_EQ(e->status, Status::kNumericalFailure);
   EXPECT_EQ(e->detail, "non-finite state at decision 7 (t = 0.7 s)");
-  EXPECT_TRUE(CheckState(Moving({0, inf, 0}, {0, 0, 0}), 0.1, sim, "decision 1", 0.1));
-  EXPECT_TRUE(CheckState(Moving({0, 0, 0}, {0, 0, nan}), 0.1, sim, "decision 1", 0.1));
+  EXPECT_TRUE(CheckState(Moving({0, inf, 0}, {0, 0, 0}), 0.1, sim, "decision", 1, 0.1));
+  EXPECT_TRUE(CheckState(Moving({0, 0, 0}, {0, 0, nan}), 0.1, sim, "decision", 1, 0.1));
   m = Moving({0, 0, 0}, {0, 0, 0});
   m.pose.linear()(1, 2) = nan;
-  EXPECT_TRUE(CheckState(m, 0.1, sim, "decision 1", 0.1));
+  EXPECT_TRUE(CheckState(m, 0.1, sim, "decision", 1, 0.1));
 }
 
 TEST(CheckState, DivergenceBoundsTheFastestPointOfTheBoundingSphere) {
   scene::SimulationParams sim;
   sim.divergence_speed = 20.0;
   // 12 m/s + 100 rad/s * 0.08 m = 20 m/s: at the threshold, not past it.
-  EXPECT_FALSE(CheckState(Moving({12, 0, 0}, {0, 100, 0}), 0.08, sim, "decision 2", 0.2));
-  std::optional<Ending> e = CheckState(Moving({12, 0, 0}, {0, 100, 0}), 0.081, sim, "decision 2", 0.2);
+  EXPECT_FALSE(CheckState(Moving({12, 0, 0}, {0, 100, 0}), 0.08, sim, "decision", 2, 0.2));
+  std::optional<Ending> e = CheckState(Moving({12, 0, 0}, {0, 100, 0}), 0.081, sim, "decision", 2, 0.2);
   ASSERT_TRUE(e);
   EXPECT_EQ(e->status, Status::kNumericalFailure);
   EXPECT_THAT(e->detail, HasSubstr("up to 20.1 m/s > divergence_speed 20 m/s"));

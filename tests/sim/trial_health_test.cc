@@ -21,15 +21,27 @@ scene::Scene LoadExample(const std::string& name) {
   return scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + name);
 }
 
-TEST(TrialHealth, SamplesDoNotChangeTheTrajectory) {
-  const scene::Scene s = LoadExample("peg_in_hole.json");
+constexpr double kSampleInterval = 0.5e-3;
+
+// Seed 1 of `s` without samples (a) and with a sample every 0.5 ms (b); both
+// complete, at the same instant to the bit, in the same number of steps.
+struct PlainAndSampled {
+  TrialResult a, b;
+};
+PlainAndSampled RunBoth(const scene::Scene& s, bool record_trace) {
   TrialOptions plain, sampled;
-  sampled.sample_interval = 0.5e-3;
-  const TrialResult a = RunTrial(s, {1, 0}, plain);
-  const TrialResult b = RunTrial(s, {1, 0}, sampled);
-  ASSERT_EQ(a.status, Status::kCompleted) << a.detail;
-  EXPECT_EQ(a.completion_time, b.completion_time);  // bit for bit
-  EXPECT_EQ(a.counters.steps_taken, b.counters.steps_taken);
+  plain.record_trace = sampled.record_trace = record_trace;
+  sampled.sample_interval = kSampleInterval;
+  PlainAndSampled r{RunTrial(s, {1, 0}, plain), RunTrial(s, {1, 0}, sampled)};
+  EXPECT_EQ(r.a.status, Status::kCompleted) << r.a.detail;
+  EXPECT_EQ(r.a.completion_time, r.b.completion_time);  // bit for bit
+  EXPECT_EQ(r.a.counters.steps_taken, r.b.counters.steps_taken);
+  EXPECT_EQ(r.a.final_row.position, r.b.final_row.position);
+  return r;
+}
+
+TEST(TrialHealth, SamplesDoNotChangeTheTrajectory) {
+  const auto [a, b] = RunBoth(LoadExample("peg_in_hole.json"), true);
   ASSERT_EQ(a.trace.size(), b.trace.size());
   for (std::size_t i = 0; i < a.trace.size(); ++i) {
     EXPECT_EQ(a.trace[i].position, b.trace[i].position) << "decision " << i;
@@ -38,9 +50,9 @@ TEST(TrialHealth, SamplesDoNotChangeTheTrajectory) {
   EXPECT_TRUE(a.samples.empty());
   // One row per multiple of the interval before the end, at that instant.
   ASSERT_EQ(b.samples.size(),
-            static_cast<std::size_t>(std::floor(b.end_time / sampled.sample_interval)));
+            static_cast<std::size_t>(std::floor(b.end_time / kSampleInterval)));
   for (std::size_t k = 0; k < b.samples.size(); ++k)
-    EXPECT_DOUBLE_EQ(b.samples[k].time, static_cast<double>(k + 1) * sampled.sample_interval);
+    EXPECT_DOUBLE_EQ(b.samples[k].time, static_cast<double>(k + 1) * kSampleInterval);
   // The CSV holds both kinds of rows, in time order.
   const std::string csv = TraceCsv(b);
   EXPECT_EQ(csv.rfind("row,t,", 0), 0u);
@@ -56,16 +68,7 @@ TEST(TrialHealth, SamplesDoNotChangeTheTrajectory) {
 TEST(TrialHealth, SamplesDoNotChangeACPodesTrajectory) {
   const scene::Scene s = LoadExample("peg_in_hole_resolved.json");
   ASSERT_EQ(s.params.simulation.integrator, "CPodes");
-  TrialOptions plain, sampled;
-  plain.record_trace = sampled.record_trace = false;
-  sampled.sample_interval = 0.5e-3;
-  const TrialResult a = RunTrial(s, {1, 0}, plain);
-  const TrialResult b = RunTrial(s, {1, 0}, sampled);
-  ASSERT_EQ(a.status, Status::kCompleted) << a.detail;
-  EXPECT_EQ(a.completion_time, b.completion_time);  // bit for bit
-  EXPECT_EQ(a.counters.steps_taken, b.counters.steps_taken);
-  EXPECT_EQ(a.final_row.position, b.final_row.position);
-  EXPECT_GT(b.samples.size(), 300u);
+  EXPECT_GT(RunBoth(s, false).b.samples.size(), 300u);
 }
 
 TEST(TrialHealth, TooSoftAContactIsAPenetrationWarning) {

@@ -21,6 +21,24 @@ bool SphereClear(const SignedDistance& field, const Eigen::Vector3d& c, double r
          field.At(c).distance > radius;
 }
 
+// A point of the moving part inside an obstacle: its depth, the unit normal
+// out of the obstacle, its offset from the moving origin and its material
+// velocity (world).
+struct Hit {
+  double depth;
+  Eigen::Vector3d n, r, v;
+};
+
+// The moving-part point p (part frame) against obstacle o's exact field.
+std::optional<Hit> MovingPointInside(const Obstacle& o, const Eigen::Isometry3d& moving_in_obstacle,
+                                     const RigidMotion& m, const Eigen::Vector3d& p) {
+  const std::optional<Distance> d = o.field.Penetration(moving_in_obstacle * p);
+  if (!d || !(-d->distance > 0)) return std::nullopt;
+  const Eigen::Vector3d r = m.pose.linear() * p;  // origin to point, world
+  return Hit{-d->distance, o.pose.linear() * d->normal, r,
+             m.velocity + m.angular_velocity.cross(r)};
+}
+
 }  // namespace
 
 ContactModel::ContactModel(std::vector<ShellPoint> shell, SignedDistance moving_field,
@@ -138,7 +156,6 @@ ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
     const double mu = PairFriction(moving_friction_, o.friction);
     // Shell points go to the obstacle frame with one transform.
     const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
-    const Eigen::Matrix3d r_world_obstacle = o.pose.linear();
     for (std::size_t i = 0; i < nodes_.size();) {
       const Node& node = nodes_[i];
       const Eigen::Vector3d c_o = moving_in_obstacle * node.centre;
@@ -156,19 +173,12 @@ ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
       for (std::size_t k = node.begin; k < node.end; ++k) {
         const ShellPoint& s = shell_[k];
         ++counters_.point_queries;
-        const Eigen::Vector3d p_o = moving_in_obstacle * s.position;
-        const std::optional<Distance> d = o.field.Penetration(p_o);
-        if (!d) continue;
-        const double depth = -d->distance;
-        if (!(depth > 0)) continue;
-        const Eigen::Vector3d n = r_world_obstacle * d->normal;  // out of the obstacle
-        const Eigen::Vector3d r = m.pose.linear() * s.position;  // origin to point, world
-        const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);
-        const double depth_rate = -v.dot(n);
-        if (!AddContact(r, v, n, Pressure(params_, depth, depth_rate) * s.area, mu, &out))
+        const std::optional<Hit> h = MovingPointInside(o, moving_in_obstacle, m, s.position);
+        if (!h || !AddContact(h->r, h->v, h->n,
+                              Pressure(params_, h->depth, -h->v.dot(h->n)) * s.area, mu, &out))
           continue;
         ++out.points_in_contact;
-        out.max_depth = std::max(out.max_depth, depth);
+        out.max_depth = std::max(out.max_depth, h->depth);
       }
     }
     EvaluateMovingRims(index, m, mu, &out);
@@ -181,7 +191,6 @@ void ContactModel::EvaluateMovingRims(std::size_t index, const RigidMotion& m, d
                                       ContactForces* out) const {
   const Obstacle& o = obstacles_[index];
   const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
-  const Eigen::Matrix3d& r_world_obstacle = o.pose.linear();
   for (const RimBlock& block : moving_rim_set_.blocks) {
     const Eigen::Vector3d c_o = moving_in_obstacle * block.centre;
     const bool clear = SphereClear(o.field, c_o, block.radius);
@@ -192,17 +201,12 @@ void ContactModel::EvaluateMovingRims(std::size_t index, const RigidMotion& m, d
     for (std::size_t k = block.begin; k < block.end; ++k) {
       const RimPoint& q = moving_rim_[k];
       ++counters_.rim_queries;
-      const std::optional<Distance> d = o.field.Penetration(moving_in_obstacle * q.position);
-      if (!d) continue;
-      const double depth = -d->distance;
-      if (!(depth > 0)) continue;
-      const Eigen::Vector3d n = r_world_obstacle * d->normal;  // out of the obstacle
-      const Eigen::Vector3d r = m.pose.linear() * q.position;  // origin to point, world
-      const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);
-      if (!AddContact(r, v, n, LineLoad(params_, depth, -v.dot(n)) * q.length, mu, out))
+      const std::optional<Hit> h = MovingPointInside(o, moving_in_obstacle, m, q.position);
+      if (!h || !AddContact(h->r, h->v, h->n,
+                            LineLoad(params_, h->depth, -h->v.dot(h->n)) * q.length, mu, out))
         continue;
       ++out->rim_points_in_contact;
-      out->max_depth = std::max(out->max_depth, depth);
+      out->max_depth = std::max(out->max_depth, h->depth);
     }
   }
 }

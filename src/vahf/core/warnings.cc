@@ -15,17 +15,6 @@ const char* WarningName(WarningKind kind) {
   return "?";
 }
 
-void Warnings::Note(WarningKind kind, double time, const std::string& detail,
-                    std::int64_t n) {
-  if (n <= 0) return;
-  WarningEntry& e = entries_[static_cast<int>(kind)];
-  if (e.count == 0) {
-    e.first_time = time;
-    e.detail = detail;
-  }
-  e.count += n;
-}
-
 void Warnings::Add(const Warnings& other) {
   for (int k = 0; k < kWarningKinds; ++k) {
     const WarningEntry& o = other.entries_[k];

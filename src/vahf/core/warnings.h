@@ -32,7 +32,21 @@ struct WarningEntry {
 class Warnings {
  public:
   // Counts `n` occurrences at `time`; the first one's time and detail stay.
-  void Note(WarningKind kind, double time, const std::string& detail, std::int64_t n = 1);
+  void Note(WarningKind kind, double time, const std::string& detail, std::int64_t n = 1) {
+    Count(kind, time, [&] { return detail; }, n);
+  }
+  // The same, with the detail made by `detail()` only for the first
+  // occurrence (a warning met at every step formats its text once).
+  template <class Detail>
+  void Count(WarningKind kind, double time, const Detail& detail, std::int64_t n = 1) {
+    if (n <= 0) return;
+    WarningEntry& e = entries_[static_cast<int>(kind)];
+    if (e.count == 0) {
+      e.first_time = time;
+      e.detail = detail();
+    }
+    e.count += n;
+  }
   // Adds another record: counts add, the earlier first occurrence stays (for
   // sums over trials the times are of different trials; the first in
   // summation order is kept).

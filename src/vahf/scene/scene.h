@@ -59,11 +59,14 @@ struct Part {
   Eigen::Vector3d grasp = Eigen::Vector3d::Zero();
 };
 
+// Standard gravity, m/s^2 (ISO 80000-3).
+inline constexpr double kStandardGravity = 9.80665;
+
 struct Scene {
   std::string file;  // where it was read from, for messages
   std::string name;
   std::string description;
-  Eigen::Vector3d gravity{0.0, 0.0, -9.80665};  // m/s^2, standard gravity (ISO 80000-3)
+  Eigen::Vector3d gravity{0.0, 0.0, -kStandardGravity};  // m/s^2
   human::Operator op;
   std::vector<Part> parts;
   std::vector<int> sequence;  // indices into parts, in assembly order

@@ -9,13 +9,13 @@
 namespace vahf::sim {
 
 std::optional<Ending> CheckState(const contact::RigidMotion& m, double bounding_radius,
-                                 const scene::SimulationParams& sim,
-                                 const std::string& where, double time) {
+                                 const scene::SimulationParams& sim, const char* where,
+                                 std::int64_t decision, double time) {
   const Eigen::Vector3d T = m.pose.translation();
   if (!T.allFinite() || !m.velocity.allFinite() || !m.angular_velocity.allFinite() ||
       !m.pose.linear().allFinite()) {
     return Ending{Status::kNumericalFailure,
-                  fmt::format("non-finite state at {} (t = {} s)", where, time)};
+                  fmt::format("non-finite state at {} {} (t = {} s)", where, decision, time)};
   }
   // The fastest point of the part's bounding sphere, a bound on any point's speed.
   const double speed = m.velocity.norm() + m.angular_velocity.norm() * bounding_radius;
@@ -23,9 +23,9 @@ std::optional<Ending> CheckState(const contact::RigidMotion& m, double bounding_
     return Ending{
         Status::kNumericalFailure,
         fmt::format("diverged: a point of the part moves at up to {:.6g} m/s > "
-                    "divergence_speed {} m/s at {} (t = {} s, position {:.6g} "
+                    "divergence_speed {} m/s at {} {} (t = {} s, position {:.6g} "
                     "{:.6g} {:.6g} m)",
-                    speed, sim.divergence_speed, where, time, T.x(), T.y(), T.z())};
+                    speed, sim.divergence_speed, where, decision, time, T.x(), T.y(), T.z())};
   }
   return std::nullopt;
 }

@@ -22,11 +22,12 @@ struct Ending {
 
 // kNumericalFailure if the pose or velocities hold a non-finite value, or if a
 // point of the part's bounding sphere (radius `bounding_radius` about the
-// origin of m) may move faster than divergence_speed. `where` ("decision 3",
-// "a step after decision 3") and `time` name the instant in the detail.
+// origin of m) may move faster than divergence_speed. `where` and `decision`
+// ("decision" 3, "a step after decision" 3) and `time` name the instant in
+// the detail; nothing is formatted unless the state is unusable.
 std::optional<Ending> CheckState(const contact::RigidMotion& m, double bounding_radius,
-                                 const scene::SimulationParams& sim,
-                                 const std::string& where, double time);
+                                 const scene::SimulationParams& sim, const char* where,
+                                 std::int64_t decision, double time);
 
 // Progress towards the target, for the jam rule: a decision makes progress
 // when it is the first, when the part is out of contact, or when it is

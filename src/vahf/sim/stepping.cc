@@ -16,13 +16,13 @@ class StepWatch {
  public:
   explicit StepWatch(TrialContext& c) : c_(c) {}
 
+  // `s` is realized through Acceleration.
   bool Accepted(const SimTK::Integrator& integ, const SimTK::State& s) {
-    c_.matter->getSystem().realize(s, SimTK::Stage::Dynamics);
     const double t = s.getTime();
     const contact::RigidMotion m = c_.MotionOf(s);
     if (std::optional<Ending> bad = CheckState(
             m, c_.part->mass_properties.bounding_radius, c_.scene->params.simulation,
-            fmt::format("a step after decision {}", c_.last_decision), t)) {
+            "a step after decision", c_.last_decision, t)) {
       if (!IsFinite(m)) c_.warnings.Note(WarningKind::kNonFiniteState, t, bad->detail);
       c_.End(std::move(*bad));
       return false;
@@ -33,18 +33,22 @@ class StepWatch {
     // The first steps after a start or an event are the integrator probing
     // its step size (CPodes begins near 1e-11 s), not a sign of trouble.
     if (++steps_since_restart_ > kProbingSteps && h > 0 && h < floor)
-      c_.warnings.Note(WarningKind::kStepSizeFloor, t,
-                       fmt::format("step {:.3g} s < floor {:.3g} s", h, floor));
+      c_.warnings.Count(WarningKind::kStepSizeFloor, t, [&] {
+        return fmt::format("step {:.3g} s < floor {:.3g} s", h, floor);
+      });
     const std::int64_t retries = static_cast<std::int64_t>(integ.getNumConvergenceTestFailures()) +
                                  integ.getNumRealizationFailures() +
                                  integ.getNumProjectionFailures();
     if (retries > retries_)
-      c_.warnings.Note(WarningKind::kIntegratorRetry, t,
-                       fmt::format("{} convergence, {} realization, {} projection failures",
-                                   integ.getNumConvergenceTestFailures(),
-                                   integ.getNumRealizationFailures(),
-                                   integ.getNumProjectionFailures()),
-                       retries - retries_);
+      c_.warnings.Count(
+          WarningKind::kIntegratorRetry, t,
+          [&] {
+            return fmt::format("{} convergence, {} realization, {} projection failures",
+                               integ.getNumConvergenceTestFailures(),
+                               integ.getNumRealizationFailures(),
+                               integ.getNumProjectionFailures());
+          },
+          retries - retries_);
     retries_ = retries;
     return true;
   }
@@ -52,19 +56,19 @@ class StepWatch {
   // The integrator restarted (initialization or an event handled).
   void Restarted() { steps_since_restart_ = 0; }
 
+ private:
   // The deepest contact so far, and a warning past the bound.
   void Depth(double depth, double t) {
     c_.max_penetration = std::max(c_.max_penetration, depth);
     if (c_.penetration_bound > 0 && depth > c_.penetration_bound)
-      c_.warnings.Note(WarningKind::kPenetrationBound, t,
-                       fmt::format("depth {:.3g} um > bound {:.3g} um ({} of the {:.3g} um "
-                                   "radial clearance)",
-                                   depth * 1e6, c_.penetration_bound * 1e6,
-                                   c_.scene->params.contact.penetration_fraction,
-                                   c_.clearance * 1e6));
+      c_.warnings.Count(WarningKind::kPenetrationBound, t, [&] {
+        return fmt::format("depth {:.3g} um > bound {:.3g} um ({} of the {:.3g} um radial "
+                           "clearance)",
+                           depth * 1e6, c_.penetration_bound * 1e6,
+                           c_.scene->params.contact.penetration_fraction, c_.clearance * 1e6);
+      });
   }
 
- private:
   TrialContext& c_;
   std::int64_t retries_ = 0;
   static constexpr int kProbingSteps = 3;

@@ -80,7 +80,7 @@ void Decide(TrialContext& c, SimTK::State& s) {
   const Vector3d T = m.pose.translation();
   if (std::optional<Ending> bad =
           CheckState(m, c.part->mass_properties.bounding_radius, p.simulation,
-                     fmt::format("decision {}", i), s.getTime())) {
+                     "decision", i, s.getTime())) {
     c.End(std::move(*bad));
     return;
   }
@@ -279,7 +279,7 @@ TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
   const std::vector<FixedPart> fixed = FixedParts(scene, options.sequence_position);
   // Eq. 7 passes into Eq. 8 over a fraction of the part's weight under
   // standard gravity (ISO 80000-3), whatever the scene's gravity.
-  c.blend_force = params.guidance.contact_blend * part.mass * 9.80665;
+  c.blend_force = params.guidance.contact_blend * part.mass * scene::kStandardGravity;
   // The penetration bound: a fraction of the smallest radial clearance
   // between the part at its target and a fixed part (none: no bound).
   for (const FixedPart& f : fixed)
