@@ -128,6 +128,32 @@ TEST(ContactPressure, HuntCrossleyFactorClampedAtZero) {
   }
 }
 
+// The hardening barrier (model "resolving"): the elastic law over
+// (1 - x/b)^2 up to b (1 - eps), then along its tangent; stiffer without
+// bound as x nears b, continuous and C1 where it leaves the barrier.
+TEST(ContactPressure, BarrierHardensTowardItsDepthAndLeavesAlongTheTangent) {
+  ContactParams plain, barrier;
+  plain.dissipation = barrier.dissipation = 0.0;
+  const double b = 5e-6;
+  barrier.barrier_depth = b;
+  for (double x : {0.5e-6, 2e-6, 4e-6, 4.9e-6}) {
+    const double s = 1.0 / (1.0 - x / b);
+    EXPECT_NEAR(ContactModel::Pressure(barrier, x, 0.0),
+                ContactModel::Pressure(plain, x, 0.0) * s * s,
+                1e-12 * ContactModel::Pressure(barrier, x, 0.0))
+        << "depth " << x;
+  }
+  const double xc = b * (1.0 - ContactModel::kBarrierReserve), h = 1e-15;
+  const double at = ContactModel::Pressure(barrier, xc, 0.0);
+  EXPECT_NEAR(ContactModel::Pressure(barrier, xc + h, 0.0), at, 1e-6 * at);  // continuous
+  const double slope_in = (at - ContactModel::Pressure(barrier, xc - 1e-12, 0.0)) / 1e-12;
+  const double slope_out = (ContactModel::Pressure(barrier, xc + 1e-12, 0.0) - at) / 1e-12;
+  EXPECT_NEAR(slope_out, slope_in, 1e-2 * slope_in);  // C1 at xc
+  EXPECT_NEAR(ContactModel::Pressure(barrier, xc + 1e-9, 0.0), at + slope_out * 1e-9,
+              1e-6 * at);  // linear beyond
+  EXPECT_GT(at, 1e5 * ContactModel::Pressure(plain, xc, 0.0));  // 1/eps^2 = 1e6 stiffer
+}
+
 // ---------------------------------------------------------------- flat box on a floor
 
 // A 40 x 40 x 20 mm box whose bottom face is pressed d into the floor, turned

@@ -95,6 +95,19 @@ TEST(FitResolution, PegStaysWithinTenPercentOfItsClearance) {
   EXPECT_EQ(r.warnings.at(WarningKind::kNonFiniteState).count, 0) << r.warnings.Summary();
   EXPECT_EQ(r.warnings.at(WarningKind::kIntegratorFailure).count, 0) << r.warnings.Summary();
   EXPECT_LE(r.max_penetration, r.penetration_bound);
+  // The stiffness rule (contact_params.h): F = kappa |T_0 - T_t| + m g over
+  // 2 mm of edge sinks a quarter of the 5 um bound.
+  const scene::Part& peg = s.parts[1];
+  const double load = s.params.guidance.kappa * (peg.initial.position - peg.target.position).norm() +
+                      peg.mass * s.gravity.norm();
+  EXPECT_NEAR(r.line_stiffness, load / (2e-3 * 0.25 * 5e-6), 1e-9 * r.line_stiffness);
+  EXPECT_NEAR(r.stiffness, r.line_stiffness / 2e-3, 1e-9 * r.stiffness);
+  // The step-floor and retry warnings mark the impact on the chamfer (about
+  // 21 ms), not CPodes probing its first steps at t = 0.
+  for (const WarningKind k : {WarningKind::kStepSizeFloor, WarningKind::kIntegratorRetry}) {
+    EXPECT_GT(r.warnings.at(k).count, 0) << WarningName(k);
+    EXPECT_GT(r.warnings.at(k).first_time, 0.015) << WarningName(k);
+  }
 }
 
 }  // namespace

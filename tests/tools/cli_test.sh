@@ -216,6 +216,20 @@ expect_status "trial with an unwritable trace path" 2
 expect_in "trial with an unwritable trace path" "$err" "no_such_dir/peg.csv"
 run trial "$scene" --seed 1 --integrator NoSuchIntegrator
 expect_status "trial with an unknown integrator" 2
+# --- trial --sample: dense rows with a trace; without one, or not positive: exit 2, one line.
+run trial "$scene" --seed 1 --trace "$tmp/sampled.csv" --sample 0.001
+expect_status "trial --sample 0.001" 0
+expect_in "trial --sample 0.001" "$out" "sample rows)"
+expect_in "trial --sample rows" "$tmp/sampled.csv" "sample,0.001,"
+run trial "$scene" --seed 1 --sample 0.001
+expect_status "trial --sample without --trace" 2
+expect_in "trial --sample without --trace" "$err" "needs --trace FILE"
+expect_lines "trial --sample without --trace" "$err" 1
+run trial "$scene" --seed 1 --trace "$tmp/sampled.csv" --sample -1
+expect_status "trial --sample -1" 2
+expect_in "trial --sample -1" "$err" "must be > 0 s"
+expect_lines "trial --sample -1" "$err" 1
+
 for position in 1 -1; do
   run trial "$scene" --seed 1 --position "$position"
   expect_status "trial --position $position (one part in the sequence)" 2
