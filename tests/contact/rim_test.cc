@@ -1,4 +1,4 @@
-// Rims (a static part's convex edges) and their line law in ContactModel.
+// Rims (a static part's convex edges) and their line law in PenaltyContact.
 //
 // MakeRims against closed forms: the samples' total length against the sum of
 // the convex edge circles' circumferences 2 pi r (or a box's 4 (a + b + c)),
@@ -22,7 +22,7 @@
 #include <utility>
 #include <vector>
 
-#include "vahf/contact/contact_model.h"
+#include "vahf/contact/penalty_contact.h"
 #include "vahf/contact/point_shell.h"
 #include "vahf/contact/signed_distance.h"
 #include "vahf/geometry/shape.h"
@@ -197,9 +197,9 @@ Obstacle WithRims(const Shape& shape, const Eigen::Isometry3d& pose, double rim_
                   MakeRims(shape, rim_spacing)};
 }
 
-ContactModel Model(const Shape& part, std::vector<Obstacle> obstacles,
+PenaltyContact Model(const Shape& part, std::vector<Obstacle> obstacles,
                    const ContactParams& params = ContactParams()) {
-  return ContactModel(MakePointShell(part, params.shell_spacing), SignedDistance(part),
+  return PenaltyContact(MakePointShell(part, params.shell_spacing), SignedDistance(part),
                       BoundingRadius(part), kMuPart, std::move(obstacles), params);
 }
 
@@ -356,7 +356,7 @@ void SweepAcrossOnset(const Shape& part, const Obstacle& obstacle,
                       const Eigen::Isometry3d& start, const Eigen::Vector3d& direction,
                       int steps, double rho_min, double max_shell_area) {
   const ContactParams params;
-  const ContactModel model = Model(part, {obstacle}, params);
+  const PenaltyContact model = Model(part, {obstacle}, params);
   double max_rim_length = 0;
   for (const RimPoint& q : obstacle.rim) max_rim_length = std::max(max_rim_length, q.length);
   const double x0 = params.onset_depth, h = x0 / 50;

@@ -9,20 +9,19 @@ rng::StreamKey CycleKey(std::uint64_t seed, std::uint64_t cycle, std::size_t n,
   return {seed, cycle * n + position};
 }
 
-CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_t cycle,
+CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed, std::uint64_t cycle,
                      double initial_work, bool record_trace) {
   CycleResult out;
   out.work = initial_work;
-  const std::size_t n = scene.sequence.size();
+  const std::size_t n = models.size();
   for (std::size_t p = 0; p < n; ++p) {
     sim::TrialOptions options;
-    options.sequence_position = static_cast<int>(p);
     options.initial_work = out.work;
     options.record_trace = record_trace;
     PartRun run;
     run.start_time = out.time;
     run.start_work = out.work;
-    run.trial = sim::RunTrial(scene, CycleKey(seed, cycle, n, p), options);
+    run.trial = sim::RunTrial(*models[p], CycleKey(seed, cycle, n, p), options);
     out.time += run.trial.end_time;
     out.work = run.trial.work;
     const bool done = run.trial.status == sim::Status::kCompleted;
@@ -33,6 +32,11 @@ CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_
   }
   out.completed = true;
   return out;
+}
+
+CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_t cycle,
+                     double initial_work, bool record_trace) {
+  return RunCycle(sim::BuildSequenceModels(scene), seed, cycle, initial_work, record_trace);
 }
 
 }  // namespace vahf::experiment

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "vahf/scene/scene.h"
+#include "vahf/sim/trial_model.h"
 #include "vahf/sim/trial_result.h"
 
 namespace vahf::experiment {
@@ -35,6 +37,13 @@ struct CycleResult {
 rng::StreamKey CycleKey(std::uint64_t seed, std::uint64_t cycle, std::size_t n,
                         std::size_t position);
 
+// The trial models of a scene's sequence (sim::BuildSequenceModels): built
+// once per scene of an experiment and shared by all its cycles.
+using SequenceModels = std::vector<std::shared_ptr<const sim::TrialModel>>;
+
+CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed, std::uint64_t cycle,
+                     double initial_work, bool record_trace);
+// Builds the scene's models, then runs the cycle.
 CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_t cycle,
                      double initial_work, bool record_trace);
 

@@ -20,6 +20,18 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
   for (const Condition& c : out.conditions)
     first.push_back(first.back() + static_cast<std::size_t>(c.trials > 0 ? c.trials : trials));
   const auto& conds = out.conditions;
+  // Every scene's trial models, built once before any cycle runs (a scene
+  // only building can reject fails here, with nothing lost) and shared by
+  // the conditions that run it.
+  std::vector<std::shared_ptr<const SequenceModels>> models;
+  for (std::size_t c = 0; c < conds.size(); ++c) {
+    std::shared_ptr<const SequenceModels> built;
+    for (std::size_t e = 0; e < c && !built; ++e)
+      if (conds[e].scene == conds[c].scene) built = models[e];
+    if (!built)
+      built = std::make_shared<const SequenceModels>(sim::BuildSequenceModels(*conds[c].scene));
+    models.push_back(built);
+  }
   out.records = RunIndexed<CycleRecord>(first.back(), options, [&](std::size_t k) {
     CycleRecord r;
     r.condition = static_cast<std::size_t>(
@@ -31,7 +43,7 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
     const double u = (static_cast<double>(j) + 0.5) / static_cast<double>(n);
     r.start_minute = c.minute_start + (c.minute_end - c.minute_start) * u;
     r.initial_work = c.work_start + (c.work_end - c.work_start) * u;
-    r.result = RunCycle(*c.scene, seed, r.cycle, r.initial_work, record_trace);
+    r.result = RunCycle(*models[r.condition], seed, r.cycle, r.initial_work, record_trace);
     return r;
   });
   return out;

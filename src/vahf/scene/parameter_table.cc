@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "vahf/contact/contact_registry.h"
+
 namespace vahf::scene {
 namespace {
 
@@ -15,6 +17,17 @@ const char* RuleText(ParamRule rule) {
     case ParamRule::kChoice: return "one of the names";
   }
   return "";
+}
+
+// "name: description; ..." of every registered contact model.
+const std::string& ContactModelHelp() {
+  static const std::string help = [] {
+    std::string text;
+    for (const contact::ContactModelEntry& e : contact::ContactModels())
+      text += fmt::format("{}{}: {}", text.empty() ? "" : "; ", e.name, e.description);
+    return text;
+  }();
+  return help;
 }
 
 #define VAHF_REAL(field) [](Parameters& p) -> double& { return p.field; }
@@ -58,7 +71,7 @@ std::vector<ParamSpec> MakeTable() {
       {"contact", "line_stiffness", "Pa", R::kPositive, "line load per metre of penetration per metre of a static part's convex edge", VAHF_REAL(contact.line_stiffness)},
       {"contact", "rim_spacing", "m", R::kPositive, "sample spacing along the static parts' convex edges (rims)", VAHF_REAL(contact.rim_spacing)},
       {"contact", "penetration_fraction", "1", R::kPositive, "penetration bound as a fraction of the smallest radial clearance (a warning past it)", VAHF_REAL(contact.penetration_fraction)},
-      {"contact", "model", "-", R::kChoice, "shell: point shell vs static fields, given stiffness; resolving: rims both ways, stiffness by the bound rule, barrier", nullptr, nullptr, VAHF_TEXT(contact.model), {"shell", "resolving"}},
+      {"contact", "model", "-", R::kChoice, ContactModelHelp().c_str(), nullptr, nullptr, VAHF_TEXT(contact.model), contact::ContactModelNames()},
       {"contact", "rule_contact_length", "m", R::kPositive, "edge length that carries the largest steady load (resolving model)", VAHF_REAL(contact.rule_contact_length)},
       {"contact", "rule_depth_fraction", "1", R::kUnit, "share of the bound the largest steady load may sink (resolving model)", VAHF_REAL(contact.rule_depth_fraction)},
       {"visibility", "mode", "-", R::kChoice, "raycast (Eq. 1), constant, or off (V = 1)", nullptr, nullptr, VAHF_TEXT(visibility.mode), {"raycast", "constant", "off"}},

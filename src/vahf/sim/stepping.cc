@@ -14,22 +14,22 @@ namespace {
 // Returns false when the state is unusable (the trial ends).
 class StepWatch {
  public:
-  explicit StepWatch(TrialContext& c) : c_(c) {}
+  explicit StepWatch(SimbodyTrial& t) : t_(t), c_(t.context()) {}
 
   // `s` is realized through Acceleration.
   bool Accepted(const SimTK::Integrator& integ, const SimTK::State& s) {
     const double t = s.getTime();
-    const contact::RigidMotion m = c_.MotionOf(s);
+    const contact::RigidMotion m = t_.MotionOf(s);
     if (std::optional<Ending> bad = CheckState(
-            m, c_.part->mass_properties.bounding_radius, c_.scene->params.simulation,
+            m, c_.model.part->mass_properties.bounding_radius, c_.params().simulation,
             "a step after decision", c_.last_decision, t)) {
       if (!IsFinite(m)) c_.warnings.Note(WarningKind::kNonFiniteState, t, bad->detail);
       c_.End(std::move(*bad));
       return false;
     }
-    Depth(c_.SnapshotOf(s).contact.max_depth, t);
+    Depth(t_.LoadsOf(s).contact.max_depth, t);
     const double h = integ.getPreviousStepSizeTaken();
-    const double floor = c_.scene->params.simulation.step_floor;
+    const double floor = c_.params().simulation.step_floor;
     // The first steps after a start or an event are the integrator probing
     // its step size (CPodes begins near 1e-11 s), not a sign of trouble.
     if (++steps_since_restart_ > kProbingSteps && h > 0 && h < floor)
@@ -60,15 +60,17 @@ class StepWatch {
   // The deepest contact so far, and a warning past the bound.
   void Depth(double depth, double t) {
     c_.max_penetration = std::max(c_.max_penetration, depth);
-    if (c_.penetration_bound > 0 && depth > c_.penetration_bound)
+    const TrialModel& model = c_.model;
+    if (model.penetration_bound > 0 && depth > model.penetration_bound)
       c_.warnings.Count(WarningKind::kPenetrationBound, t, [&] {
         return fmt::format("depth {:.3g} um > bound {:.3g} um ({} of the {:.3g} um radial "
                            "clearance)",
-                           depth * 1e6, c_.penetration_bound * 1e6,
-                           c_.scene->params.contact.penetration_fraction, c_.clearance * 1e6);
+                           depth * 1e6, model.penetration_bound * 1e6,
+                           c_.params().contact.penetration_fraction, model.clearance * 1e6);
       });
   }
 
+  SimbodyTrial& t_;
   TrialContext& c_;
   std::int64_t retries_ = 0;
   static constexpr int kProbingSteps = 3;
@@ -76,16 +78,16 @@ class StepWatch {
 };
 
 // A dense trace row at a sample state.
-TraceRow SampleRow(TrialContext& c, const SimTK::State& s) {
-  c.matter->getSystem().realize(s, SimTK::Stage::Dynamics);
-  const ForceSnapshot& snap = c.SnapshotOf(s);
-  TraceRow row = TrialContext::PoseRow(s.getTime(), c.MotionOf(s));
-  row.assembly_force = snap.assembly_force;
-  row.contact_force = snap.contact.normal_force;
-  row.friction_force = snap.contact.friction_force;
-  row.penetration = snap.contact.max_depth;
-  row.work = c.work;
-  row.psi = c.HeldDecision(s).psi;
+TraceRow SampleRow(SimbodyTrial& t, const SimTK::State& s) {
+  t.system().realize(s, SimTK::Stage::Dynamics);
+  const Loads& loads = t.LoadsOf(s);
+  TraceRow row = TrialContext::PoseRow(s.getTime(), t.MotionOf(s));
+  row.assembly_force = loads.assembly_force;
+  row.contact_force = loads.contact.normal_force;
+  row.friction_force = loads.contact.friction_force;
+  row.penetration = loads.contact.max_depth;
+  row.work = t.context().work;
+  row.psi = t.HeldDecision(s).psi;
   return row;
 }
 
@@ -97,7 +99,7 @@ TraceRow SampleRow(TrialContext& c, const SimTK::State& s) {
 // stops its steps at them).
 class Sampler {
  public:
-  Sampler(TrialContext& c, double interval) : c_(c), interval_(interval) {}
+  Sampler(SimbodyTrial& t, double interval) : t_(t), interval_(interval) {}
 
   // The integrator advanced to state `now` (realized to Acceleration): emit
   // every sample time in (previous, now], then remember `now`.
@@ -116,9 +118,9 @@ class Sampler {
         x.setTime(t);
         x.updQ() = h00 * q0_ + (h10 * h) * qdot0_ + h01 * now.getQ() + (h11 * h) * now.getQDot();
         x.updU() = h00 * u0_ + (h10 * h) * udot0_ + h01 * now.getU() + (h11 * h) * now.getUDot();
-        c_.matter->getSystem().realize(x, SimTK::Stage::Position);
-        c_.matter->getSystem().project(x, 1e-10);  // the quaternion back to unit length
-        c_.samples.push_back(SampleRow(c_, x));
+        t_.system().realize(x, SimTK::Stage::Position);
+        t_.system().project(x, 1e-10);  // the quaternion back to unit length
+        t_.context().samples.push_back(SampleRow(t_, x));
         ++next_;
       }
     }
@@ -131,7 +133,7 @@ class Sampler {
   }
 
  private:
-  TrialContext& c_;
+  SimbodyTrial& t_;
   double interval_;
   std::int64_t next_ = 1;
   bool have_previous_ = false;
@@ -148,19 +150,19 @@ class Sampler {
 // The loop is SimTK::TimeStepper::stepTo's (Simbody 3.7, TimeStepper.cpp),
 // returning at every internal step; time-advanced events are not dispatched
 // (the system has none).
-double Integrate(TrialContext& c, const SimTK::MultibodySystem& system,
-                 SimTK::Integrator& integ, const SimTK::State& initial,
-                 double sample_interval) {
+double Integrate(SimbodyTrial& t, SimTK::Integrator& integ, double sample_interval) {
   using SimTK::Integrator;
-  const double limit = c.scene->params.simulation.time_limit;
+  TrialContext& c = t.context();
+  const SimTK::MultibodySystem& system = t.system();
+  const double limit = c.params().simulation.time_limit;
   integ.setReturnEveryInternalStep(true);
-  integ.initialize(initial);
+  integ.initialize(t.initial_state());
   c.integrated = true;
   SimTK::HandleEventsOptions handle_options(integ.getConstraintToleranceInUse());
   if (integ.isInfinityNormInUse())
     handle_options.setOption(SimTK::HandleEventsOptions::UseInfinityNorm);
-  StepWatch watch(c);
-  Sampler sampler(c, sample_interval);
+  StepWatch watch(t);
+  Sampler sampler(t, sample_interval);
   sampler.Advanced(integ.getState(), limit);
   SimTK::Array_<SimTK::EventId> scheduled;
   double last_event_time = -SimTK::Infinity;

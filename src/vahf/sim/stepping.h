@@ -6,17 +6,15 @@
 
 #include <Simbody.h>
 
-#include "vahf/sim/internal/trial_context.h"
+#include "vahf/sim/simbody_trial.h"
 
 namespace vahf::sim::internal {
 
-// Steps `integ` from `initial` to completion, an ending or the scene's time
-// limit, dispatching the system's scheduled and triggered events; with
-// sample_interval > 0 it adds a dense trace row (c.samples) at every multiple
+// Steps `integ` from t's initial state to completion, an ending or the
+// scene's time limit, dispatching the system's scheduled and triggered events;
+// with sample_interval > 0 it adds a dense trace row (samples) at every multiple
 // of it, interpolated between accepted steps so that no integrator ever sees
 // a sample time. Returns the time reached. Integrator exceptions propagate.
-double Integrate(TrialContext& c, const SimTK::MultibodySystem& system,
-                 SimTK::Integrator& integ, const SimTK::State& initial,
-                 double sample_interval);
+double Integrate(SimbodyTrial& t, SimTK::Integrator& integ, double sample_interval);
 
 }  // namespace vahf::sim::internal

@@ -2,23 +2,28 @@
 // moved by gravity, contact and the simulated operator until it reaches its
 // target or fails (paper Sec. 3.1, Fig. 2; docs/design.md decisions 1-3, 6-10).
 //
-// The Simbody system holds only what the scene needs: the assembling part on
-// a free mobilizer; gravity; one force element for the operator's force and
-// torque and the penalty contact against the fixed parts (the base, parts with
-// role "assembled", and the parts assembled earlier in the sequence, at their
-// targets); no contact work at all when there is nothing to touch.
+// The part's trial model (trial_model.h) is built once and shared: its
+// contact model against the fixed parts (the base, parts with role
+// "assembled", and the parts assembled earlier in the sequence, at their
+// targets; no contact work at all when there is nothing to touch), its
+// visibility meshes, its operator. Each trial builds its Simbody system
+// (simbody_trial.h): the part on a free mobilizer, gravity, and the model's
+// contact and operator loads.
 #pragma once
 
 #include <string>
 
 #include "vahf/rng/stream.h"
 #include "vahf/scene/scene.h"
+#include "vahf/sim/trial_model.h"
 #include "vahf/sim/trial_result.h"
 
 namespace vahf::sim {
 
 struct TrialOptions {
-  int sequence_position = 0;  // which entry of scene.sequence to assemble
+  // Which entry of scene.sequence to assemble (the scene overload of RunTrial;
+  // a TrialModel knows its own).
+  int sequence_position = 0;
   double initial_work = 0.0;  // A carried over from earlier work, J
   bool record_trace = true;
   // > 0: also record a dense trace row every sample_interval seconds of
@@ -34,6 +39,10 @@ struct TrialOptions {
 // built and no ray is cast. Numerical trouble is a status, never an exception,
 // and every accepted step is checked (the warnings record: non-finite state,
 // contact deeper than the penetration bound, a step under the floor, retries).
+// Thread-safe: trials of one model run concurrently.
+TrialResult RunTrial(const TrialModel& model, rng::StreamKey key,
+                     const TrialOptions& options = {});
+// Builds the model of the part at options.sequence_position, then runs it.
 TrialResult RunTrial(const scene::Scene& scene, rng::StreamKey key,
                      const TrialOptions& options = {});
 

@@ -1,4 +1,4 @@
-#include "vahf/contact/contact_model.h"
+#include "vahf/contact/penalty_contact.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,7 +41,7 @@ std::optional<Hit> MovingPointInside(const Obstacle& o, const Eigen::Isometry3d&
 
 }  // namespace
 
-ContactModel::ContactModel(std::vector<ShellPoint> shell, SignedDistance moving_field,
+PenaltyContact::PenaltyContact(std::vector<ShellPoint> shell, SignedDistance moving_field,
                            double moving_bounding_radius, double moving_friction,
                            std::vector<Obstacle> obstacles, const ContactParams& params,
                            std::vector<RimPoint> moving_rim)
@@ -59,7 +59,7 @@ ContactModel::ContactModel(std::vector<ShellPoint> shell, SignedDistance moving_
   moving_rim_set_ = BuildRimSet(moving_rim_);
 }
 
-ContactModel::RimSet ContactModel::BuildRimSet(const std::vector<RimPoint>& rim) {
+PenaltyContact::RimSet PenaltyContact::BuildRimSet(const std::vector<RimPoint>& rim) {
   VAHF_CHECK(rim.size() < (std::size_t{1} << 31), "rim too large");
   RimSet set;
   if (rim.empty()) return set;
@@ -77,7 +77,7 @@ ContactModel::RimSet ContactModel::BuildRimSet(const std::vector<RimPoint>& rim)
   return set;
 }
 
-void ContactModel::BuildTree(std::size_t begin, std::size_t end) {
+void PenaltyContact::BuildTree(std::size_t begin, std::size_t end) {
   const geometry::BoundingSphere bound =
       geometry::BoundPoints(shell_.begin() + begin, shell_.begin() + end,
                             [](const ShellPoint& s) { return s.position; });
@@ -100,7 +100,7 @@ void ContactModel::BuildTree(std::size_t begin, std::size_t end) {
   nodes_[index].escape = static_cast<std::uint32_t>(nodes_.size());
 }
 
-double ContactModel::Law(double k, double x0, double c, double b, double depth,
+double PenaltyContact::Law(double k, double x0, double c, double b, double depth,
                          double depth_rate) {
   if (!(depth > 0)) return 0.0;
   // The C1 elastic law and its slope.
@@ -120,16 +120,16 @@ double ContactModel::Law(double k, double x0, double c, double b, double depth,
   return elastic * std::max(0.0, 1.0 + c * depth_rate);
 }
 
-double ContactModel::Pressure(const ContactParams& p, double depth, double depth_rate) {
+double PenaltyContact::Pressure(const ContactParams& p, double depth, double depth_rate) {
   return Law(p.stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth, depth_rate);
 }
 
-double ContactModel::LineLoad(const ContactParams& p, double depth, double depth_rate) {
+double PenaltyContact::LineLoad(const ContactParams& p, double depth, double depth_rate) {
   return Law(p.line_stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth,
              depth_rate);
 }
 
-bool ContactModel::AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
+bool PenaltyContact::AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
                               const Eigen::Vector3d& u, double fn, double mu,
                               ContactForces* out) const {
   if (!(fn > 0)) return false;
@@ -142,15 +142,16 @@ bool ContactModel::AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d& v
   return true;
 }
 
-ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
-  ++counters_.evaluations;
+ContactForces PenaltyContact::DoEvaluate(const RigidMotion& m,
+                                         ContactCounters& counters) const {
+  ++counters.evaluations;
   ContactForces out;
   for (std::size_t index = 0; index < obstacles_.size(); ++index) {
     const Obstacle& o = obstacles_[index];
     // Broad phase: bounding spheres about the two frame origins.
     const double reach = o.bounding_radius + shell_radius_;
     if ((m.pose.translation() - o.pose.translation()).squaredNorm() > reach * reach) {
-      ++counters_.pairs_skipped;
+      ++counters.pairs_skipped;
       continue;
     }
     const double mu = PairFriction(moving_friction_, o.friction);
@@ -161,7 +162,7 @@ ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
       const Eigen::Vector3d c_o = moving_in_obstacle * node.centre;
       const bool clear = SphereClear(o.field, c_o, node.radius);
       if (clear) {
-        ++counters_.clusters_skipped;
+        ++counters.clusters_skipped;
         i = node.escape;
         continue;
       }
@@ -172,7 +173,7 @@ ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
       i = node.escape;
       for (std::size_t k = node.begin; k < node.end; ++k) {
         const ShellPoint& s = shell_[k];
-        ++counters_.point_queries;
+        ++counters.point_queries;
         const std::optional<Hit> h = MovingPointInside(o, moving_in_obstacle, m, s.position);
         if (!h || !AddContact(h->r, h->v, h->n,
                               Pressure(params_, h->depth, -h->v.dot(h->n)) * s.area, mu, &out))
@@ -181,26 +182,26 @@ ContactForces ContactModel::Evaluate(const RigidMotion& m) const {
         out.max_depth = std::max(out.max_depth, h->depth);
       }
     }
-    EvaluateMovingRims(index, m, mu, &out);
-    EvaluateRims(index, m, mu, &out);
+    EvaluateMovingRims(index, m, mu, counters, &out);
+    EvaluateRims(index, m, mu, counters, &out);
   }
   return out;
 }
 
-void ContactModel::EvaluateMovingRims(std::size_t index, const RigidMotion& m, double mu,
-                                      ContactForces* out) const {
+void PenaltyContact::EvaluateMovingRims(std::size_t index, const RigidMotion& m, double mu,
+                                        ContactCounters& counters, ContactForces* out) const {
   const Obstacle& o = obstacles_[index];
   const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
   for (const RimBlock& block : moving_rim_set_.blocks) {
     const Eigen::Vector3d c_o = moving_in_obstacle * block.centre;
     const bool clear = SphereClear(o.field, c_o, block.radius);
     if (clear) {
-      ++counters_.rim_blocks_skipped;
+      ++counters.rim_blocks_skipped;
       continue;
     }
     for (std::size_t k = block.begin; k < block.end; ++k) {
       const RimPoint& q = moving_rim_[k];
-      ++counters_.rim_queries;
+      ++counters.rim_queries;
       const std::optional<Hit> h = MovingPointInside(o, moving_in_obstacle, m, q.position);
       if (!h || !AddContact(h->r, h->v, h->n,
                             LineLoad(params_, h->depth, -h->v.dot(h->n)) * q.length, mu, out))
@@ -211,15 +212,15 @@ void ContactModel::EvaluateMovingRims(std::size_t index, const RigidMotion& m, d
   }
 }
 
-void ContactModel::EvaluateRims(std::size_t index, const RigidMotion& m, double mu,
-                                ContactForces* out) const {
+void PenaltyContact::EvaluateRims(std::size_t index, const RigidMotion& m, double mu,
+                                  ContactCounters& counters, ContactForces* out) const {
   const Obstacle& o = obstacles_[index];
   const RimSet& set = rim_sets_[index];
   if (set.blocks.empty()) return;
   // Rim points go to the moving frame with one transform.
   const Eigen::Isometry3d obstacle_in_moving = m.pose.inverse() * o.pose;
   if ((obstacle_in_moving * set.centre).norm() > set.radius + shell_radius_) {
-    ++counters_.rims_skipped;
+    ++counters.rims_skipped;
     return;
   }
   const Eigen::Matrix3d& r_world_moving = m.pose.linear();
@@ -227,12 +228,12 @@ void ContactModel::EvaluateRims(std::size_t index, const RigidMotion& m, double 
     const Eigen::Vector3d c_m = obstacle_in_moving * block.centre;
     const bool clear = SphereClear(moving_field_, c_m, block.radius);
     if (clear) {
-      ++counters_.rim_blocks_skipped;
+      ++counters.rim_blocks_skipped;
       continue;
     }
     for (std::size_t k = block.begin; k < block.end; ++k) {
       const RimPoint& q = o.rim[k];
-      ++counters_.rim_queries;
+      ++counters.rim_queries;
       const Eigen::Vector3d p_m = obstacle_in_moving * q.position;
       const std::optional<Distance> d = moving_field_.Penetration(p_m);
       if (!d) continue;

@@ -1,4 +1,4 @@
-// ContactModel against closed forms: the pressure law against its defining
+// PenaltyContact against closed forms: the pressure law against its defining
 // piecewise formula (quadratic onset, linear with slope k beyond, Hunt-Crossley
 // factor 1 + c xdot: K. H. Hunt and F. R. E. Crossley, J. Appl. Mech. 42 (1975)
 // 440-445); a box pressed flat into a floor against pressure x bottom-face
@@ -15,7 +15,7 @@
 // bore's mouth described with its origin moved along its axis and in a
 // rotated and shifted world. The rim law against closed forms is in
 // rim_test.cc.
-#include "vahf/contact/contact_model.h"
+#include "vahf/contact/penalty_contact.h"
 
 #include <gtest/gtest.h>
 
@@ -61,9 +61,9 @@ Obstacle Floor() {
   return MakeObstacle(Box{{1.0, 1.0, 0.2}}, Translation({0, 0, -0.1}), kMuFloor);
 }
 
-ContactModel Model(const Shape& part, double spacing, std::vector<Obstacle> obstacles,
+PenaltyContact Model(const Shape& part, double spacing, std::vector<Obstacle> obstacles,
                    const ContactParams& params = ContactParams()) {
-  return ContactModel(MakePointShell(part, spacing), SignedDistance(part),
+  return PenaltyContact(MakePointShell(part, spacing), SignedDistance(part),
                       BoundingRadius(part), kMuPart, std::move(obstacles), params);
 }
 
@@ -71,23 +71,23 @@ ContactModel Model(const Shape& part, double spacing, std::vector<Obstacle> obst
 
 TEST(ContactPressure, ZeroWithoutPenetration) {
   const ContactParams p;
-  EXPECT_EQ(ContactModel::Pressure(p, 0.0, 0.0), 0.0);
-  EXPECT_EQ(ContactModel::Pressure(p, -1e-6, 0.0), 0.0);
-  EXPECT_EQ(ContactModel::Pressure(p, -1e-3, 10.0), 0.0);
-  EXPECT_EQ(ContactModel::Pressure(p, 0.0, 10.0), 0.0);
+  EXPECT_EQ(PenaltyContact::Pressure(p, 0.0, 0.0), 0.0);
+  EXPECT_EQ(PenaltyContact::Pressure(p, -1e-6, 0.0), 0.0);
+  EXPECT_EQ(PenaltyContact::Pressure(p, -1e-3, 10.0), 0.0);
+  EXPECT_EQ(PenaltyContact::Pressure(p, 0.0, 10.0), 0.0);
 }
 
 TEST(ContactPressure, QuadraticOnsetIsC1AtZero) {
   const ContactParams p;
   const double k = p.stiffness, x0 = p.onset_depth;
   for (double x : {1e-9, 1e-8, 1e-7, 5e-7, 0.999e-6})
-    EXPECT_NEAR(ContactModel::Pressure(p, x, 0.0), k * x * x / (2 * x0), 1e-12 * k * x0)
+    EXPECT_NEAR(PenaltyContact::Pressure(p, x, 0.0), k * x * x / (2 * x0), 1e-12 * k * x0)
         << x;
   // The value and the forward-difference slope both vanish as the depth does:
   // slope(h) = k h / x0 (1 + 1/2 from the difference) shrinks linearly with h.
   for (double h : {1e-8, 1e-10, 1e-12}) {
-    const double value = ContactModel::Pressure(p, h, 0.0);
-    const double slope = (ContactModel::Pressure(p, 2 * h, 0.0) - value) / h;
+    const double value = PenaltyContact::Pressure(p, h, 0.0);
+    const double slope = (PenaltyContact::Pressure(p, 2 * h, 0.0) - value) / h;
     EXPECT_NEAR(slope, 1.5 * k * h / x0, 1e-6 * k * h / x0) << h;
     EXPECT_LT(slope, 2 * k * h / x0) << h;
     EXPECT_LE(value, k * h * h / x0) << h;
@@ -97,34 +97,34 @@ TEST(ContactPressure, QuadraticOnsetIsC1AtZero) {
 TEST(ContactPressure, ContinuousWithSlopeKAtTheOnsetDepthAndLinearBeyond) {
   const ContactParams p;
   const double k = p.stiffness, x0 = p.onset_depth;
-  EXPECT_NEAR(ContactModel::Pressure(p, x0, 0.0), k * x0 / 2, 1e-9 * k * x0);
+  EXPECT_NEAR(PenaltyContact::Pressure(p, x0, 0.0), k * x0 / 2, 1e-9 * k * x0);
   const double h = 1e-12;
-  const double below = ContactModel::Pressure(p, x0 - h, 0.0);
-  const double above = ContactModel::Pressure(p, x0 + h, 0.0);
+  const double below = PenaltyContact::Pressure(p, x0 - h, 0.0);
+  const double above = PenaltyContact::Pressure(p, x0 + h, 0.0);
   EXPECT_NEAR(below, k * x0 / 2, 2 * k * h);  // continuous
   EXPECT_NEAR(above, k * x0 / 2, 2 * k * h);
   // One-sided slopes over 1 nm: k (1 - h / (2 x0)) on the left, k on the right.
   const double d = 1e-9;
-  const double at = ContactModel::Pressure(p, x0, 0.0);
-  EXPECT_NEAR((at - ContactModel::Pressure(p, x0 - d, 0.0)) / d, k, 1e-3 * k);
-  EXPECT_NEAR((ContactModel::Pressure(p, x0 + d, 0.0) - at) / d, k, 1e-6 * k);
+  const double at = PenaltyContact::Pressure(p, x0, 0.0);
+  EXPECT_NEAR((at - PenaltyContact::Pressure(p, x0 - d, 0.0)) / d, k, 1e-3 * k);
+  EXPECT_NEAR((PenaltyContact::Pressure(p, x0 + d, 0.0) - at) / d, k, 1e-6 * k);
   // Linear beyond, with slope k and offset x0 / 2.
   for (double x : {2e-6, 1e-5, 1e-4, 1e-3})
-    EXPECT_NEAR(ContactModel::Pressure(p, x, 0.0), k * (x - x0 / 2), 1e-12 * k * x) << x;
+    EXPECT_NEAR(PenaltyContact::Pressure(p, x, 0.0), k * (x - x0 / 2), 1e-12 * k * x) << x;
 }
 
 TEST(ContactPressure, HuntCrossleyFactorClampedAtZero) {
   ContactParams p;
   p.dissipation = 0.5;
   for (double x : {5e-7, 2e-5}) {
-    const double elastic = ContactModel::Pressure(p, x, 0.0);
+    const double elastic = PenaltyContact::Pressure(p, x, 0.0);
     for (double rate : {0.3, 1.0, 10.0, -0.3, -1.0, -1.9})
-      EXPECT_NEAR(ContactModel::Pressure(p, x, rate), elastic * (1 + 0.5 * rate),
+      EXPECT_NEAR(PenaltyContact::Pressure(p, x, rate), elastic * (1 + 0.5 * rate),
                   1e-12 * elastic)
           << "depth " << x << ", rate " << rate;
     // Separating faster than 1/c = 2 m/s: no pull, exactly zero.
     for (double rate : {-2.0, -2.5, -100.0})
-      EXPECT_EQ(ContactModel::Pressure(p, x, rate), 0.0) << "rate " << rate;
+      EXPECT_EQ(PenaltyContact::Pressure(p, x, rate), 0.0) << "rate " << rate;
   }
 }
 
@@ -138,20 +138,20 @@ TEST(ContactPressure, BarrierHardensTowardItsDepthAndLeavesAlongTheTangent) {
   barrier.barrier_depth = b;
   for (double x : {0.5e-6, 2e-6, 4e-6, 4.9e-6}) {
     const double s = 1.0 / (1.0 - x / b);
-    EXPECT_NEAR(ContactModel::Pressure(barrier, x, 0.0),
-                ContactModel::Pressure(plain, x, 0.0) * s * s,
-                1e-12 * ContactModel::Pressure(barrier, x, 0.0))
+    EXPECT_NEAR(PenaltyContact::Pressure(barrier, x, 0.0),
+                PenaltyContact::Pressure(plain, x, 0.0) * s * s,
+                1e-12 * PenaltyContact::Pressure(barrier, x, 0.0))
         << "depth " << x;
   }
-  const double xc = b * (1.0 - ContactModel::kBarrierReserve), h = 1e-15;
-  const double at = ContactModel::Pressure(barrier, xc, 0.0);
-  EXPECT_NEAR(ContactModel::Pressure(barrier, xc + h, 0.0), at, 1e-6 * at);  // continuous
-  const double slope_in = (at - ContactModel::Pressure(barrier, xc - 1e-12, 0.0)) / 1e-12;
-  const double slope_out = (ContactModel::Pressure(barrier, xc + 1e-12, 0.0) - at) / 1e-12;
+  const double xc = b * (1.0 - PenaltyContact::kBarrierReserve), h = 1e-15;
+  const double at = PenaltyContact::Pressure(barrier, xc, 0.0);
+  EXPECT_NEAR(PenaltyContact::Pressure(barrier, xc + h, 0.0), at, 1e-6 * at);  // continuous
+  const double slope_in = (at - PenaltyContact::Pressure(barrier, xc - 1e-12, 0.0)) / 1e-12;
+  const double slope_out = (PenaltyContact::Pressure(barrier, xc + 1e-12, 0.0) - at) / 1e-12;
   EXPECT_NEAR(slope_out, slope_in, 1e-2 * slope_in);  // C1 at xc
-  EXPECT_NEAR(ContactModel::Pressure(barrier, xc + 1e-9, 0.0), at + slope_out * 1e-9,
+  EXPECT_NEAR(PenaltyContact::Pressure(barrier, xc + 1e-9, 0.0), at + slope_out * 1e-9,
               1e-6 * at);  // linear beyond
-  EXPECT_GT(at, 1e5 * ContactModel::Pressure(plain, xc, 0.0));  // 1/eps^2 = 1e6 stiffer
+  EXPECT_GT(at, 1e5 * PenaltyContact::Pressure(plain, xc, 0.0));  // 1/eps^2 = 1e6 stiffer
 }
 
 // ---------------------------------------------------------------- flat box on a floor
@@ -169,11 +169,11 @@ Eigen::Isometry3d FlatPose(double depth) {
 }
 
 TEST(ContactModelFlat, NormalForceIsPressureTimesArea) {
-  const ContactModel model = Model(Box{kPartSize}, 1e-3, {Floor()});
+  const PenaltyContact model = Model(Box{kPartSize}, 1e-3, {Floor()});
   RigidMotion m;
   m.pose = FlatPose(kDepth);
   const ContactForces f = model.Evaluate(m);
-  const double n = ContactModel::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  const double n = PenaltyContact::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
   EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
   EXPECT_NEAR(f.normal_force.x(), 0.0, 1e-12 * n);
   EXPECT_NEAR(f.normal_force.y(), 0.0, 1e-12 * n);
@@ -186,7 +186,7 @@ TEST(ContactModelFlat, NormalForceIsPressureTimesArea) {
 }
 
 TEST(ContactModelFlat, ForceDoesNotDependOnShellSpacing) {
-  const double n = ContactModel::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  const double n = PenaltyContact::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
   for (double s : {4e-3, 3e-3, 7e-4}) {
     RigidMotion m;
     m.pose = FlatPose(kDepth);
@@ -196,11 +196,11 @@ TEST(ContactModelFlat, ForceDoesNotDependOnShellSpacing) {
 }
 
 TEST(ContactModelFlat, HuntCrossleyDampingFromTheApproachSpeed) {
-  const ContactModel model = Model(Box{kPartSize}, 1e-3, {Floor()});
+  const PenaltyContact model = Model(Box{kPartSize}, 1e-3, {Floor()});
   RigidMotion m;
   m.pose = FlatPose(kDepth);
   m.velocity = {0, 0, -0.2};  // pressing in at 0.2 m/s: factor 1 + 0.5 * 0.2
-  const double n = ContactModel::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  const double n = PenaltyContact::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
   EXPECT_NEAR(model.Evaluate(m).normal_force.z() / n, 1.1, 1e-9);
   m.velocity = {0, 0, 3.0};  // separating faster than 1/c: no force at all
   const ContactForces f = model.Evaluate(m);
@@ -210,7 +210,7 @@ TEST(ContactModelFlat, HuntCrossleyDampingFromTheApproachSpeed) {
 }
 
 TEST(ContactModelFlat, SlidingFrictionIsMuTimesNormalAgainstTheSlip) {
-  const ContactModel model = Model(Box{kPartSize}, 1e-3, {Floor()});
+  const PenaltyContact model = Model(Box{kPartSize}, 1e-3, {Floor()});
   const ContactParams params;
   ASSERT_GT(0.05, 10 * params.friction_transition_speed);
   for (double angle : {0.0, 0.8, -2.4}) {
@@ -219,7 +219,7 @@ TEST(ContactModelFlat, SlidingFrictionIsMuTimesNormalAgainstTheSlip) {
     const Eigen::Vector3d dir(std::cos(angle), std::sin(angle), 0);
     m.velocity = 0.05 * dir;
     const ContactForces f = model.Evaluate(m);
-    const double n = ContactModel::Pressure(params, kDepth, 0.0) * kBottomArea;
+    const double n = PenaltyContact::Pressure(params, kDepth, 0.0) * kBottomArea;
     EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
     EXPECT_NEAR((f.friction_force - (-kMu * n * dir)).norm(), 0.0, 1e-9 * kMu * n)
         << "friction (" << f.friction_force.transpose() << ")";
@@ -231,10 +231,10 @@ TEST(ContactModelFlat, SlidingFrictionIsMuTimesNormalAgainstTheSlip) {
 }
 
 TEST(ContactModelFlat, FrictionIsLinearInSlipBelowTheTransitionSpeed) {
-  const ContactModel model = Model(Box{kPartSize}, 1e-3, {Floor()});
+  const PenaltyContact model = Model(Box{kPartSize}, 1e-3, {Floor()});
   const ContactParams params;
   const double vs = params.friction_transition_speed;
-  const double n = ContactModel::Pressure(params, kDepth, 0.0) * kBottomArea;
+  const double n = PenaltyContact::Pressure(params, kDepth, 0.0) * kBottomArea;
   const Eigen::Vector3d dir(0.6, -0.8, 0);
   for (double speed : {1e-5, 2e-4, 4e-4, 0.999e-3}) {
     RigidMotion m;
@@ -289,7 +289,7 @@ double ContinuumPegForce(const ContactParams& params, const TiltedContact& c) {
   for (int i = 0; i < n; ++i) {
     const double y = -r + (i + 0.5) * a / n;
     const double depth = kPegDepth - (y + r) * std::sin(kTilt);
-    cap += 2 * std::sqrt(r * r - y * y) * ContactModel::Pressure(params, depth, 0.0);
+    cap += 2 * std::sqrt(r * r - y * y) * PenaltyContact::Pressure(params, depth, 0.0);
   }
   cap *= a / n;
   auto q = [&](double x) {
@@ -364,44 +364,44 @@ TEST(ContactModelBroadPhase, FarObstacleIsSkippedWithoutPointQueries) {
   const Shape part = Box{kPartSize};
   const Shape block = Box{{0.1, 0.1, 0.1}};
   // Origins 0.5 m apart; the spheres reach 0.03 + 0.0866 m.
-  const ContactModel model =
+  const PenaltyContact model =
       Model(part, 1e-3, {MakeObstacle(block, Translation({0.5, 0, 0}), kMuFloor)});
   RigidMotion m;
   m.velocity = {0.1, 0, -0.1};
-  const ContactCounters before = model.counters();
-  const ContactForces f = model.Evaluate(m);
-  const ContactCounters& after = model.counters();
-  EXPECT_EQ(after.evaluations, before.evaluations + 1);
-  EXPECT_EQ(after.pairs_skipped, before.pairs_skipped + 1);
-  EXPECT_EQ(after.point_queries, before.point_queries);
+  ContactCounters counters;
+  const ContactForces f = model.Evaluate(m, &counters);
+  EXPECT_EQ(counters.evaluations, 1u);
+  EXPECT_EQ(counters.pairs_skipped, 1u);
+  EXPECT_EQ(counters.point_queries, 0u);
   EXPECT_EQ(f.normal_force, Eigen::Vector3d::Zero());
   EXPECT_EQ(f.friction_force, Eigen::Vector3d::Zero());
   EXPECT_EQ(f.torque, Eigen::Vector3d::Zero());
   EXPECT_FALSE(f.in_contact());
-  model.Evaluate(m);
-  EXPECT_EQ(model.counters().pairs_skipped, before.pairs_skipped + 2);
-  EXPECT_EQ(model.counters().point_queries, before.point_queries);
+  model.Evaluate(m, &counters);
+  EXPECT_EQ(counters.pairs_skipped, 2u);
+  EXPECT_EQ(counters.point_queries, 0u);
 }
 
 TEST(ContactModelBroadPhase, FarObstacleDoesNotChangeANearContact) {
   const Shape part = Box{kPartSize};
   const Obstacle far =
       MakeObstacle(Box{{0.1, 0.1, 0.1}}, Translation({0.1, 2.0, 0}), kMuFloor);
-  const ContactModel alone = Model(part, 1e-3, {Floor()});
-  const ContactModel both = Model(part, 1e-3, {Floor(), far});
+  const PenaltyContact alone = Model(part, 1e-3, {Floor()});
+  const PenaltyContact both = Model(part, 1e-3, {Floor(), far});
   RigidMotion m;
   m.pose = FlatPose(kDepth);
   m.velocity = {0.02, -0.01, 0};
-  const ContactForces a = alone.Evaluate(m);
-  const ContactForces b = both.Evaluate(m);
+  ContactCounters alone_counters, both_counters;
+  const ContactForces a = alone.Evaluate(m, &alone_counters);
+  const ContactForces b = both.Evaluate(m, &both_counters);
   EXPECT_EQ(a.normal_force, b.normal_force);
   EXPECT_EQ(a.friction_force, b.friction_force);
   EXPECT_EQ(a.torque, b.torque);
   EXPECT_EQ(a.points_in_contact, b.points_in_contact);
-  EXPECT_EQ(both.counters().pairs_skipped, 1u);  // the far block only
-  EXPECT_EQ(alone.counters().pairs_skipped, 0u);
-  EXPECT_GT(both.counters().point_queries, 0u);
-  EXPECT_LE(both.counters().point_queries, both.shell().size());
+  EXPECT_EQ(both_counters.pairs_skipped, 1u);  // the far block only
+  EXPECT_EQ(alone_counters.pairs_skipped, 0u);
+  EXPECT_GT(both_counters.point_queries, 0u);
+  EXPECT_LE(both_counters.point_queries, both.shell().size());
 }
 
 TEST(ContactModelBroadPhase, ContactAtTheEdgeOfTheBoundingSpheresIsKept) {
@@ -411,23 +411,24 @@ TEST(ContactModelBroadPhase, ContactAtTheEdgeOfTheBoundingSpheresIsKept) {
   // inside the sum of the two radii.
   const Obstacle floor =
       MakeObstacle(Box{{3.0, 3.0, 0.2}}, Translation({0, 0, -0.1}), kMuFloor);
-  const ContactModel model = Model(Box{kPartSize}, 1e-3, {floor});
+  const PenaltyContact model = Model(Box{kPartSize}, 1e-3, {floor});
   RigidMotion m;
   m.pose = Translation({1.51, 1.51, kPartSize.z() / 2 - kDepth});
   const double apart = (m.pose.translation() - floor.pose.translation()).norm();
   ASSERT_GT(apart, floor.bounding_radius);
   ASSERT_LT(apart, floor.bounding_radius + BoundingRadius(Box{kPartSize}));
-  const ContactForces f = model.Evaluate(m);
-  EXPECT_EQ(model.counters().pairs_skipped, 0u);
+  ContactCounters counters;
+  const ContactForces f = model.Evaluate(m, &counters);
+  EXPECT_EQ(counters.pairs_skipped, 0u);
   EXPECT_EQ(f.points_in_contact, 10 * 10);
-  const double n = ContactModel::Pressure(ContactParams(), kDepth, 0.0) * 0.01 * 0.01;
+  const double n = PenaltyContact::Pressure(ContactParams(), kDepth, 0.0) * 0.01 * 0.01;
   EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
 }
 
 TEST(ContactModelBroadPhase, SeparatedButOverlappingSpheresGiveNoForce) {
   // Bounding spheres overlap (origins 0.1 m apart, reach 0.03 + 0.0866 m) but
   // the solids are 5 mm apart.
-  const ContactModel model =
+  const PenaltyContact model =
       Model(Box{kPartSize}, 1e-3,
             {MakeObstacle(Box{{0.1, 0.1, 0.1}}, Translation({0, 0, -0.065}), 0.3)});
   const ContactForces f = model.Evaluate(RigidMotion());
@@ -442,11 +443,12 @@ TEST(ContactModelBroadPhase, ShellTreeCullsWithoutLosingAContactPoint) {
   const Shape peg = Peg();
   const std::vector<ShellPoint> shell = MakePointShell(peg, 0.5e-3);
   const Obstacle floor = Floor();
-  const ContactModel model(shell, SignedDistance(peg), BoundingRadius(peg), kMuPart, {floor},
+  const PenaltyContact model(shell, SignedDistance(peg), BoundingRadius(peg), kMuPart, {floor},
                            ContactParams());
   RigidMotion m;
   m.pose = PegPose({0.5 * M_PI / 180, 50e-6});  // a 5.7 mm wide patch
-  const ContactForces f = model.Evaluate(m);
+  ContactCounters counters;
+  const ContactForces f = model.Evaluate(m, &counters);
 
   Eigen::Vector3d brute = Eigen::Vector3d::Zero();
   int touching = 0;
@@ -454,15 +456,15 @@ TEST(ContactModelBroadPhase, ShellTreeCullsWithoutLosingAContactPoint) {
   for (const ShellPoint& p : shell) {
     const Distance d = floor.field.At(to_floor * p.position);
     if (!(d.distance < 0)) continue;
-    brute += ContactModel::Pressure(ContactParams(), -d.distance, 0.0) * p.area *
+    brute += PenaltyContact::Pressure(ContactParams(), -d.distance, 0.0) * p.area *
              (floor.pose.linear() * d.normal);
     ++touching;
   }
   ASSERT_GT(touching, 10);
   EXPECT_EQ(f.points_in_contact, touching);
   EXPECT_NEAR((f.normal_force - brute).norm(), 0.0, 1e-12 * brute.norm());
-  EXPECT_GT(model.counters().clusters_skipped, 0u);
-  EXPECT_LT(model.counters().point_queries, shell.size() / 4);
+  EXPECT_GT(counters.clusters_skipped, 0u);
+  EXPECT_LT(counters.point_queries, shell.size() / 4);
 }
 
 // ---------------------------------------------------------------- frame choice
@@ -480,9 +482,9 @@ TEST(ContactModelFrame, OriginOffsetFromTheCentroidDoesNotMatter) {
   // The floor has no rims, so the moving part's field is never queried here
   // (and frame B's would be the peg's shifted off its axis, which no profile
   // describes); ContactModelFrame.RimContact... below shifts along the axis.
-  const ContactModel a(shell_a, SignedDistance(peg), radius_a, kMuPart, {Floor()},
+  const PenaltyContact a(shell_a, SignedDistance(peg), radius_a, kMuPart, {Floor()},
                        ContactParams());
-  const ContactModel b(shell_b, SignedDistance(peg), radius_a + g.norm(), kMuPart, {Floor()},
+  const PenaltyContact b(shell_b, SignedDistance(peg), radius_a + g.norm(), kMuPart, {Floor()},
                        ContactParams());
 
   RigidMotion ma;
@@ -535,9 +537,10 @@ TEST(ContactModelBroadPhase, RimBlocksCullWithoutChangingABit) {
   const SignedDistance peg_field(peg);
   const Obstacle bore = BoreWithRims();
   const ContactParams params;
-  const ContactModel model = Model(peg, 1e-3, {bore}, params);
+  const PenaltyContact model = Model(peg, 1e-3, {bore}, params);
   const RigidMotion m = TiltedPegMoving();
-  const ContactForces f = model.Evaluate(m);
+  ContactCounters c;
+  const ContactForces f = model.Evaluate(m, &c);
 
   ContactForces brute;
   const Eigen::Isometry3d obstacle_in_moving = m.pose.inverse() * bore.pose;
@@ -549,7 +552,7 @@ TEST(ContactModelBroadPhase, RimBlocksCullWithoutChangingABit) {
     const Eigen::Vector3d u = -(rotation * d.normal);
     const Eigen::Vector3d r = rotation * p_m;
     const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);
-    const double fn = ContactModel::LineLoad(params, -d.distance, -v.dot(u)) * q.length;
+    const double fn = PenaltyContact::LineLoad(params, -d.distance, -v.dot(u)) * q.length;
     if (!(fn > 0)) continue;
     const Eigen::Vector3d v_t = v - v.dot(u) * u;
     const Eigen::Vector3d ft =
@@ -569,9 +572,9 @@ TEST(ContactModelBroadPhase, RimBlocksCullWithoutChangingABit) {
   EXPECT_EQ(f.max_depth, brute.max_depth);
   EXPECT_GT(f.friction_force.norm(), 0.5 * kMu * f.normal_force.norm());
 
-  const ContactCounters& c = model.counters();
+
   const std::size_t blocks =
-      (bore.rim.size() + ContactModel::kRimBlockSize - 1) / ContactModel::kRimBlockSize;
+      (bore.rim.size() + PenaltyContact::kRimBlockSize - 1) / PenaltyContact::kRimBlockSize;
   std::printf("peg tilted in the bore mouth: %zu rim points in %zu blocks, %llu queried "
               "(%llu blocks skipped), %llu shell points queried of %zu\n",
               bore.rim.size(), blocks, static_cast<unsigned long long>(c.rim_queries),
@@ -580,13 +583,13 @@ TEST(ContactModelBroadPhase, RimBlocksCullWithoutChangingABit) {
   EXPECT_EQ(c.rims_skipped, 0u);
   EXPECT_GT(c.rim_blocks_skipped, blocks / 2);
   // Queried and skipped blocks account for every point.
-  EXPECT_GE(c.rim_queries + c.rim_blocks_skipped * ContactModel::kRimBlockSize,
+  EXPECT_GE(c.rim_queries + c.rim_blocks_skipped * PenaltyContact::kRimBlockSize,
             bore.rim.size());
   // The mouth's two circles (139 + 127 points) lie within 50 um of the peg
   // all round, so no sphere about a run of them clears it; the outer block's
   // two 30 mm circles (754 points) are skipped but for runs sharing a block
   // with the mouth's.
-  EXPECT_LE(c.rim_queries, 139u + 127u + 2 * ContactModel::kRimBlockSize);
+  EXPECT_LE(c.rim_queries, 139u + 127u + 2 * PenaltyContact::kRimBlockSize);
 }
 
 TEST(ContactModelBroadPhase, RimsAwayFromTheMovingPartAreSkippedWhole) {
@@ -597,15 +600,16 @@ TEST(ContactModelBroadPhase, RimsAwayFromTheMovingPartAreSkippedWhole) {
   Obstacle rod = MakeObstacle(testing::Revolved({{0, 0}, {0.01, 0}, {0.01, 1.0}, {0, 1.0}}),
                               Eigen::Isometry3d::Identity(), kMuFloor);
   rod.rim = MakeRims(testing::Revolved({{0, 0}, {0.01, 0}, {0.01, 1.0}, {0, 1.0}}), 0.5e-3);
-  const ContactModel model = Model(Box{kPartSize}, 1e-3, {rod});
+  const PenaltyContact model = Model(Box{kPartSize}, 1e-3, {rod});
   RigidMotion m;
   m.pose = Translation({0.05, 0, -0.05});
-  const ContactForces f = model.Evaluate(m);
+  ContactCounters counters;
+  const ContactForces f = model.Evaluate(m, &counters);
   EXPECT_FALSE(f.in_contact());
-  EXPECT_EQ(model.counters().pairs_skipped, 0u);
-  EXPECT_EQ(model.counters().rims_skipped, 1u);
-  EXPECT_EQ(model.counters().rim_queries, 0u);
-  EXPECT_EQ(model.counters().rim_blocks_skipped, 0u);
+  EXPECT_EQ(counters.pairs_skipped, 0u);
+  EXPECT_EQ(counters.rims_skipped, 1u);
+  EXPECT_EQ(counters.rim_queries, 0u);
+  EXPECT_EQ(counters.rim_blocks_skipped, 0u);
 }
 
 // Rim contact of the tilted peg seen with the peg's origin moved up its axis
@@ -622,8 +626,8 @@ TEST(ContactModelFrame, RimContactWithTheOriginMovedAlongTheAxis) {
   std::vector<ShellPoint> shell_b = MakePointShell(peg_a, 1e-3);
   for (ShellPoint& p : shell_b) p.position.z() -= g;
   const double radius_a = BoundingRadius(peg_a);
-  const ContactModel a = Model(peg_a, 1e-3, {BoreWithRims()});
-  const ContactModel b(shell_b, SignedDistance(peg_b), radius_a + g, kMuPart,
+  const PenaltyContact a = Model(peg_a, 1e-3, {BoreWithRims()});
+  const PenaltyContact b(shell_b, SignedDistance(peg_b), radius_a + g, kMuPart,
                        {BoreWithRims()}, ContactParams());
 
   const RigidMotion ma = TiltedPegMoving();
@@ -653,8 +657,8 @@ TEST(ContactModelFrame, RimContactInATurnedAndShiftedWorld) {
   const Shape peg = testing::ChamferedPeg();
   Obstacle turned = BoreWithRims();
   turned.pose = w * turned.pose;
-  const ContactModel a = Model(peg, 1e-3, {BoreWithRims()});
-  const ContactModel b = Model(peg, 1e-3, {turned});
+  const PenaltyContact a = Model(peg, 1e-3, {BoreWithRims()});
+  const PenaltyContact b = Model(peg, 1e-3, {turned});
   const RigidMotion ma = TiltedPegMoving();
   RigidMotion mb;
   mb.pose = w * ma.pose;

@@ -1,0 +1,106 @@
+#include "vahf/sim/decisions.h"
+
+#include <cmath>
+
+#include "vahf/guidance/assembly_force.h"
+#include "vahf/guidance/assembly_torque.h"
+#include "vahf/human/fatigue.h"
+
+namespace vahf::sim::internal {
+
+std::optional<Decision> Decide(TrialContext& c, double time, const contact::RigidMotion& m) {
+  const TrialModel& model = c.model;
+  const auto& p = c.params();
+  const std::int64_t i = std::llround(time / p.simulation.decision_interval);
+  if (i <= c.last_decision) return std::nullopt;  // already decided at this instant
+  c.last_decision = i;
+  const Vector3d T = m.pose.translation();
+  if (std::optional<Ending> bad = CheckState(m, model.part->mass_properties.bounding_radius,
+                                             p.simulation, "decision", i, time)) {
+    c.End(std::move(*bad));
+    return std::nullopt;
+  }
+
+  // Fatigue: Eq. 4 over the last interval's travel with the force held then, Eq. 6.
+  if (i > 0)
+    c.work += human::WorkEq4(c.last_force, human::TravelOf(T - c.last_position), p.fatigue.k);
+  c.last_position = T;
+  const double psi = human::FatigueCoefficient(c.work, p.fatigue.a_max);
+
+  // Human factors at the part's centre of mass.
+  const Vector3d centre = m.pose * model.part_com;
+  const human::FactorValues f = c.FactorsAt(m, centre, c.MotionDirection(centre, T, i == 0));
+  c.last_centre = centre;
+
+  // Contact now: for the jam rule and the trace (the force law reads the
+  // current contact at every evaluation, not this one).
+  Decision d;
+  d.psi = psi;
+  const contact::ContactForces cf = c.ContactAt(m);
+  const bool in_contact = cf.in_contact() && cf.normal_force.norm() > 0;
+
+  // Outcomes decided at this instant (outcome.h).
+  DecisionFacts facts;
+  facts.time = time;
+  facts.operator_acts = model.operator_acts;
+  facts.psi = psi;
+  facts.work = c.work;
+  facts.shoulder_distance = f.shoulder_distance;
+  facts.reach_limit = model.reach_limit;
+  facts.in_contact = in_contact;
+  facts.distance = model.DistanceToTarget(m);
+  c.progress.Observe(i == 0, facts.time, facts.distance, facts.in_contact,
+                     p.simulation.jam_progress);
+  if (std::optional<Ending> end = CheckOperator(facts, p.fatigue, p.simulation, c.progress))
+    c.End(std::move(*end));
+
+  // Eq. 5 and the held orientation, keyed by {seed, trial} and decision i.
+  if (!c.ended) {
+    d.estimated_target = guidance::DrawEstimatedTarget(
+        p.guidance, c.key, static_cast<std::uint64_t>(i), model.part->target.position, T,
+        centre - model.posture.eye, f.eta, f.lambda_c, psi);
+    d.held_orientation =
+        guidance::DrawHeldOrientation(p.guidance, c.key, static_cast<std::uint64_t>(i),
+                                      model.part->target.Rotation(), f.eta);
+  } else {
+    d.estimated_target = T;
+    d.held_orientation = m.pose.linear();
+  }
+
+  Vector3d force, torque;
+  model.OperatorLoad(m, d, cf, &force, &torque);
+  c.last_force = force.norm();
+  c.max_penetration = std::max(c.max_penetration, cf.max_depth);
+  if (c.record_trace) {
+    TraceRow row = TrialContext::PoseRow(time, m);
+    row.assembly_force = force;
+    row.contact_force = cf.normal_force;
+    row.friction_force = cf.friction_force;
+    row.penetration = cf.max_depth;
+    row.factors = f;
+    row.work = c.work;
+    row.psi = psi;
+    c.trace.push_back(row);
+  }
+  return d;
+}
+
+TraceRow FinalRow(TrialContext& c, double time, const contact::RigidMotion& m) {
+  const TrialModel& model = c.model;
+  const Vector3d T = m.pose.translation();
+  const Vector3d centre = m.pose * model.part_com;
+  TraceRow row = TrialContext::PoseRow(time, m);
+  row.factors = c.FactorsAt(m, centre, c.MotionDirection(centre, T, false));
+  row.work = c.work + human::WorkEq4(c.last_force, human::TravelOf(T - c.last_position),
+                                     c.params().fatigue.k);
+  row.psi = human::FatigueCoefficient(row.work, c.params().fatigue.a_max);
+  if (model.contact.model) {
+    const contact::ContactForces cf = c.ContactAt(m);
+    row.contact_force = cf.normal_force;
+    row.friction_force = cf.friction_force;
+    row.penetration = cf.max_depth;
+  }
+  return row;
+}
+
+}  // namespace vahf::sim::internal

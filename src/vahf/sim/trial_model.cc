@@ -1,0 +1,192 @@
+#include "vahf/sim/trial_model.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "vahf/core/error.h"
+#include "vahf/geometry/clearance.h"
+#include "vahf/guidance/assembly_force.h"
+#include "vahf/guidance/assembly_torque.h"
+#include "vahf/human/fatigue.h"
+
+namespace vahf::sim {
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+// A part that stands still during a trial, where it stands.
+struct FixedPart {
+  const scene::Part* part;
+  Eigen::Isometry3d pose;
+};
+
+// The base, parts with role "assembled", and the parts assembled earlier in
+// the sequence (at their targets). Later parts are not in the trial at all.
+std::vector<FixedPart> FixedParts(const scene::Scene& scene, int position) {
+  std::vector<FixedPart> out;
+  for (std::size_t k = 0; k < scene.parts.size(); ++k) {
+    const scene::Part& p = scene.parts[k];
+    const auto seq =
+        std::find(scene.sequence.begin(), scene.sequence.end(), static_cast<int>(k));
+    const bool assembled_earlier =
+        seq != scene.sequence.end() && seq - scene.sequence.begin() < position;
+    if (p.role == scene::Role::kAssembling && !assembled_earlier) continue;
+    const scene::Pose& pose = p.role == scene::Role::kAssembling ? p.target : p.initial;
+    out.push_back({&p, pose.Transform()});
+  }
+  return out;
+}
+
+// Eq. 1's meshes: the part's and the fixed parts', at the scene's tolerance.
+VisibilityMeshes MeshesFor(const scene::Scene& scene, const scene::Part& part,
+                           const std::vector<FixedPart>& fixed) {
+  const auto& v = scene.params.visibility;
+  if (v.grid > visibility::kMaxGrid)
+    throw InputError(scene.file, "/parameters/visibility/grid", std::to_string(v.grid),
+                     fmt::format("at most {} rays a side", visibility::kMaxGrid));
+  // The mesher's errors know the value and rule but not the scene: add them.
+  const auto mesh = [&](const scene::Part& p) {
+    try {
+      return geometry::Tessellate(p.shape, v.tessellation_tolerance);
+    } catch (const InputError& e) {
+      throw InputError(scene.file, "/parameters/visibility/tessellation_tolerance",
+                       e.value(), fmt::format("{} (part '{}')", e.rule(), p.name));
+    }
+  };
+  VisibilityMeshes out;
+  out.part = mesh(part);
+  for (const FixedPart& f : fixed) out.occluders.push_back({mesh(*f.part), f.pose});
+  out.options.grid = v.grid;
+  return out;
+}
+
+}  // namespace
+
+std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
+                                                  int sequence_position) {
+  const auto& params = scene.params;
+  VAHF_CHECK(sequence_position >= 0 &&
+                 sequence_position < static_cast<int>(scene.sequence.size()),
+             "sequence position out of range");
+  const scene::Part& part = scene.parts[scene.sequence[sequence_position]];
+  auto out = std::make_shared<TrialModel>(human::FactorCurves{
+      params.sight.Build(), params.reach.Build(scene.op.arm_length, scene.op.height),
+      params.glance.Build()});
+  TrialModel& m = *out;
+  m.scene = &scene;
+  m.part = &part;
+  m.sequence_position = sequence_position;
+  m.operator_acts = params.guidance.mode == "operator";
+  m.part_mass = part.mass;
+  m.hand_mass = m.operator_acts ? params.guidance.hand_mass : 0.0;
+  m.mass = m.part_mass + m.hand_mass;
+  m.part_com = part.mass_properties.centroid;
+  {
+    // Parallel-axis sum of the part (principal axes = part axes) and the hand
+    // point mass, about their common centre of mass.
+    m.com = (m.part_mass * m.part_com + m.hand_mass * part.grasp) / m.mass;
+    const auto shift = [](double mass, const Vector3d& d) {
+      return (mass * (d.squaredNorm() * Matrix3d::Identity() - d * d.transpose())).eval();
+    };
+    m.inertia_body =
+        Matrix3d((part.density * part.mass_properties.inertia_per_density).asDiagonal()) +
+        shift(m.part_mass, m.part_com - m.com) + shift(m.hand_mass, part.grasp - m.com);
+  }
+  m.revolved = std::holds_alternative<geometry::RevolvedProfile>(part.shape);
+  m.posture = human::StandingPosture(scene.op);
+  m.reach_limit = params.reach.BreakpointsFor(scene.op.arm_length, scene.op.height).d3;
+  // Eq. 7 passes into Eq. 8 over a fraction of the part's weight under
+  // standard gravity (ISO 80000-3), whatever the scene's gravity.
+  m.blend_force = params.guidance.contact_blend * part.mass * scene::kStandardGravity;
+
+  const std::vector<FixedPart> fixed = FixedParts(scene, sequence_position);
+  // The penetration bound: a fraction of the smallest radial clearance
+  // between the part at its target and a fixed part (none: no bound).
+  for (const FixedPart& f : fixed)
+    if (const auto gap = geometry::SmallestRadialClearance(
+            part.shape, part.target.Transform(), f.part->shape, f.pose))
+      if (m.clearance == 0 || *gap < m.clearance) m.clearance = *gap;
+  m.penetration_bound = params.contact.penetration_fraction * m.clearance;
+  if (!fixed.empty()) {  // nothing to touch: no shell, no contact work
+    contact::ContactSetup setup;
+    setup.moving = {&part.shape, Eigen::Isometry3d::Identity(), part.friction,
+                    part.mass_properties.bounding_radius};
+    for (const FixedPart& f : fixed)
+      setup.fixed.push_back(
+          {&f.part->shape, f.pose, f.part->friction, f.part->mass_properties.bounding_radius});
+    setup.params = params.contact;
+    setup.penetration_bound = m.penetration_bound;
+    // The largest steady load: the operator's Eq. 7 pull at the start plus
+    // the part's weight.
+    const double pull = m.operator_acts ? params.guidance.kappa *
+                                              (part.initial.position - part.target.position).norm()
+                                        : 0.0;
+    setup.steady_load = pull + part.mass * scene.gravity.norm();
+    m.contact = contact::BuildContact(params.contact.model, setup);
+  }
+  // Eq. 1 by ray casting only when the scene asks for it and something could
+  // hide the part; a scene with V given or switched off tessellates nothing.
+  if (params.visibility.mode == "raycast" && !fixed.empty())
+    m.visibility = MeshesFor(scene, part, fixed);
+  return out;
+}
+
+std::vector<std::shared_ptr<const TrialModel>> BuildSequenceModels(const scene::Scene& scene) {
+  std::vector<std::shared_ptr<const TrialModel>> out;
+  for (std::size_t p = 0; p < scene.sequence.size(); ++p)
+    out.push_back(BuildTrialModel(scene, static_cast<int>(p)));
+  return out;
+}
+
+contact::ContactForces TrialModel::ContactAt(const contact::RigidMotion& m,
+                                             contact::ContactCounters* counters) const {
+  return contact.model ? contact.model->Evaluate(m, counters) : contact::ContactForces{};
+}
+
+void TrialModel::OperatorLoad(const contact::RigidMotion& m, const Decision& d,
+                              const contact::ContactForces& cf, Vector3d* force,
+                              Vector3d* torque) const {
+  *force = Vector3d::Zero();
+  *torque = Vector3d::Zero();
+  if (!operator_acts) return;
+  const Vector3d r_grasp = m.pose.linear() * part->grasp;
+  const Vector3d v_grasp = m.velocity + m.angular_velocity.cross(r_grasp);
+  const auto& g = scene->params.guidance;
+  // The arm always carries its own weight; the part's, as guidance says.
+  const guidance::FeltContact felt{cf.normal_force, cf.friction_force.norm()};
+  *force = guidance::ImpedanceForce(g, d.psi, mass, m.pose.translation(), d.estimated_target,
+                                    v_grasp, felt, blend_force, part_mass * scene->gravity,
+                                    scene->params.simulation.completion_distance) -
+           hand_mass * scene->gravity;
+  const Matrix3d inertia_world = m.pose.linear() * inertia_body * m.pose.linear().transpose();
+  *torque = r_grasp.cross(*force) +
+            guidance::AssemblyTorque(g, d.psi, inertia_world, m.pose.linear(),
+                                     d.held_orientation, m.angular_velocity);
+}
+
+Loads TrialModel::LoadsAt(const contact::RigidMotion& m, const Decision& d,
+                          contact::ContactCounters* counters) const {
+  Loads out;
+  out.contact = ContactAt(m, counters);
+  Vector3d torque;
+  OperatorLoad(m, d, out.contact, &out.assembly_force, &torque);
+  out.force = out.assembly_force + out.contact.normal_force + out.contact.friction_force;
+  out.torque = torque + out.contact.torque;
+  return out;
+}
+
+double TrialModel::DistanceToTarget(const contact::RigidMotion& m) const {
+  return (m.pose.translation() - part->target.position).norm();
+}
+
+double TrialModel::AngleToTargetDeg(const contact::RigidMotion& m) const {
+  const Matrix3d target = part->target.Rotation();
+  if (revolved)  // a solid of revolution is assembled whatever its spin
+    return human::AngleDeg(m.pose.linear().col(2), target.col(2));
+  return Eigen::AngleAxisd(target.transpose() * m.pose.linear()).angle() * 180.0 / M_PI;
+}
+
+}  // namespace vahf::sim

@@ -1,0 +1,108 @@
+// One part of a scene as every trial of it sees it, without Simbody
+// (docs/design.md decision 13): the moving body (part and hand), the operator's
+// posture and factor curves, the contact model, the visibility meshes, the
+// penetration bound; and the two force elements besides gravity, the contact
+// and the operator, as functions of the part's motion and the operator's held
+// decision, which any stepper can evaluate.
+//
+// Built and checked once per part and experiment (BuildTrialModel), then
+// shared, read-only, by every trial of that part on every thread.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "vahf/contact/contact_model.h"
+#include "vahf/contact/contact_registry.h"
+#include "vahf/geometry/tessellation.h"
+#include "vahf/human/factors.h"
+#include "vahf/scene/scene.h"
+#include "vahf/visibility/visibility.h"
+
+namespace vahf::sim {
+
+// What the operator decided at the last decision instant, held until the next
+// (docs/design.md decision 1). The contact it met is not held: the force law
+// reads the current contact (guidance::ImpedanceForce), so the force is
+// continuous in the state.
+struct Decision {
+  Eigen::Vector3d estimated_target = Eigen::Vector3d::Zero();  // T' of Eq. 5
+  Eigen::Matrix3d held_orientation = Eigen::Matrix3d::Identity();
+  double psi = 1.0;
+};
+
+// The loads on the moving body at one state, world frame.
+struct Loads {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // at the body origin, N
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // about the body origin, N m
+  Eigen::Vector3d assembly_force = Eigen::Vector3d::Zero();  // the operator's, at the grasp
+  contact::ContactForces contact;
+};
+
+// What Eq. 1 is cast against: the part's mesh and the fixed parts' meshes,
+// tessellated once. A caster (Embree scene) is built from them per trial:
+// casting moves the part's instance, so casters are not shared.
+struct VisibilityMeshes {
+  geometry::TriangleMesh part;
+  std::vector<visibility::Occluder> occluders;
+  visibility::CasterOptions options;
+};
+
+struct TrialModel {
+  explicit TrialModel(human::FactorCurves factor_curves) : curves(std::move(factor_curves)) {}
+
+  const scene::Scene* scene = nullptr;  // outlives the model
+  const scene::Part* part = nullptr;
+  int sequence_position = 0;
+  bool operator_acts = true;  // guidance mode "operator"
+  // The moving body: the part, plus the operator's hand and forearm as a point
+  // mass at the grasp point (guidance/hand_mass) when an operator guides it.
+  double part_mass = 0;
+  double hand_mass = 0;
+  double mass = 0;  // part + hand
+  Eigen::Matrix3d inertia_body = Eigen::Matrix3d::Zero();  // of both, about their centre of mass, part frame
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();       // of both, part frame
+  Eigen::Vector3d part_com = Eigen::Vector3d::Zero();  // of the part alone: where factors look
+  bool revolved = false;  // orientation about the part's own z axis is free
+  human::Posture posture;
+  human::FactorCurves curves;
+  double reach_limit = 0;  // D3, m
+  // The contact normal force over which Eq. 7 passes into Eq. 8, N.
+  double blend_force = 1.0;
+  double clearance = 0;          // the smallest radial clearance to a fixed part, m (0: none)
+  double penetration_bound = 0;  // m; 0: the scene has no radial fit to bound
+  contact::BuiltContact contact;  // model null: nothing to touch, no contact work
+  std::optional<VisibilityMeshes> visibility;  // raycast, and something could hide the part
+
+  // The contact force element: the forces the part meets at m.
+  contact::ContactForces ContactAt(const contact::RigidMotion& m,
+                                   contact::ContactCounters* counters) const;
+  // The operator force element: the force at the grasp point and the torque
+  // about the body origin (world), with the contact `cf` the part meets at m.
+  void OperatorLoad(const contact::RigidMotion& m, const Decision& d,
+                    const contact::ContactForces& cf, Eigen::Vector3d* force,
+                    Eigen::Vector3d* torque) const;
+  // Both elements at m (gravity aside): the contact first, as the operator
+  // feels it, then their sum, operator first (the order fixes the bits).
+  Loads LoadsAt(const contact::RigidMotion& m, const Decision& d,
+                contact::ContactCounters* counters) const;
+
+  // Distance and angle to the target, for completion and progress.
+  double DistanceToTarget(const contact::RigidMotion& m) const;
+  double AngleToTargetDeg(const contact::RigidMotion& m) const;
+};
+
+// The model of the part at `sequence_position` of scene.sequence, against the
+// base, parts with role "assembled" and the parts assembled before it (at
+// their targets). InputError (naming scene.file) for what only building it
+// can find: a visibility grid too fine, a tolerance the mesher refuses.
+std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
+                                                  int sequence_position);
+
+// One model per entry of scene.sequence, in order.
+std::vector<std::shared_ptr<const TrialModel>> BuildSequenceModels(const scene::Scene& scene);
+
+}  // namespace vahf::sim
