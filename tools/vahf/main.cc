@@ -23,13 +23,30 @@
 
 namespace {
 
+// Builds the scene's trial models, as a run would before its first trial
+// (what only building can reject is rejected now), and says what each holds.
+void CheckModels(const vahf::scene::Scene& scene) {
+  for (const auto& m : vahf::sim::BuildSequenceModels(scene)) {
+    std::printf("  trial model '%s': ", m->part->name.c_str());
+    if (!m->contact.model)
+      std::printf("nothing to touch");
+    else
+      std::printf("contact %s, %lld shell points", scene.params.contact.model.c_str(),
+                  static_cast<long long>(m->contact.shell_points));
+    if (m->clearance > 0)
+      std::printf(", radial clearance %.3g um, penetration bound %.3g um",
+                  m->clearance * 1e6, m->penetration_bound * 1e6);
+    std::printf("%s\n", m->visibility ? ", V by ray casting" : "");
+  }
+}
+
 int Check(const std::string& path) {
   const nlohmann::json document = vahf::scene::ReadJsonFile(path);  // read once
   const std::string format = vahf::scene::FormatOf(document, path);
   if (format == "scene") {
-    std::fputs(
-        vahf::scene::DescribeScene(vahf::scene::ParseScene(document, path)).c_str(),
-        stdout);
+    const vahf::scene::Scene scene = vahf::scene::ParseScene(document, path);
+    std::fputs(vahf::scene::DescribeScene(scene).c_str(), stdout);
+    CheckModels(scene);
   } else {
     const vahf::scene::ExperimentFile e = vahf::scene::ParseExperiment(document, path);
     std::printf("experiment '%s' (%s): kind %s, seed %llu%s\n", e.name.c_str(),
@@ -46,6 +63,7 @@ int Check(const std::string& path) {
                     x.scene_path.c_str());
     } else {
       std::fputs(vahf::scene::DescribeScene(e.scene).c_str(), stdout);
+      CheckModels(e.scene);
     }
   }
   std::printf("%s: valid %s\n", path.c_str(), format.c_str());

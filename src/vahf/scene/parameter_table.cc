@@ -85,7 +85,7 @@ std::vector<ParamSpec> MakeTable() {
       {"simulation", "jam_time", "s", R::kPositive, "in contact this long without progress: jammed", VAHF_REAL(simulation.jam_time)},
       {"simulation", "jam_progress", "m", R::kPositive, "approach to the target that counts as progress", VAHF_REAL(simulation.jam_progress)},
       {"simulation", "divergence_speed", "m/s", R::kPositive, "a part point faster than this: the integration diverged (numerical_failure)", VAHF_REAL(simulation.divergence_speed)},
-      {"simulation", "integrator", "-", R::kChoice, "Simbody integrator", nullptr, nullptr, VAHF_TEXT(simulation.integrator), IntegratorNames()},
+      {"simulation", "integrator", "-", R::kChoice, "Simbody integrator, or CVODE (SUNDIALS BDF, without Simbody)", nullptr, nullptr, VAHF_TEXT(simulation.integrator), IntegratorNames()},
       {"simulation", "accuracy", "1", R::kPositive, "integrator relative accuracy", VAHF_REAL(simulation.accuracy)},
       {"simulation", "fixed_step", "s", R::kPositive, "step of the FixedStep integrator", VAHF_REAL(simulation.fixed_step)},
       {"simulation", "step_floor", "s", R::kPositive, "an accepted step shorter than this is a warning", VAHF_REAL(simulation.step_floor)},
@@ -102,7 +102,7 @@ std::vector<ParamSpec> MakeTable() {
 const std::vector<std::string>& IntegratorNames() {
   static const std::vector<std::string> names = {
       "RungeKuttaMerson", "RungeKutta3", "RungeKuttaFeldberg", "CPodes",
-      "Verlet",           "SemiExplicitEuler2", "FixedStep"};
+      "Verlet",           "SemiExplicitEuler2", "FixedStep",          "CVODE"};
   return names;
 }
 

@@ -1,5 +1,7 @@
 #include "vahf/sim/stepping.h"
 
+#include "vahf/sim/step_checks.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -8,74 +10,22 @@
 namespace vahf::sim::internal {
 namespace {
 
-// The checks made at every accepted step (docs/design.md decision 12): the
-// state is finite, the contact depth is within the bound, the step is above
-// the floor, and the integrator's retries since the last step are counted.
-// Returns false when the state is unusable (the trial ends).
-class StepWatch {
- public:
-  explicit StepWatch(SimbodyTrial& t) : t_(t), c_(t.context()) {}
-
-  // `s` is realized through Acceleration.
-  bool Accepted(const SimTK::Integrator& integ, const SimTK::State& s) {
-    const double t = s.getTime();
-    const contact::RigidMotion m = t_.MotionOf(s);
-    if (std::optional<Ending> bad = CheckState(
-            m, c_.model.part->mass_properties.bounding_radius, c_.params().simulation,
-            "a step after decision", c_.last_decision, t)) {
-      if (!IsFinite(m)) c_.warnings.Note(WarningKind::kNonFiniteState, t, bad->detail);
-      c_.End(std::move(*bad));
-      return false;
-    }
-    Depth(t_.LoadsOf(s).contact.max_depth, t);
-    const double h = integ.getPreviousStepSizeTaken();
-    const double floor = c_.params().simulation.step_floor;
-    // The first steps after a start or an event are the integrator probing
-    // its step size (CPodes begins near 1e-11 s), not a sign of trouble.
-    if (++steps_since_restart_ > kProbingSteps && h > 0 && h < floor)
-      c_.warnings.Count(WarningKind::kStepSizeFloor, t, [&] {
-        return fmt::format("step {:.3g} s < floor {:.3g} s", h, floor);
-      });
-    const std::int64_t retries = static_cast<std::int64_t>(integ.getNumConvergenceTestFailures()) +
-                                 integ.getNumRealizationFailures() +
-                                 integ.getNumProjectionFailures();
-    if (retries > retries_)
-      c_.warnings.Count(
-          WarningKind::kIntegratorRetry, t,
-          [&] {
-            return fmt::format("{} convergence, {} realization, {} projection failures",
+// The checks of step_checks.h at an accepted Simbody step, `s` realized
+// through Acceleration (so the force element's loads are in its cache).
+bool Accepted(SimbodyTrial& t, StepChecks& checks, const SimTK::Integrator& integ,
+              const SimTK::State& s) {
+  const std::int64_t retries = static_cast<std::int64_t>(integ.getNumConvergenceTestFailures()) +
+                               integ.getNumRealizationFailures() +
+                               integ.getNumProjectionFailures();
+  return checks.Accepted(s.getTime(), t.MotionOf(s), t.LoadsOf(s).contact.max_depth,
+                         integ.getPreviousStepSizeTaken(), retries, [&] {
+                           return fmt::format(
+                               "{} convergence, {} realization, {} projection failures",
                                integ.getNumConvergenceTestFailures(),
                                integ.getNumRealizationFailures(),
                                integ.getNumProjectionFailures());
-          },
-          retries - retries_);
-    retries_ = retries;
-    return true;
-  }
-
-  // The integrator restarted (initialization or an event handled).
-  void Restarted() { steps_since_restart_ = 0; }
-
- private:
-  // The deepest contact so far, and a warning past the bound.
-  void Depth(double depth, double t) {
-    c_.max_penetration = std::max(c_.max_penetration, depth);
-    const TrialModel& model = c_.model;
-    if (model.penetration_bound > 0 && depth > model.penetration_bound)
-      c_.warnings.Count(WarningKind::kPenetrationBound, t, [&] {
-        return fmt::format("depth {:.3g} um > bound {:.3g} um ({} of the {:.3g} um radial "
-                           "clearance)",
-                           depth * 1e6, model.penetration_bound * 1e6,
-                           c_.params().contact.penetration_fraction, model.clearance * 1e6);
-      });
-  }
-
-  SimbodyTrial& t_;
-  TrialContext& c_;
-  std::int64_t retries_ = 0;
-  static constexpr int kProbingSteps = 3;
-  int steps_since_restart_ = 0;
-};
+                         });
+}
 
 // A dense trace row at a sample state.
 TraceRow SampleRow(SimbodyTrial& t, const SimTK::State& s) {
@@ -144,7 +94,7 @@ class Sampler {
 }  // namespace
 
 // Steps from the initial state to completion, an ending or the time limit,
-// returning at every accepted step (StepWatch, Sampler). Returns the time
+// returning at every accepted step (StepChecks, Sampler). Returns the time
 // reached.
 //
 // The loop is SimTK::TimeStepper::stepTo's (Simbody 3.7, TimeStepper.cpp),
@@ -161,7 +111,7 @@ double Integrate(SimbodyTrial& t, SimTK::Integrator& integ, double sample_interv
   SimTK::HandleEventsOptions handle_options(integ.getConstraintToleranceInUse());
   if (integ.isInfinityNormInUse())
     handle_options.setOption(SimTK::HandleEventsOptions::UseInfinityNorm);
-  StepWatch watch(t);
+  StepChecks checks(c);
   Sampler sampler(t, sample_interval);
   sampler.Advanced(integ.getState(), limit);
   SimTK::Array_<SimTK::EventId> scheduled;
@@ -184,7 +134,7 @@ double Integrate(SimbodyTrial& t, SimTK::Integrator& integ, double sample_interv
         integ.stepTo(limit, std::min(next_event, limit));
     if (integ.getTime() > now) {  // the trajectory advanced to integ.getState()
       system.realize(integ.getState(), SimTK::Stage::Acceleration);
-      if (!watch.Accepted(integ, integ.getState())) break;
+      if (!Accepted(t, checks, integ, integ.getState())) break;
       sampler.Advanced(integ.getState(), limit);
     }
     switch (status) {
@@ -201,7 +151,7 @@ double Integrate(SimbodyTrial& t, SimTK::Integrator& integ, double sample_interv
       default:  // TimeHasAdvanced, ReachedReportTime, StartOfContinuousInterval,
         continue;  // ReachedStepLimit: step on
     }
-    watch.Restarted();
+    checks.Restarted();
     // An event may have changed what the forces depend on (a decision):
     // interpolate the next step from the state after it.
     system.realize(integ.getState(), SimTK::Stage::Acceleration);

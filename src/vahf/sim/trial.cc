@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "vahf/core/warnings.h"
+#include "vahf/sim/cvode_stepper.h"
 #include "vahf/sim/integrators.h"
 #include "vahf/sim/internal/trial_context.h"
 #include "vahf/sim/simbody_trial.h"
@@ -20,9 +21,14 @@ using namespace internal;  // the trial context, its Simbody model, the stepping
 // Steps the trial through Simbody from its first decision to its end: the
 // time reached and the row at the end, the trial ending in numerical failure
 // if the integrator stops early or throws.
-double IntegrateTrial(SimbodyTrial& t, double sample_interval,
-                      std::optional<TraceRow>* final_row, TrialCounters* counters) {
-  TrialContext& c = t.context();
+double IntegrateWithSimbody(TrialContext& c, double sample_interval,
+                            std::optional<TraceRow>* final_row, TrialCounters* counters) {
+  SimbodyTrial t(c);  // makes the decision at t = 0
+  if (c.ended) {      // ended at the first decision
+    SimTK::State initial = t.initial_state();
+    *final_row = t.FinalRow(initial);
+    return 0.0;
+  }
   const auto& sim = c.params().simulation;
   const auto integ = MakeIntegrator(sim.integrator, t.system(), sim.accuracy, sim.fixed_step);
   double end_time = 0;
@@ -57,6 +63,17 @@ double IntegrateTrial(SimbodyTrial& t, double sample_interval,
   return end_time;
 }
 
+// A stepper: makes the decision at t = 0, then steps the trial to its end
+// (the contract of IntegrateWithCvode).
+using Stepper = double (*)(TrialContext& c, double sample_interval,
+                           std::optional<TraceRow>* final_row, TrialCounters* counters);
+
+// The stepper of an integrator name (scene::IntegratorNames): CVODE's own,
+// or Simbody's for its integrators.
+Stepper StepperFor(const std::string& integrator) {
+  return integrator == "CVODE" ? IntegrateWithCvode : IntegrateWithSimbody;
+}
+
 }  // namespace
 
 TrialResult RunTrial(const TrialModel& model, rng::StreamKey key, const TrialOptions& options) {
@@ -64,19 +81,12 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key, const TrialOpt
   TrialContext c(model, key);
   c.work = options.initial_work;
   c.record_trace = options.record_trace;
-  SimbodyTrial t(c);  // makes the decision at t = 0
-
   const auto start = std::chrono::steady_clock::now();
   TrialResult result;
   TrialCounters counters;
-  double end_time = 0;
   std::optional<TraceRow> final_row;
-  if (c.ended) {  // ended at the first decision
-    SimTK::State initial = t.initial_state();
-    final_row = t.FinalRow(initial);
-  } else {
-    end_time = IntegrateTrial(t, options.sample_interval, &final_row, &counters);
-  }
+  const double end_time = StepperFor(params.simulation.integrator)(
+      c, options.sample_interval, &final_row, &counters);
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.status = c.ended.value_or(Status::kTimeout);

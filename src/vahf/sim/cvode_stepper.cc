@@ -1,0 +1,217 @@
+#include "vahf/sim/cvode_stepper.h"
+
+#include <cvode/cvode.h>
+#include <fmt/format.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "vahf/sim/decisions.h"
+#include "vahf/sim/rigid_body.h"
+#include "vahf/core/error.h"
+#include "vahf/sim/step_checks.h"
+
+namespace vahf::sim::internal {
+namespace {
+
+// What CVODE's callbacks see.
+struct Problem {
+  TrialContext* c = nullptr;
+  Decision held;
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  std::string last_error;  // CVODE's last message, for the failure's detail
+};
+
+Eigen::Map<BodyState> Of(N_Vector v) { return Eigen::Map<BodyState>(N_VGetArrayPointer(v)); }
+
+int Rhs(realtype, N_Vector y, N_Vector ydot, void* data) {
+  Problem& p = *static_cast<Problem*>(data);
+  const BodyState state = Of(y);
+  const contact::RigidMotion m = MotionOf(state);
+  if (!IsFinite(m)) return 1;  // recoverable: CVODE retries with a smaller step
+  const Loads loads = p.c->model.LoadsAt(m, p.held, &p.c->contact_counters);
+  Of(ydot) = Derivative(p.c->model, state, loads, p.gravity);
+  return 0;
+}
+
+// The completion witness (as simbody_trial.cc's trigger): falls through zero
+// when the part is within both thresholds.
+int Root(realtype, N_Vector y, realtype* g, void* data) {
+  const Problem& p = *static_cast<const Problem*>(data);
+  const contact::RigidMotion m = MotionOf(Of(y));
+  const auto& sim = p.c->params().simulation;
+  g[0] = std::max(p.c->model.DistanceToTarget(m) / sim.completion_distance,
+                  p.c->model.AngleToTargetDeg(m) / sim.completion_angle_deg) -
+         1.0;
+  return 0;
+}
+
+void OnError(int, const char* module, const char* function, char* message, void* data) {
+  static_cast<Problem*>(data)->last_error = fmt::format("{} {}: {}", module, function, message);
+}
+
+// SUNDIALS objects, freed in reverse order of creation.
+struct Cvode {
+  SUNContext context = nullptr;
+  N_Vector y = nullptr, tolerances = nullptr, dky = nullptr;
+  SUNMatrix matrix = nullptr;
+  SUNLinearSolver solver = nullptr;
+  void* mem = nullptr;
+  ~Cvode() {
+    if (mem) CVodeFree(&mem);
+    if (solver) SUNLinSolFree(solver);
+    if (matrix) SUNMatDestroy(matrix);
+    for (N_Vector v : {dky, tolerances, y})
+      if (v) N_VDestroy(v);
+    if (context) SUNContext_Free(&context);
+  }
+};
+
+}  // namespace
+
+double IntegrateWithCvode(TrialContext& c, double sample_interval,
+                          std::optional<TraceRow>* final_row, TrialCounters* counters) {
+  const auto& sim = c.params().simulation;
+  const TrialModel& model = c.model;
+  contact::RigidMotion start;
+  start.pose = model.part->initial.Transform();
+  const std::optional<Decision> first = Decide(c, 0.0, start);
+  if (c.ended || !first) {  // ended at the first decision
+    *final_row = FinalRow(c, 0.0, start);
+    return 0.0;
+  }
+  Problem p;
+  p.c = &c;
+  p.held = *first;
+  p.gravity = model.scene->gravity;
+  {
+    Cvode cv;
+    const auto ok = [&](int flag, const char* what) {
+      VAHF_CHECK(flag >= 0, std::string("CVODE set-up failed: ") + what);
+    };
+    ok(SUNContext_Create(nullptr, &cv.context), "context");
+    cv.y = N_VNew_Serial(kBodyStateSize, cv.context);
+    cv.tolerances = N_VNew_Serial(kBodyStateSize, cv.context);
+    cv.dky = N_VNew_Serial(kBodyStateSize, cv.context);
+    Of(cv.y) = StateOf(start);
+    Of(cv.tolerances).setConstant(sim.accuracy);
+    cv.mem = CVodeCreate(CV_BDF, cv.context);
+    VAHF_CHECK(cv.mem != nullptr, "CVodeCreate failed");
+    ok(CVodeInit(cv.mem, Rhs, 0.0, cv.y), "init");
+    ok(CVodeSetUserData(cv.mem, &p), "user data");
+    ok(CVodeSetErrHandlerFn(cv.mem, OnError, &p), "error handler");
+    ok(CVodeSVtolerances(cv.mem, sim.accuracy, cv.tolerances), "tolerances");
+    cv.matrix = SUNDenseMatrix(kBodyStateSize, kBodyStateSize, cv.context);
+    cv.solver = SUNLinSol_Dense(cv.y, cv.matrix, cv.context);
+    ok(CVodeSetLinearSolver(cv.mem, cv.solver, cv.matrix), "linear solver");
+    ok(CVodeRootInit(cv.mem, 1, Root), "root");
+    int falling = -1;
+    ok(CVodeSetRootDirection(cv.mem, &falling), "root direction");
+    ok(CVodeSetMaxNumSteps(cv.mem, 1000000), "step limit");
+    c.integrated = true;
+
+    // CVODE's counters restart with it: the totals of the runs before.
+    TrialCounters done;
+    long run_conv_fails = 0;
+    const auto harvest = [&] {
+      long steps = 0, error_fails = 0, conv_fails = 0, rhs = 0, jac_rhs = 0;
+      CVodeGetNumSteps(cv.mem, &steps);
+      CVodeGetNumErrTestFails(cv.mem, &error_fails);
+      CVodeGetNumNonlinSolvConvFails(cv.mem, &conv_fails);
+      CVodeGetNumRhsEvals(cv.mem, &rhs);
+      CVodeGetNumLinRhsEvals(cv.mem, &jac_rhs);
+      done.steps_taken += steps;
+      done.steps_attempted += steps + error_fails + conv_fails;
+      done.error_test_failures += error_fails;
+      done.realizations += rhs + jac_rhs;
+      run_conv_fails += conv_fails;
+    };
+    StepChecks checks(c);
+    const double limit = sim.time_limit, interval = sim.decision_interval;
+    std::int64_t next_sample = 1;
+    double t = 0;
+    for (std::int64_t i = 1; !c.ended && t < limit; ++i) {
+      const double stop = std::min(static_cast<double>(i) * interval, limit);
+      ok(CVodeSetStopTime(cv.mem, stop), "stop time");
+      checks.Restarted();
+      int flag = CV_SUCCESS;
+      while (!c.ended) {
+        flag = CVode(cv.mem, stop, cv.y, &t, CV_ONE_STEP);
+        if (flag < 0) {
+          c.ended = Status::kNumericalFailure;
+          c.detail = fmt::format("CVODE stopped at t = {} s (flag {}): {}", t, flag,
+                                 p.last_error);
+          c.warnings.Note(WarningKind::kIntegratorFailure, t, c.detail);
+          break;
+        }
+        // The accepted step: its checks, then the samples it covers.
+        const BodyState y = Of(cv.y);
+        const contact::RigidMotion m = MotionOf(y);
+        const Loads loads = IsFinite(m) ? model.LoadsAt(m, p.held, &c.contact_counters)
+                                        : Loads{};
+        long conv_fails = 0;
+        CVodeGetNumNonlinSolvConvFails(cv.mem, &conv_fails);
+        const long retries = run_conv_fails + conv_fails;
+        double h = 0;
+        CVodeGetLastStep(cv.mem, &h);
+        if (!checks.Accepted(t, m, loads.contact.max_depth, h, retries, [&] {
+              return fmt::format("{} nonlinear convergence failures", retries);
+            }))
+          break;
+        for (; sample_interval > 0; ++next_sample) {  // sample times in (before, t]
+          const double ts = static_cast<double>(next_sample) * sample_interval;
+          if (ts > t || ts >= limit) break;
+          CVodeGetDky(cv.mem, ts, 0, cv.dky);
+          BodyState ys = Of(cv.dky);
+          NormaliseQuaternion(&ys);
+          const contact::RigidMotion ms = MotionOf(ys);
+          const Loads ls = model.LoadsAt(ms, p.held, &c.contact_counters);
+          TraceRow row = TrialContext::PoseRow(ts, ms);
+          row.assembly_force = ls.assembly_force;
+          row.contact_force = ls.contact.normal_force;
+          row.friction_force = ls.contact.friction_force;
+          row.penetration = ls.contact.max_depth;
+          row.work = c.work;
+          row.psi = p.held.psi;
+          c.samples.push_back(row);
+        }
+        if (flag == CV_ROOT_RETURN) {
+          c.ended = Status::kCompleted;
+          c.completion_time = t;
+          c.completion_row = FinalRow(c, t, m);  // Table 1's instant d, at this state
+          c.detail = fmt::format("within {} m and {} deg of the target",
+                                 sim.completion_distance, sim.completion_angle_deg);
+        }
+        if (flag == CV_TSTOP_RETURN || t >= stop) break;
+      }
+      if (c.ended || t >= limit) break;
+      // The decision at t_i: what the operator holds from now on; the
+      // right-hand side changed, so CVODE restarts from this state.
+      BodyState y = Of(cv.y);
+      NormaliseQuaternion(&y);
+      Of(cv.y) = y;
+      if (const std::optional<Decision> d = Decide(c, t, MotionOf(y))) p.held = *d;
+      if (c.ended) break;
+      harvest();
+      ok(CVodeReInit(cv.mem, t, cv.y), "restart");
+    }
+    harvest();
+    counters->steps_taken = done.steps_taken;
+    counters->steps_attempted = done.steps_attempted;
+    counters->error_test_failures = done.error_test_failures;
+    counters->realizations = done.realizations;
+    if (c.completion_row)
+      *final_row = c.completion_row;
+    else
+      *final_row = FinalRow(c, t, MotionOf(Of(cv.y)));
+    return t;
+  }
+}
+
+}  // namespace vahf::sim::internal

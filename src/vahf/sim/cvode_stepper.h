@@ -1,0 +1,30 @@
+// A stiff stepper for the free part without Simbody (docs/design.md decisions
+// 11 and 13): SUNDIALS CVODE (variable-order BDF, Newton iteration, dense
+// direct linear solver; A. C. Hindmarsh et al., ACM TOMS 31(3) 363, 2005) on
+// the body's equations of motion (rigid_body.h) under the trial model's loads.
+// Integrator name "CVODE". The decisions restart it at every t_i, completion
+// is CVODE's root finding on the completion witness, every accepted step is
+// checked (step_checks.h), and dense samples come from CVODE's own
+// interpolant, so sampling never changes the trajectory.
+//
+// Tolerances: relative `accuracy`, absolute `accuracy` in SI units (m, 1,
+// m/s, rad/s): Simbody's default unit weights, so that one accuracy means
+// about the same error for every integrator. The Jacobian is CVODE's
+// difference quotient (13 evaluations each).
+#pragma once
+
+#include <optional>
+
+#include "vahf/sim/internal/trial_context.h"
+#include "vahf/sim/trial_result.h"
+
+namespace vahf::sim::internal {
+
+// Makes the decision at t = 0 and steps c's trial to completion, an ending or
+// the time limit. Returns the time reached; sets *final_row and the
+// integrator's counters. Numerical trouble ends the trial as a numerical
+// failure with a detail, never an exception.
+double IntegrateWithCvode(TrialContext& c, double sample_interval,
+                          std::optional<TraceRow>* final_row, TrialCounters* counters);
+
+}  // namespace vahf::sim::internal
