@@ -1,0 +1,97 @@
+// CPU per trial over many seeds (issue 11's measure): the peg and each of the
+// hydraulic cylinder's three parts, per integrator at accuracy 1e-4, trials
+// keyed {1, k} for k < VAHF_BENCH_SEEDS (default 200), one core, the part's
+// trial model built once. Counters: thread CPU seconds per trial at p50, p99
+// and max; the real-time factor (simulated over CPU seconds) at p50 and its
+// worst; mean contact evaluations, integrator steps and rejected steps
+// (attempted - taken) per trial; completed share. One benchmark iteration
+// runs every seed. Run with tools/bench --benchmark_filter=Seeds.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include "vahf/scene/scene_loader.h"
+#include "vahf/sim/trial.h"
+#include "vahf/sim/trial_model.h"
+
+namespace {
+
+double ThreadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+int SeedCount() {
+  const char* env = std::getenv("VAHF_BENCH_SEEDS");
+  const int n = env ? std::atoi(env) : 200;
+  return n > 0 ? n : 200;
+}
+
+// The q quantile of sorted values, nearest rank.
+double Quantile(const std::vector<double>& sorted, double q) {
+  const std::size_t k = static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1) + 0.5);
+  return sorted[std::min(k, sorted.size() - 1)];
+}
+
+void Seeds(benchmark::State& state, const std::string& scene_file, int position,
+           const std::string& integrator) {
+  vahf::scene::Scene scene =
+      vahf::scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + scene_file);
+  scene.params.simulation.integrator = integrator;
+  scene.params.simulation.accuracy = 1e-4;
+  const auto model = vahf::sim::BuildTrialModel(scene, position);
+  const int n = SeedCount();
+  std::vector<double> cpu, rtf;
+  double evaluations = 0, steps = 0, rejected = 0, completed = 0;
+  for (auto _ : state) {
+    cpu.clear();
+    rtf.clear();
+    for (int k = 0; k < n; ++k) {
+      const double start = ThreadCpuSeconds();
+      const vahf::sim::TrialResult r =
+          vahf::sim::RunTrial(*model, {1, static_cast<std::uint64_t>(k)}, {0, 0.0, false});
+      const double seconds = ThreadCpuSeconds() - start;
+      cpu.push_back(seconds);
+      rtf.push_back(r.end_time / seconds);
+      evaluations += static_cast<double>(r.counters.contact_evaluations);
+      steps += static_cast<double>(r.counters.steps_taken);
+      rejected += static_cast<double>(r.counters.steps_attempted - r.counters.steps_taken);
+      completed += r.status == vahf::sim::Status::kCompleted ? 1 : 0;
+    }
+  }
+  std::sort(cpu.begin(), cpu.end());
+  std::sort(rtf.begin(), rtf.end());
+  const double trials = static_cast<double>(n) * static_cast<double>(state.iterations());
+  state.counters["cpu_p50_s"] = Quantile(cpu, 0.5);
+  state.counters["cpu_p99_s"] = Quantile(cpu, 0.99);
+  state.counters["cpu_max_s"] = cpu.back();
+  state.counters["rtf_p50"] = Quantile(rtf, 0.5);
+  state.counters["rtf_min"] = rtf.front();
+  state.counters["evals"] = evaluations / trials;
+  state.counters["steps"] = steps / trials;
+  state.counters["rejected"] = rejected / trials;
+  state.counters["completed"] = completed / trials;
+}
+
+#define VAHF_SEEDS(name, file, position)                                                     \
+  BENCHMARK_CAPTURE(Seeds, name##_RungeKuttaMerson, std::string(file), position,             \
+                    std::string("RungeKuttaMerson"))                                           \
+      ->Iterations(1)                                                                          \
+      ->Unit(benchmark::kSecond);                                                              \
+  BENCHMARK_CAPTURE(Seeds, name##_CVODE, std::string(file), position, std::string("CVODE")) \
+      ->Iterations(1)                                                                          \
+      ->Unit(benchmark::kSecond);
+
+VAHF_SEEDS(peg, "peg_in_hole.json", 0)
+VAHF_SEEDS(piston_rod, "hydraulic_cylinder.json", 0)
+VAHF_SEEDS(guide_sleeve, "hydraulic_cylinder.json", 1)
+VAHF_SEEDS(seal_ring, "hydraulic_cylinder.json", 2)
+
+}  // namespace
+
+BENCHMARK_MAIN();
