@@ -5,7 +5,9 @@
 // the meridian rectangle [-R, R] x [0, H] (I. Quilez, "2D distance functions",
 // https://iquilezles.org/articles/distfunctions2d/, box), Penetration() (the
 // contact query) against the sign of At(), and the nearest-point property: p - d n lies
-// on the surface.
+// on the surface. And, bit for bit, against the queries as first written, on
+// the parts of the hydraulic-cylinder and peg-in-hole scenes and on the shapes
+// above.
 #include "vahf/contact/signed_distance.h"
 
 #include <gtest/gtest.h>
@@ -13,12 +15,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <iterator>
+#include <limits>
 #include <optional>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "vahf/geometry/shape.h"
 #include "vahf/rng/stream.h"
+#include "vahf/scene/scene_loader.h"
 
 namespace vahf::contact {
 namespace {
@@ -337,6 +345,252 @@ TEST(SignedDistanceBounds, AreTheSolidsBoundingBox) {
   EXPECT_FALSE(f.Penetration({0, 0, -1e-9}).has_value());
   EXPECT_FALSE(f.Penetration({0, 0, kH + 1e-9}).has_value());
   EXPECT_FALSE(f.Penetration({kR + 1e-9, 0, kH / 2}).has_value());
+}
+
+// ---------------------------------------------------------------- the first implementation
+
+// The queries as first written, with scalars in the same operations and the
+// same order: a crossing number over every surface edge and the nearest of all
+// surface edges by clamped projection. Every contact force is summed from these
+// values, so a faster SignedDistance must return the same bits, or an
+// experiment's results digest changes.
+class FirstImplementation {
+ public:
+  // The bounds are the tested field's (SignedDistanceBounds checks them).
+  FirstImplementation(const Shape& shape, const SignedDistance& field)
+      : lower_(field.lower()), upper_(field.upper()) {
+    if (const auto* box = std::get_if<Box>(&shape)) {
+      box_ = true;
+      for (int k = 0; k < 3; ++k) half_[k] = 0.5 * box->size[k];
+      return;
+    }
+    const auto& v = std::get<geometry::RevolvedProfile>(shape).vertices;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const ProfilePoint a = v[k], b = v[(k + 1) % v.size()];
+      if (a.r == 0.0 && b.r == 0.0) continue;
+      const double dr = b.r - a.r, dz = b.z - a.z;
+      const double length = std::sqrt(dr * dr + dz * dz);
+      edges_.push_back({a, b, dz / length, -(dr / length)});
+    }
+  }
+
+  Distance At(const Eigen::Vector3d& p) const {
+    if (box_) return OfBox(p);
+    const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+    return OfRevolution(p, r, Inside(r, p.z()));
+  }
+
+  std::optional<Distance> Penetration(const Eigen::Vector3d& p) const {
+    for (int k = 0; k < 3; ++k)
+      if (!(p[k] > lower_[k] && p[k] < upper_[k])) return std::nullopt;
+    if (box_) return OfBox(p);
+    const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+    if (!Inside(r, p.z())) return std::nullopt;
+    return OfRevolution(p, r, true);
+  }
+
+ private:
+  struct Edge {
+    ProfilePoint a, b;
+    double out_r, out_z;
+  };
+
+  bool Inside(double r, double z) const {
+    bool inside = false;
+    for (const Edge& e : edges_) {
+      if ((e.a.z > z) == (e.b.z > z)) continue;
+      const double r_cross = e.a.r + (z - e.a.z) / (e.b.z - e.a.z) * (e.b.r - e.a.r);
+      if (r < r_cross) inside = !inside;
+    }
+    return inside;
+  }
+
+  Distance OfRevolution(const Eigen::Vector3d& p, double r, bool inside) const {
+    double best = std::numeric_limits<double>::infinity();
+    double near_r = r, near_z = p.z(), n_r = 1, n_z = 0;
+    for (const Edge& e : edges_) {
+      const double ab_r = e.b.r - e.a.r, ab_z = e.b.z - e.a.z;
+      const double t = std::clamp(
+          ((r - e.a.r) * ab_r + (p.z() - e.a.z) * ab_z) / (ab_r * ab_r + ab_z * ab_z), 0.0,
+          1.0);
+      const double c_r = e.a.r + t * ab_r, c_z = e.a.z + t * ab_z;
+      const double d2 = (r - c_r) * (r - c_r) + (p.z() - c_z) * (p.z() - c_z);
+      if (d2 < best) best = d2, near_r = c_r, near_z = c_z, n_r = e.out_r, n_z = e.out_z;
+    }
+    const double d = std::sqrt(best);
+    if (d > 1e-12) {
+      n_r = (inside ? near_r - r : r - near_r) / d;
+      n_z = (inside ? near_z - p.z() : p.z() - near_z) / d;
+    }
+    const double cos_phi = r > 0 ? p.x() / r : 1.0, sin_phi = r > 0 ? p.y() / r : 0.0;
+    return {inside ? -d : d, Eigen::Vector3d(n_r * cos_phi, n_r * sin_phi, n_z)};
+  }
+
+  Distance OfBox(const Eigen::Vector3d& p) const {
+    double q[3];
+    for (int k = 0; k < 3; ++k) q[k] = std::abs(p[k]) - half_[k];
+    if (q[0] > 0 || q[1] > 0 || q[2] > 0) {
+      Eigen::Vector3d n;
+      for (int k = 0; k < 3; ++k) {
+        const double sign = p[k] > 0 ? 1.0 : p[k] < 0 ? -1.0 : 0.0;
+        n[k] = std::max(q[k], 0.0) * sign;
+      }
+      const double d = std::sqrt(n.x() * n.x() + n.y() * n.y() + n.z() * n.z());
+      return {d, Eigen::Vector3d(n.x() / d, n.y() / d, n.z() / d)};
+    }
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (q[k] > q[axis]) axis = k;
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    n[axis] = p[axis] >= 0 ? 1.0 : -1.0;
+    return {q[axis], n};
+  }
+
+  bool box_ = false;
+  double half_[3] = {0, 0, 0};
+  Eigen::Vector3d lower_, upper_;
+  std::vector<Edge> edges_;
+};
+
+bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Empty when the two answers are the same bits, else what differs.
+std::string Differs(const Distance& got, const Distance& want) {
+  if (SameBits(got.distance, want.distance) && SameBits(got.normal.x(), want.normal.x()) &&
+      SameBits(got.normal.y(), want.normal.y()) && SameBits(got.normal.z(), want.normal.z()))
+    return "";
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "distance %.17g, expected %.17g; normal ", got.distance,
+                want.distance);
+  return buf + Str(got.normal) + ", expected " + Str(want.normal);
+}
+
+// Points around and inside a profile: uniform in its bounds grown by 20% (an
+// eighth of them on the axis); at every vertex height exactly, off and on the
+// axis; at every vertex and within a few units in the last place of it; and
+// across every edge, from 100 micrometres deep to 100 micrometres out and
+// within a few units in the last place of it.
+std::vector<Eigen::Vector3d> ProbePoints(const Shape& shape, std::uint64_t trial) {
+  rng::Stream s({20240611, trial}, 0, rng::Purpose::kTest);
+  const SignedDistance f(shape);
+  const Eigen::Vector3d mid = 0.5 * (f.lower() + f.upper());
+  const Eigen::Vector3d span = 1.4 * (f.upper() - f.lower());
+  const auto azimuth = [&s] { return (s.Uniform() - 0.5) * 7.0; };
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 20000; ++i) {
+    Eigen::Vector3d p;
+    for (int k = 0; k < 3; ++k) p[k] = mid[k] + (s.Uniform() - 0.5) * span[k];
+    if (i % 8 == 0) p.x() = p.y() = 0;
+    points.push_back(p);
+  }
+  const auto* profile = std::get_if<geometry::RevolvedProfile>(&shape);
+  if (!profile) {  // a box: its faces, edges and corners and just off them
+    for (int i = 0; i < 20000; ++i) {
+      Eigen::Vector3d p;
+      for (int k = 0; k < 3; ++k) {
+        const double u = s.Uniform();
+        p[k] = u < 0.3   ? f.lower()[k]
+               : u < 0.6 ? f.upper()[k]
+                         : mid[k] + (s.Uniform() - 0.5) * span[k];
+        if (s.Uniform() < 0.2) p[k] = std::nextafter(p[k], s.Uniform() < 0.5 ? -1.0 : 1.0);
+      }
+      points.push_back(p);
+    }
+    return points;
+  }
+  const std::vector<ProfilePoint>& v = profile->vertices;
+  const double tiny[] = {0.0, 1e-300, 1e-17, 1e-15, 1e-13, 1e-12, 1e-11};
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const ProfilePoint a = v[k], b = v[(k + 1) % v.size()];
+    for (int i = 0; i < 200; ++i) {
+      points.push_back(Polar(s.Uniform() * 1.2 * f.upper().x(), azimuth(), a.z));
+      points.push_back(Polar(a.r, i == 0 ? 0.0 : azimuth(), a.z));
+      double r = a.r, z = a.z;
+      for (int ulps = i % 4; ulps > 0; --ulps) {
+        r = std::nextafter(r, s.Uniform() < 0.5 ? -1.0 : 1.0);
+        z = std::nextafter(z, s.Uniform() < 0.5 ? -1.0 : 1.0);
+      }
+      points.push_back(Polar(std::abs(r), azimuth(), z));
+    }
+    points.push_back({0, 0, a.z});
+    points.push_back({0, 0, std::nextafter(a.z, -1.0)});
+    points.push_back({0, 0, std::nextafter(a.z, 1.0)});
+    const double dr = b.r - a.r, dz = b.z - a.z, length = std::hypot(dr, dz);
+    for (int i = 0; i < 2000; ++i) {
+      const double t = s.Uniform(), sign = s.Uniform() < 0.5 ? -1.0 : 1.0;
+      const double depth =
+          i % 2 ? (s.Uniform() - 0.5) * 2e-4 : sign * tiny[i / 2 % std::size(tiny)];
+      // Along the outward normal (dz, -dr) / length of a counter-clockwise edge.
+      const double r = a.r + t * dr + depth * dz / length, z = a.z + t * dz - depth * dr / length;
+      points.push_back(Polar(std::abs(r), azimuth(), z));
+    }
+  }
+  return points;
+}
+
+TEST(SignedDistanceFirstImplementation, SameBitsOnTheSceneParts) {
+  const auto scene_shapes = [](const char* file) {
+    std::vector<std::pair<std::string, Shape>> shapes;
+    for (const scene::Part& part :
+         scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + file).parts)
+      shapes.emplace_back(file + (": " + part.name), part.shape);
+    return shapes;
+  };
+  std::vector<std::pair<std::string, Shape>> shapes = scene_shapes("hydraulic_cylinder.json");
+  for (auto& s : scene_shapes("peg_in_hole.json")) shapes.push_back(std::move(s));
+  for (Case& c : Shapes()) shapes.emplace_back(c.name, std::move(c.shape));
+  ASSERT_EQ(shapes.size(), 11u);
+  std::uint64_t trial = 0;
+  for (const auto& [name, shape] : shapes) {
+    const SignedDistance f(shape);
+    const FirstImplementation first(shape, f);
+    int compared = 0, inside = 0, failures = 0;
+    for (const Eigen::Vector3d& p : ProbePoints(shape, trial++)) {
+      SCOPED_TRACE(name + " at " + Str(p));
+      const std::string at = Differs(f.At(p), first.At(p));
+      const std::optional<Distance> got = f.Penetration(p), want = first.Penetration(p);
+      std::string penetration;
+      if (got.has_value() != want.has_value())
+        penetration = got ? "inside, expected outside" : "outside, expected inside";
+      else if (got)
+        penetration = Differs(*got, *want);
+      EXPECT_EQ(at, "") << "At";
+      EXPECT_EQ(penetration, "") << "Penetration";
+      ++compared;
+      inside += want.has_value();
+      if (!at.empty() || !penetration.empty()) {
+        ASSERT_LT(++failures, 10);
+      }
+    }
+    // Both answers of Penetration were exercised.
+    EXPECT_GT(inside, compared / 20) << name;
+    EXPECT_LT(inside, compared - compared / 20) << name;
+  }
+}
+
+// Near the barrel's bore wall, where the piston rod's shell points sit during
+// the insertion: radius within 50 micrometres of 31.5115 mm (the band of
+// bench/signed_distance_benchmark.cc), z along the bore and at its ends.
+TEST(SignedDistanceFirstImplementation, SameBitsAtTheBarrelsBoreWall) {
+  const Shape barrel =
+      scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/hydraulic_cylinder.json")
+          .parts.at(0)
+          .shape;
+  const SignedDistance f(barrel);
+  const FirstImplementation first(barrel, f);
+  rng::Stream s({20240611, 1000}, 0, rng::Purpose::kTest);
+  for (int i = 0; i < 50000; ++i) {
+    const double z = i % 100 == 0 ? (i % 200 ? 0.01 : 0.299) : 0.005 + s.Uniform() * 0.3;
+    const Eigen::Vector3d p =
+        Polar(0.0315115 + (s.Uniform() - 0.5) * 1e-4, (s.Uniform() - 0.5) * 7.0, z);
+    SCOPED_TRACE("at " + Str(p));
+    ASSERT_EQ(Differs(f.At(p), first.At(p)), "");
+    const std::optional<Distance> got = f.Penetration(p), want = first.Penetration(p);
+    ASSERT_EQ(got.has_value(), want.has_value());
+    if (got) {
+      ASSERT_EQ(Differs(*got, *want), "");
+    }
+  }
 }
 
 }  // namespace

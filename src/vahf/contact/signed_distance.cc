@@ -21,28 +21,53 @@ SignedDistance::SignedDistance(const geometry::Shape& shape) {
     z_min = std::min(z_min, q.z);
     z_max = std::max(z_max, q.z);
   }
+  std::vector<double> end_z;  // the surface edges' end heights, in surface_'s order
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Eigen::Vector2d a(v[k].r, v[k].z);
     const Eigen::Vector2d b(v[(k + 1) % v.size()].r, v[(k + 1) % v.size()].z);
     if (a.x() == 0.0 && b.x() == 0.0) continue;  // on the axis: interior in 3-D
-    const Eigen::Vector2d d = (b - a).normalized();
+    const Eigen::Vector2d ab = b - a;
+    const Eigen::Vector2d d = ab.normalized();
     // The polygon is counter-clockwise, so the outward normal is d turned clockwise.
-    surface_.push_back({a, b, Eigen::Vector2d(d.y(), -d.x())});
+    surface_.push_back({a, ab, ab.squaredNorm(), Eigen::Vector2d(d.y(), -d.x())});
+    end_z.push_back(b.y());
+    slab_z_.push_back(a.y());
+    slab_z_.push_back(b.y());
   }
+  std::sort(slab_z_.begin(), slab_z_.end());
+  slab_z_.erase(std::unique(slab_z_.begin(), slab_z_.end()), slab_z_.end());
+  // No edge end lies inside a slab, so an edge spans every height of a slab
+  // exactly when it spans the slab's lowest.
+  for (std::size_t k = 0; k + 1 < slab_z_.size(); ++k) {
+    slab_begin_.push_back(crossings_.size());
+    for (std::size_t j = 0; j < surface_.size(); ++j) {
+      const Edge& e = surface_[j];
+      if ((e.a.y() > slab_z_[k]) != (end_z[j] > slab_z_[k]))
+        crossings_.push_back({e.a.x(), e.a.y(), e.ab.y(), e.ab.x()});
+    }
+  }
+  slab_begin_.push_back(crossings_.size());
   lower_ = {-r_max, -r_max, z_min};
   upper_ = {r_max, r_max, z_max};
 }
 
 bool SignedDistance::InsidePolygon(double r, double z) const {
   // Crossing number along +r. Edges on the axis (r = 0) are never crossed by a
-  // ray from r >= 0, so the surface edges suffice.
+  // ray from r >= 0, so the surface edges suffice, and of those only the ones
+  // spanning z: the edges of z's slab. Below the lowest end or at or above the
+  // highest no edge spans z.
+  const auto above = std::upper_bound(slab_z_.begin(), slab_z_.end(), z);
+  if (above == slab_z_.begin() || above == slab_z_.end()) return false;
+  const std::size_t k = static_cast<std::size_t>(above - slab_z_.begin()) - 1;
   bool inside = false;
-  for (const Edge& e : surface_) {
-    if ((e.a.y() > z) != (e.b.y() > z)) {
-      const double r_cross =
-          e.a.x() + (z - e.a.y()) / (e.b.y() - e.a.y()) * (e.b.x() - e.a.x());
-      if (r < r_cross) inside = !inside;
-    }
+  for (std::size_t j = slab_begin_[k]; j < slab_begin_[k + 1]; ++j) {
+    const Crossing& c = crossings_[j];
+    // On an edge parallel to the axis (dr = 0) the quotient is finite (z lies
+    // between the edge's ends, so it is at most 1 in magnitude), times dr it is
+    // a zero, and a_r plus a zero compares as a_r: the division is skipped, the
+    // answer is the same.
+    const double r_cross = c.dr == 0 ? c.a_r : c.a_r + (z - c.a_z) / c.dz * c.dr;
+    if (r < r_cross) inside = !inside;
   }
   return inside;
 }
@@ -71,9 +96,8 @@ Distance SignedDistance::OfRevolution(const Eigen::Vector3d& p, double r,
   double best = std::numeric_limits<double>::infinity();
   Eigen::Vector2d nearest = q, edge_normal(1, 0);
   for (const Edge& e : surface_) {
-    const Eigen::Vector2d ab = e.b - e.a;
-    const double t = std::clamp((q - e.a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-    const Eigen::Vector2d c = e.a + t * ab;
+    const double t = std::clamp((q - e.a).dot(e.ab) / e.ab2, 0.0, 1.0);
+    const Eigen::Vector2d c = e.a + t * e.ab;
     const double d2 = (q - c).squaredNorm();
     if (d2 < best) best = d2, nearest = c, edge_normal = e.outward;
   }
