@@ -593,5 +593,37 @@ TEST(SignedDistanceFirstImplementation, SameBitsAtTheBarrelsBoreWall) {
   }
 }
 
+
+// FartherThan is At(p).distance > radius, to the bit, for every radius the
+// broad phase could ask: zero, the distance itself and its neighbours in the
+// last place (where the shortcut's rounding margin matters), and random ones.
+TEST(SignedDistanceFarther, SameAnswerAsTheDistance) {
+  std::vector<Shape> shapes;
+  for (const scene::Part& part :
+       scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/hydraulic_cylinder.json")
+           .parts)
+    shapes.push_back(part.shape);
+  for (Case& c : Shapes()) shapes.push_back(std::move(c.shape));
+  rng::Stream s({20240611, 2000}, 0, rng::Purpose::kTest);
+  std::uint64_t trial = 100, asked = 0, clear = 0;
+  for (const Shape& shape : shapes) {
+    const SignedDistance f(shape);
+    for (const Eigen::Vector3d& p : ProbePoints(shape, trial++)) {
+      const double d = f.At(p).distance;
+      const double inf = std::numeric_limits<double>::infinity();
+      for (const double radius :
+           {0.0, std::abs(d), std::nextafter(std::abs(d), inf), std::nextafter(std::abs(d), 0.0),
+            std::abs(d) * (1 + 1e-13), s.Uniform() * 1e-2, s.Uniform() * 1e-4}) {
+        ASSERT_EQ(f.FartherThan(p, radius), d > radius)
+            << Str(p) << " radius " << radius << " distance " << d;
+        ++asked;
+        clear += d > radius;
+      }
+    }
+  }
+  EXPECT_GT(clear, asked / 10);  // both answers exercised
+  EXPECT_LT(clear, asked - asked / 10);
+}
+
 }  // namespace
 }  // namespace vahf::contact

@@ -18,7 +18,7 @@ double PairFriction(double a, double b) { return a + b > 0 ? 2 * a * b / (a + b)
 bool SphereClear(const SignedDistance& field, const Eigen::Vector3d& c, double radius) {
   return ((c.array() + radius) <= field.lower().array()).any() ||
          ((c.array() - radius) >= field.upper().array()).any() ||
-         field.At(c).distance > radius;
+         field.FartherThan(c, radius);
 }
 
 // A point of the moving part inside an obstacle: its depth, the unit normal

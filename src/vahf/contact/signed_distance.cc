@@ -90,6 +90,28 @@ Distance SignedDistance::At(const Eigen::Vector3d& p) const {
   return OfRevolution(p, r, InsidePolygon(r, p.z()));
 }
 
+bool SignedDistance::FartherThan(const Eigen::Vector3d& p, double radius) const {
+  if (is_box_) return OfBox(p).distance > radius;
+  const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+  if (!(radius >= 0)) return At(p).distance > radius;  // not a sphere's radius
+  // Inside, At's distance is -sqrt(best) <= 0 <= radius.
+  if (InsidePolygon(r, p.z())) return false;
+  // As OfRevolution's loop. An edge with d2 clearly under radius^2 settles it:
+  // the minimum is at most d2, and sqrt is monotone. The factor keeps the
+  // shortcut on the safe side of the rounding of radius * radius.
+  const Eigen::Vector2d q(r, p.z());
+  const double settled = radius * radius * (1.0 - 1e-12);
+  double best = std::numeric_limits<double>::infinity();
+  for (const Edge& e : surface_) {
+    const double t = std::clamp((q - e.a).dot(e.ab) / e.ab2, 0.0, 1.0);
+    const Eigen::Vector2d c = e.a + t * e.ab;
+    const double d2 = (q - c).squaredNorm();
+    if (d2 < settled) return false;
+    if (d2 < best) best = d2;
+  }
+  return std::sqrt(best) > radius;
+}
+
 Distance SignedDistance::OfRevolution(const Eigen::Vector3d& p, double r,
                                       bool inside) const {
   const Eigen::Vector2d q(r, p.z());

@@ -26,6 +26,11 @@ class SignedDistance {
 
   // Distance from p, in the shape's frame.
   Distance At(const Eigen::Vector3d& p) const;
+  // At(p).distance > radius, the same answer to the bit, without the normal
+  // and, for a solid of revolution, without the remaining edges once one is
+  // within radius: the broad phase's test (a sphere of that radius about p
+  // holds no point of the solid).
+  bool FartherThan(const Eigen::Vector3d& p, double radius) const;
   // The contact query: At(p) when p is strictly inside the solid, nothing
   // otherwise. One inside test and, only for points inside, one distance pass.
   std::optional<Distance> Penetration(const Eigen::Vector3d& p) const;
