@@ -84,6 +84,8 @@ scene=$root/experiments/scenes/peg_in_hole.json
 run check "$scene"
 expect_status "check valid scene" 0
 expect_in "check valid scene" "$out" "valid scene"
+# It builds each part's trial model, as a run would, and says what it holds.
+expect_in "check valid scene" "$out" "trial model 'peg': contact shell, 3831 shell points, radial clearance 50 um, penetration bound 5 um, V by ray casting"
 expect_lines "check valid scene" "$err" 0
 
 # --- check: a scene whose peg has a negative mass.
@@ -162,8 +164,8 @@ expect_in "check experiment" "$out" "valid experiment"
 run check "$root/experiments/precision.json"
 expect_status "check precision" 0
 for text in "kind precision" "peg_in_hole (" "hydraulic_cylinder (" \
-    "reference: RungeKuttaMerson 1e-8 (/reference)" "settings (13):" \
-    "RungeKuttaMerson 1e-3" "CPodes 1e-6" "(/settings/8): simulation/accuracy = 1e-06" "visibility/grid 32" "contact/shell_spacing 5e-4" \
+    "reference: RungeKuttaMerson 1e-8 (/reference)" "settings (18):" \
+    "RungeKuttaMerson 1e-3" "CPodes 1e-6" "CVODE 1e-4" "(/settings/8): simulation/accuracy = 1e-06" "visibility/grid 32" "contact/shell_spacing 5e-4" \
     "valid experiment"; do
   expect_in "check precision" "$out" "$text"
 done
