@@ -155,7 +155,8 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       {"human_factors_groups.json", "human_factors_groups"},
       {"fatigue.json", "fatigue"},
       {"paper.json", "paper"},
-      {"precision.json", "precision"}};
+      {"precision.json", "precision"},
+      {"precision_peg.json", "precision"}};
   std::set<std::string> found;
   for (const auto& entry :
        std::filesystem::directory_iterator(SourcePath("experiments"))) {
