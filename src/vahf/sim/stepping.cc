@@ -30,15 +30,8 @@ bool Accepted(SimbodyTrial& t, StepChecks& checks, const SimTK::Integrator& inte
 // A dense trace row at a sample state.
 TraceRow SampleRow(SimbodyTrial& t, const SimTK::State& s) {
   t.system().realize(s, SimTK::Stage::Dynamics);
-  const Loads& loads = t.LoadsOf(s);
-  TraceRow row = TrialContext::PoseRow(s.getTime(), t.MotionOf(s));
-  row.assembly_force = loads.assembly_force;
-  row.contact_force = loads.contact.normal_force;
-  row.friction_force = loads.contact.friction_force;
-  row.penetration = loads.contact.max_depth;
-  row.work = t.context().work;
-  row.psi = t.HeldDecision(s).psi;
-  return row;
+  return t.context().SampleRow(s.getTime(), t.MotionOf(s), t.LoadsOf(s),
+                               t.HeldDecision(s).psi);
 }
 
 // Dense samples between accepted steps, by cubic Hermite interpolation of q

@@ -115,6 +115,20 @@ struct TrialContext {
     row.angular_velocity = m.angular_velocity;
     return row;
   }
+
+  // A dense sample row (any stepper's): the pose, the loads there, and A and
+  // Psi as held since the last decision.
+  TraceRow SampleRow(double time, const contact::RigidMotion& m, const Loads& loads,
+                     double psi) const {
+    TraceRow row = PoseRow(time, m);
+    row.assembly_force = loads.assembly_force;
+    row.contact_force = loads.contact.normal_force;
+    row.friction_force = loads.contact.friction_force;
+    row.penetration = loads.contact.max_depth;
+    row.work = work;
+    row.psi = psi;
+    return row;
+  }
 };
 
 }  // namespace vahf::sim::internal
