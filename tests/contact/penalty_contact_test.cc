@@ -586,10 +586,61 @@ TEST(ContactModelBroadPhase, RimBlocksCullWithoutChangingABit) {
   EXPECT_GE(c.rim_queries + c.rim_blocks_skipped * PenaltyContact::kRimBlockSize,
             bore.rim.size());
   // The mouth's two circles (139 + 127 points) lie within 50 um of the peg
-  // all round, so no sphere about a run of them clears it; the outer block's
-  // two 30 mm circles (754 points) are skipped but for runs sharing a block
-  // with the mouth's.
+  // all round, so no sphere about a run of them clears it, and with the peg
+  // tilted 2 deg the meridian bounds clear only the runs away from its lean;
+  // the outer block's two 30 mm circles (754 points) are skipped but for runs
+  // sharing a block with the mouth's.
   EXPECT_LE(c.rim_queries, 139u + 127u + 2 * PenaltyContact::kRimBlockSize);
+}
+
+TEST(ContactModelBroadPhase, APegInsideItsBoreIsClearedWithoutPointQueries) {
+  // The chamfered peg 20 mm down the bore, its axis 30 um off the bore's and
+  // tilted 0.01 deg: every point of its side is within 50 um of the wall, so
+  // no bounding sphere about a cluster of its shell or rims clears it, but no
+  // point touches (50 um radial clearance). The meridian bounds
+  // (sector_bound.h) clear it all.
+  const Shape peg = testing::ChamferedPeg();
+  const PenaltyContact model(MakePointShell(peg, 1e-3), SignedDistance(peg), BoundingRadius(peg),
+                             kMuPart, {BoreWithRims()}, ContactParams(), MakeRims(peg, 0.5e-3));
+  RigidMotion m;
+  m.pose.linear() =
+      Eigen::AngleAxisd(0.01 * M_PI / 180, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  m.pose.translation() = kBoreAt + Eigen::Vector3d(30e-6, 0, -0.02);
+  ContactCounters c;
+  const ContactForces f = model.Evaluate(m, &c);
+  EXPECT_FALSE(f.in_contact());
+  EXPECT_EQ(c.point_queries, 0u);
+  EXPECT_EQ(c.rim_queries, 0u);
+  EXPECT_GT(c.clusters_skipped, 0u);
+}
+
+TEST(ContactModelBroadPhase, APegAgainstItsBoreWallIsQueriedOnlyNearTheWall) {
+  // The peg upright 20 mm down the bore, 55 um off its axis: its side on
+  // that side is 5 um into the wall. The force is the brute-force sum over
+  // every shell point (no rims here), and only clusters near that side are
+  // queried.
+  const Shape peg = testing::ChamferedPeg();
+  const Obstacle bore = MakeObstacle(testing::ChamferedBore(), Translation(kBoreAt), kMuFloor);
+  const PenaltyContact model = Model(peg, 1e-3, {bore});
+  RigidMotion m;
+  m.pose.translation() = kBoreAt + Eigen::Vector3d(0, 55e-6, -0.02);
+  ContactCounters c;
+  const ContactForces f = model.Evaluate(m, &c);
+  const Eigen::Isometry3d to_bore = bore.pose.inverse() * m.pose;
+  Eigen::Vector3d brute = Eigen::Vector3d::Zero();
+  int touching = 0;
+  for (const ShellPoint& p : model.shell()) {
+    const Distance d = bore.field.At(to_bore * p.position);
+    if (!(d.distance < 0)) continue;
+    brute += PenaltyContact::Pressure(ContactParams(), -d.distance, 0.0) * p.area * d.normal;
+    ++touching;
+  }
+  ASSERT_GT(touching, 100);
+  EXPECT_EQ(f.points_in_contact, touching);
+  EXPECT_NEAR((f.normal_force - brute).norm(), 0.0, 1e-12 * brute.norm());
+  std::printf("peg 55 um off the bore's axis: %d shell points touching, %llu queried of %zu\n",
+              touching, static_cast<unsigned long long>(c.point_queries), model.shell().size());
+  EXPECT_LT(c.point_queries, 3u * static_cast<unsigned>(touching));
 }
 
 TEST(ContactModelBroadPhase, RimsAwayFromTheMovingPartAreSkippedWhole) {

@@ -12,13 +12,30 @@ namespace {
 
 double PairFriction(double a, double b) { return a + b > 0 ? 2 * a * b / (a + b) : 0.0; }
 
-// True when no point of the sphere (centre c, in the field's frame) can be
-// inside the solid: outside its bounds, or farther from it than the radius
-// (a signed distance is 1-Lipschitz).
-bool SphereClear(const SignedDistance& field, const Eigen::Vector3d& c, double radius) {
-  return ((c.array() + radius) <= field.lower().array()).any() ||
-         ((c.array() - radius) >= field.upper().array()).any() ||
-         field.FartherThan(c, radius);
+// True when no point of a cluster (its sphere: centre c in the field's frame
+// and radius; its sector bound in its own frame, carried to the field's frame
+// by `to_field`) can be inside the solid: the sphere lies outside the solid's
+// bounds, or the sector bound misses a solid of revolution's profile, or the
+// sphere's centre is farther from the solid than its radius (a signed
+// distance is 1-Lipschitz). Cheapest first; the distance test is left out
+// when the meridian box is narrower than the sphere (the parts turn about
+// nearly one axis), where it would not cull what the box did not.
+bool ClusterClear(const SignedDistance& field, const Eigen::Vector3d& c, double radius,
+                  const SectorBound& sector, const MeridianMap& to_field) {
+  if (((c.array() + radius) <= field.lower().array()).any() ||
+      ((c.array() - radius) >= field.upper().array()).any())
+    return true;
+  const MeridianBox box = to_field(sector);
+  if (field.MeridianBoxClear(box)) return true;
+  if (box.r_max - box.r_min < radius) return false;
+  return field.FartherThan(c, radius);
+}
+
+template <class It, class Position>
+SectorBound SectorOf(It first, It last, Position position) {
+  std::vector<Eigen::Vector3d> points;
+  for (It it = first; it != last; ++it) points.push_back(position(*it));
+  return BoundSector(points);
 }
 
 // A point of the moving part inside an obstacle: its depth, the unit normal
@@ -71,19 +88,21 @@ PenaltyContact::RimSet PenaltyContact::BuildRimSet(const std::vector<RimPoint>& 
     const std::size_t end = std::min(rim.size(), begin + kRimBlockSize);
     const geometry::BoundingSphere b =
         geometry::BoundPoints(rim.begin() + begin, rim.begin() + end, position);
-    set.blocks.push_back({b.centre, b.radius, static_cast<std::uint32_t>(begin),
-                          static_cast<std::uint32_t>(end)});
+    set.blocks.push_back({b.centre, b.radius,
+                          SectorOf(rim.begin() + begin, rim.begin() + end, position),
+                          static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end)});
   }
   return set;
 }
 
 void PenaltyContact::BuildTree(std::size_t begin, std::size_t end) {
+  const auto position = [](const ShellPoint& s) { return s.position; };
   const geometry::BoundingSphere bound =
-      geometry::BoundPoints(shell_.begin() + begin, shell_.begin() + end,
-                            [](const ShellPoint& s) { return s.position; });
+      geometry::BoundPoints(shell_.begin() + begin, shell_.begin() + end, position);
   const std::size_t index = nodes_.size();
-  nodes_.push_back({bound.centre, bound.radius, static_cast<std::uint32_t>(begin),
-                    static_cast<std::uint32_t>(end), 0});
+  nodes_.push_back({bound.centre, bound.radius,
+                    SectorOf(shell_.begin() + begin, shell_.begin() + end, position),
+                    static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end), 0});
   if (end - begin > kLeafSize) {
     int axis;
     (bound.hi - bound.lo).maxCoeff(&axis);
@@ -157,11 +176,11 @@ ContactForces PenaltyContact::DoEvaluate(const RigidMotion& m,
     const double mu = PairFriction(moving_friction_, o.friction);
     // Shell points go to the obstacle frame with one transform.
     const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
+    const MeridianMap to_obstacle(moving_in_obstacle);
     for (std::size_t i = 0; i < nodes_.size();) {
       const Node& node = nodes_[i];
       const Eigen::Vector3d c_o = moving_in_obstacle * node.centre;
-      const bool clear = SphereClear(o.field, c_o, node.radius);
-      if (clear) {
+      if (ClusterClear(o.field, c_o, node.radius, node.sector, to_obstacle)) {
         ++counters.clusters_skipped;
         i = node.escape;
         continue;
@@ -192,10 +211,10 @@ void PenaltyContact::EvaluateMovingRims(std::size_t index, const RigidMotion& m,
                                         ContactCounters& counters, ContactForces* out) const {
   const Obstacle& o = obstacles_[index];
   const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
+  const MeridianMap to_obstacle(moving_in_obstacle);
   for (const RimBlock& block : moving_rim_set_.blocks) {
     const Eigen::Vector3d c_o = moving_in_obstacle * block.centre;
-    const bool clear = SphereClear(o.field, c_o, block.radius);
-    if (clear) {
+    if (ClusterClear(o.field, c_o, block.radius, block.sector, to_obstacle)) {
       ++counters.rim_blocks_skipped;
       continue;
     }
@@ -224,10 +243,10 @@ void PenaltyContact::EvaluateRims(std::size_t index, const RigidMotion& m, doubl
     return;
   }
   const Eigen::Matrix3d& r_world_moving = m.pose.linear();
+  const MeridianMap to_moving(obstacle_in_moving);
   for (const RimBlock& block : set.blocks) {
     const Eigen::Vector3d c_m = obstacle_in_moving * block.centre;
-    const bool clear = SphereClear(moving_field_, c_m, block.radius);
-    if (clear) {
+    if (ClusterClear(moving_field_, c_m, block.radius, block.sector, to_moving)) {
       ++counters.rim_blocks_skipped;
       continue;
     }

@@ -38,6 +38,7 @@
 #include "vahf/contact/contact_params.h"
 #include "vahf/contact/point_shell.h"
 #include "vahf/contact/rim.h"
+#include "vahf/contact/sector_bound.h"
 #include "vahf/contact/signed_distance.h"
 
 namespace vahf::contact {
@@ -89,11 +90,15 @@ class PenaltyContact final : public ContactModel {
   // with an escape index, and the shell reordered so that every node covers a
   // contiguous run [begin, end). The signed distance is 1-Lipschitz, so a node
   // whose centre lies farther from an obstacle than its radius has no point
-  // inside it and is skipped whole. Points are visited in (reordered) shell
-  // order either way, so culling never changes a bit of the result.
+  // inside it and is skipped whole; so is a node whose sector bound, carried
+  // into a solid of revolution's meridian plane, misses its profile
+  // (sector_bound.h: a peg's side against its bore's wall). Points are visited
+  // in (reordered) shell order either way, so culling never changes a bit of
+  // the result.
   struct Node {
     Eigen::Vector3d centre;
     double radius;
+    SectorBound sector;
     std::uint32_t begin, end;  // shell points covered
     std::uint32_t escape;      // next node when this one is skipped
   };
@@ -103,12 +108,14 @@ class PenaltyContact final : public ContactModel {
   // An obstacle's rim points are culled in runs of kRimBlockSize consecutive
   // samples (in MakeRims order), each with a bounding sphere in the obstacle
   // frame, skipped whole when the moving part's signed distance at its centre
-  // exceeds its radius (1-Lipschitz again); all of them are skipped when the
-  // sphere about the whole rim misses the moving part's bounding sphere. The
-  // points are visited in order either way.
+  // exceeds its radius (1-Lipschitz again) or its sector bound misses the
+  // moving part's profile; all of them are skipped when the sphere about the
+  // whole rim misses the moving part's bounding sphere. The points are visited
+  // in order either way.
   struct RimBlock {
     Eigen::Vector3d centre;
     double radius;
+    SectorBound sector;
     std::uint32_t begin, end;  // rim points covered
   };
   struct RimSet {

@@ -29,7 +29,8 @@ SignedDistance::SignedDistance(const geometry::Shape& shape) {
     const Eigen::Vector2d ab = b - a;
     const Eigen::Vector2d d = ab.normalized();
     // The polygon is counter-clockwise, so the outward normal is d turned clockwise.
-    surface_.push_back({a, ab, ab.squaredNorm(), Eigen::Vector2d(d.y(), -d.x())});
+    surface_.push_back({a, ab, ab.squaredNorm(), Eigen::Vector2d(d.y(), -d.x()),
+                        a.cwiseMin(b), a.cwiseMax(b)});
     end_z.push_back(b.y());
     slab_z_.push_back(a.y());
     slab_z_.push_back(b.y());
@@ -110,6 +111,45 @@ bool SignedDistance::FartherThan(const Eigen::Vector3d& p, double radius) const 
     if (d2 < best) best = d2;
   }
   return std::sqrt(best) > radius;
+}
+
+namespace {
+
+// Whether the segment a + t ab, t in [0, 1], meets the closed box [lo, hi]
+// (Liang and Barsky's clipping, Computer Vision, Graphics, and Image
+// Processing 9(3), 1984).
+bool SegmentMeetsBox(const Eigen::Vector2d& a, const Eigen::Vector2d& ab,
+                     const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+  double t0 = 0.0, t1 = 1.0;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double below = lo[axis] - a[axis], above = hi[axis] - a[axis];
+    if (ab[axis] == 0.0) {
+      if (below > 0.0 || above < 0.0) return false;  // parallel, outside the slab
+      continue;
+    }
+    double ta = below / ab[axis], tb = above / ab[axis];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool SignedDistance::MeridianBoxClear(const MeridianBox& box) const {
+  if (is_box_) return false;
+  const Eigen::Vector2d lo(std::max(0.0, box.r_min), box.z_min), hi(box.r_max, box.z_max);
+  if (!(lo.x() <= hi.x() && lo.y() <= hi.y())) return false;  // not a box (NaN)
+  if (lo.x() >= upper_.x() || hi.y() <= lower_.z() || lo.y() >= upper_.z()) return true;
+  for (const Edge& e : surface_)
+    if ((e.lo.array() <= hi.array()).all() && (e.hi.array() >= lo.array()).all() &&
+        SegmentMeetsBox(e.a, e.ab, lo, hi))
+      return false;
+  // No surface edge meets the box, and in r > 0 the profile's boundary is all
+  // surface edges: the box lies wholly inside the solid or wholly outside it.
+  return !InsidePolygon(0.5 * (lo.x() + hi.x()), 0.5 * (lo.y() + hi.y()));
 }
 
 Distance SignedDistance::OfRevolution(const Eigen::Vector3d& p, double r,

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "vahf/contact/sector_bound.h"
 #include "vahf/geometry/shape.h"
 
 namespace vahf::contact {
@@ -34,6 +35,12 @@ class SignedDistance {
   // The contact query: At(p) when p is strictly inside the solid, nothing
   // otherwise. One inside test and, only for points inside, one distance pass.
   std::optional<Distance> Penetration(const Eigen::Vector3d& p) const;
+  // True when no point p with (|p_xy|, p_z) in the box lies inside the solid
+  // (a solid of revolution; a box answers false, it cannot tell): no surface
+  // edge of the profile meets the closed box, and the box's centre is outside
+  // the profile. The broad phase's test for parts turning about a common axis
+  // (sector_bound.h).
+  bool MeridianBoxClear(const MeridianBox& box) const;
 
   // Axis-aligned bounds of the solid in its frame, m.
   const Eigen::Vector3d& lower() const { return lower_; }
@@ -47,6 +54,7 @@ class SignedDistance {
     Eigen::Vector2d ab;       // end minus start
     double ab2;               // ab.squaredNorm()
     Eigen::Vector2d outward;  // unit outward normal of the edge in (r, z)
+    Eigen::Vector2d lo, hi;   // its bounding box in (r, z)
   };
   // A surface edge as the crossing number uses it: the ray at height z crosses
   // it at r = a_r + (z - a_z) / dz * dr.
