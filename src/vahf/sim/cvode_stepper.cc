@@ -58,7 +58,7 @@ void OnError(int, const char* module, const char* function, char* message, void*
 // SUNDIALS objects, freed in reverse order of creation.
 struct Cvode {
   SUNContext context = nullptr;
-  N_Vector y = nullptr, dky = nullptr;
+  N_Vector y = nullptr, dky = nullptr, atol = nullptr;
   SUNMatrix matrix = nullptr;
   SUNLinearSolver solver = nullptr;
   void* mem = nullptr;
@@ -66,11 +66,25 @@ struct Cvode {
     if (mem) CVodeFree(&mem);
     if (solver) SUNLinSolFree(solver);
     if (matrix) SUNMatDestroy(matrix);
-    for (N_Vector v : {dky, y})
+    for (N_Vector v : {atol, dky, y})
       if (v) N_VDestroy(v);
     if (context) SUNContext_Free(&context);
   }
 };
+
+// The absolute tolerances, in the part's units: `accuracy` in m and m/s for
+// its origin's position and velocity, and for its orientation and angular
+// velocity `accuracy` over L, its bounding radius about the origin, so that
+// an error counts as the displacement or speed it causes at the part's
+// farthest point (a unit quaternion's components move by half the angle).
+void SetAbsoluteTolerances(const TrialModel& model, double accuracy, N_Vector atol) {
+  const double length = model.bounding_radius > 0 ? model.bounding_radius : 1.0;
+  Eigen::Map<BodyState> a = Of(atol);
+  a.segment<3>(0).setConstant(accuracy);
+  a.segment<4>(3).setConstant(accuracy / (2 * length));
+  a.segment<3>(7).setConstant(accuracy);
+  a.segment<3>(10).setConstant(accuracy / length);
+}
 
 }  // namespace
 
@@ -102,7 +116,9 @@ double IntegrateWithCvode(TrialContext& c, double sample_interval,
     ok(CVodeInit(cv.mem, Rhs, 0.0, cv.y), "init");
     ok(CVodeSetUserData(cv.mem, &p), "user data");
     ok(CVodeSetErrHandlerFn(cv.mem, OnError, &p), "error handler");
-    ok(CVodeSStolerances(cv.mem, sim.accuracy, sim.accuracy), "tolerances");
+    cv.atol = N_VNew_Serial(kBodyStateSize, cv.context);
+    SetAbsoluteTolerances(model, sim.accuracy, cv.atol);
+    ok(CVodeSVtolerances(cv.mem, sim.accuracy, cv.atol), "tolerances");
     cv.matrix = SUNDenseMatrix(kBodyStateSize, kBodyStateSize, cv.context);
     cv.solver = SUNLinSol_Dense(cv.y, cv.matrix, cv.context);
     ok(CVodeSetLinearSolver(cv.mem, cv.solver, cv.matrix), "linear solver");

@@ -7,10 +7,15 @@
 // checked (step_checks.h), and dense samples come from CVODE's own
 // interpolant, so sampling never changes the trajectory.
 //
-// Tolerances: relative `accuracy`, absolute `accuracy` in SI units (m, 1,
-// m/s, rad/s): Simbody's default unit weights, so that one accuracy means
-// about the same error for every integrator. The Jacobian is CVODE's
-// difference quotient (13 evaluations each).
+// Tolerances: relative `accuracy`; absolute `accuracy` in m and m/s for the
+// origin's position and velocity, and for the orientation and angular
+// velocity `accuracy` / L (the quaternion's: half that), L the part's
+// bounding radius about its origin: an error counts as the displacement or
+// speed it causes at the part's farthest point. (Simbody's default unit
+// weights count 1 rad as 1 m, which for a 50 mm peg asks 20 times more of
+// its angular velocity than of its rim's speed; the step was then held by
+// the error estimates of wx and wy.) The Jacobian is CVODE's difference
+// quotient (13 evaluations each).
 #pragma once
 
 #include <optional>

@@ -84,6 +84,7 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
   m.hand_mass = m.operator_acts ? params.guidance.hand_mass : 0.0;
   m.mass = m.part_mass + m.hand_mass;
   m.part_com = part.mass_properties.centroid;
+  m.bounding_radius = part.mass_properties.bounding_radius;
   {
     // Parallel-axis sum of the part (principal axes = part axes) and the hand
     // point mass, about their common centre of mass.

@@ -67,6 +67,9 @@ struct TrialModel {
   Eigen::Vector3d com = Eigen::Vector3d::Zero();       // of both, part frame
   Eigen::Vector3d part_com = Eigen::Vector3d::Zero();  // of the part alone: where factors look
   bool revolved = false;  // orientation about the part's own z axis is free
+  // The part's bounding radius about its frame origin, m: what an angle turns
+  // into a displacement at its farthest point (CVODE's error weights).
+  double bounding_radius = 0;
   human::Posture posture;
   human::FactorCurves curves;
   double reach_limit = 0;  // D3, m
