@@ -9,8 +9,10 @@
 //
 // Tolerances: relative `accuracy`, absolute `accuracy` in SI units (m, 1,
 // m/s, rad/s): Simbody's default unit weights, so that one accuracy means
-// about the same error for every integrator. The Jacobian is CVODE's
-// difference quotient (13 evaluations each).
+// about the same error for every integrator. The Jacobian is analytic
+// (rigid_body_jacobian.h: one contact pass with its derivative, instead of the
+// 13 right-hand sides of CVODE's difference quotient, which
+// TrialContext::difference_quotient_jacobian restores for comparison).
 #pragma once
 
 #include <optional>
