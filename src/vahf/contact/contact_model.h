@@ -29,6 +29,19 @@ struct ContactForces {
   bool in_contact() const { return points_in_contact + rim_points_in_contact > 0; }
 };
 
+// The derivative of the contact's loads with respect to the moving part's
+// motion, for implicit integrators (contact_jacobian.h). Each block is 3 x 12:
+// rows the world components; columns, three each, (dx, dtheta, v, w): a small
+// translation of the part (world), a small rotation of it about its origin
+// (world rotation vector: R -> exp([dtheta]x) R, the origin fixed), its
+// velocity and its angular velocity.
+struct ContactJacobian {
+  using Block = Eigen::Matrix<double, 3, 12>;
+  Block normal_force = Block::Zero();
+  Block friction_force = Block::Zero();
+  Block torque = Block::Zero();  // about the moving origin
+};
+
 // Work counters: what the broad phase saved and what the narrow phase did.
 struct ContactCounters {
   std::uint64_t evaluations = 0;       // calls of Evaluate
@@ -46,14 +59,19 @@ class ContactModel {
 
   // The contact forces on the moving part at `motion`, adding the work done to
   // `counters` when given. Same motion: the same bits, whatever else ran.
-  ContactForces Evaluate(const RigidMotion& motion, ContactCounters* counters = nullptr) const {
+  // With `jacobian`, also their derivative in the same pass (the forces the
+  // same bits as without).
+  ContactForces Evaluate(const RigidMotion& motion, ContactCounters* counters = nullptr,
+                         ContactJacobian* jacobian = nullptr) const {
     ContactCounters scratch;
-    return DoEvaluate(motion, counters ? *counters : scratch);
+    if (jacobian) *jacobian = ContactJacobian{};
+    return DoEvaluate(motion, counters ? *counters : scratch, jacobian);
   }
 
  protected:
-  virtual ContactForces DoEvaluate(const RigidMotion& motion,
-                                   ContactCounters& counters) const = 0;
+  // `jacobian`, when not null, starts at zero: add to it.
+  virtual ContactForces DoEvaluate(const RigidMotion& motion, ContactCounters& counters,
+                                   ContactJacobian* jacobian) const = 0;
 };
 
 }  // namespace vahf::contact

@@ -120,14 +120,17 @@ void PenaltyContact::BuildTree(std::size_t begin, std::size_t end) {
 }
 
 double PenaltyContact::Law(double k, double x0, double c, double b, double depth,
-                         double depth_rate) {
+                           double depth_rate, Slopes* slopes) {
+  if (slopes) *slopes = Slopes{};
   if (!(depth > 0)) return 0.0;
   // The C1 elastic law and its slope.
   const auto e = [&](double x) { return x < x0 ? k * x * x / (2 * x0) : k * (x - 0.5 * x0); };
   const auto de = [&](double x) { return x < x0 ? k * x / x0 : k; };
   double elastic;
+  double slope = 0;  // d elastic / d depth, when asked for
   if (!(b > 0)) {
     elastic = e(depth);
+    if (slopes) slope = de(depth);
   } else {
     const double xc = b * (1.0 - kBarrierReserve);
     const double x = std::min(depth, xc);
@@ -135,17 +138,24 @@ double PenaltyContact::Law(double k, double x0, double c, double b, double depth
     elastic = e(x) * s * s;
     if (depth > xc)  // along the tangent at xc: d/dx [e h] = e' h + e h', h' = 2 s^3 / b
       elastic += (de(xc) * s * s + e(xc) * 2.0 * s * s * s / b) * (depth - xc);
+    // The same product rule at x; past xc, x = xc: the tangent's slope.
+    if (slopes) slope = de(x) * s * s + e(x) * 2.0 * s * s * s / b;
   }
-  return elastic * std::max(0.0, 1.0 + c * depth_rate);
+  const double factor = 1.0 + c * depth_rate;  // Hunt and Crossley
+  if (slopes && factor > 0) *slopes = Slopes{slope * factor, elastic * c};
+  return elastic * std::max(0.0, factor);
 }
 
-double PenaltyContact::Pressure(const ContactParams& p, double depth, double depth_rate) {
-  return Law(p.stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth, depth_rate);
+double PenaltyContact::Pressure(const ContactParams& p, double depth, double depth_rate,
+                                Slopes* slopes) {
+  return Law(p.stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth, depth_rate,
+             slopes);
 }
 
-double PenaltyContact::LineLoad(const ContactParams& p, double depth, double depth_rate) {
+double PenaltyContact::LineLoad(const ContactParams& p, double depth, double depth_rate,
+                                Slopes* slopes) {
   return Law(p.line_stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth,
-             depth_rate);
+             depth_rate, slopes);
 }
 
 bool PenaltyContact::AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
@@ -161,8 +171,26 @@ bool PenaltyContact::AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d&
   return true;
 }
 
-ContactForces PenaltyContact::DoEvaluate(const RigidMotion& m,
-                                         ContactCounters& counters) const {
+bool PenaltyContact::AddPoint(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
+                              const Eigen::Vector3d& u, double depth, bool line, double size,
+                              double mu, PointFrame frame, const Eigen::Vector3d& w,
+                              ContactForces* out, ContactJacobian* jacobian) const {
+  Slopes slopes;
+  Slopes* const asked = jacobian ? &slopes : nullptr;
+  const double depth_rate = -v.dot(u);
+  const double fn = (line ? LineLoad(params_, depth, depth_rate, asked)
+                          : Pressure(params_, depth, depth_rate, asked)) *
+                    size;
+  if (!AddContact(r, v, u, fn, mu, out)) return false;
+  if (jacobian)
+    AddPointJacobian({r, v, u, w, fn, slopes.depth * size, slopes.rate * size, mu,
+                      params_.friction_transition_speed, frame},
+                     jacobian);
+  return true;
+}
+
+ContactForces PenaltyContact::DoEvaluate(const RigidMotion& m, ContactCounters& counters,
+                                         ContactJacobian* jacobian) const {
   ++counters.evaluations;
   ContactForces out;
   for (std::size_t index = 0; index < obstacles_.size(); ++index) {
@@ -194,21 +222,22 @@ ContactForces PenaltyContact::DoEvaluate(const RigidMotion& m,
         const ShellPoint& s = shell_[k];
         ++counters.point_queries;
         const std::optional<Hit> h = MovingPointInside(o, moving_in_obstacle, m, s.position);
-        if (!h || !AddContact(h->r, h->v, h->n,
-                              Pressure(params_, h->depth, -h->v.dot(h->n)) * s.area, mu, &out))
+        if (!h || !AddPoint(h->r, h->v, h->n, h->depth, false, s.area, mu, PointFrame::kMoving,
+                            m.angular_velocity, &out, jacobian))
           continue;
         ++out.points_in_contact;
         out.max_depth = std::max(out.max_depth, h->depth);
       }
     }
-    EvaluateMovingRims(index, m, mu, counters, &out);
-    EvaluateRims(index, m, mu, counters, &out);
+    EvaluateMovingRims(index, m, mu, counters, &out, jacobian);
+    EvaluateRims(index, m, mu, counters, &out, jacobian);
   }
   return out;
 }
 
 void PenaltyContact::EvaluateMovingRims(std::size_t index, const RigidMotion& m, double mu,
-                                        ContactCounters& counters, ContactForces* out) const {
+                                        ContactCounters& counters, ContactForces* out,
+                                        ContactJacobian* jacobian) const {
   const Obstacle& o = obstacles_[index];
   const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
   const MeridianMap to_obstacle(moving_in_obstacle);
@@ -222,8 +251,8 @@ void PenaltyContact::EvaluateMovingRims(std::size_t index, const RigidMotion& m,
       const RimPoint& q = moving_rim_[k];
       ++counters.rim_queries;
       const std::optional<Hit> h = MovingPointInside(o, moving_in_obstacle, m, q.position);
-      if (!h || !AddContact(h->r, h->v, h->n,
-                            LineLoad(params_, h->depth, -h->v.dot(h->n)) * q.length, mu, out))
+      if (!h || !AddPoint(h->r, h->v, h->n, h->depth, true, q.length, mu, PointFrame::kMoving,
+                          m.angular_velocity, out, jacobian))
         continue;
       ++out->rim_points_in_contact;
       out->max_depth = std::max(out->max_depth, h->depth);
@@ -232,7 +261,8 @@ void PenaltyContact::EvaluateMovingRims(std::size_t index, const RigidMotion& m,
 }
 
 void PenaltyContact::EvaluateRims(std::size_t index, const RigidMotion& m, double mu,
-                                  ContactCounters& counters, ContactForces* out) const {
+                                  ContactCounters& counters, ContactForces* out,
+                                  ContactJacobian* jacobian) const {
   const Obstacle& o = obstacles_[index];
   const RimSet& set = rim_sets_[index];
   if (set.blocks.empty()) return;
@@ -262,8 +292,8 @@ void PenaltyContact::EvaluateRims(std::size_t index, const RigidMotion& m, doubl
       const Eigen::Vector3d u = -(r_world_moving * d->normal);
       const Eigen::Vector3d r = r_world_moving * p_m;  // origin to point, world
       const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);  // its material
-      const double depth_rate = -v.dot(u);
-      if (!AddContact(r, v, u, LineLoad(params_, depth, depth_rate) * q.length, mu, out))
+      if (!AddPoint(r, v, u, depth, true, q.length, mu, PointFrame::kFixed, m.angular_velocity,
+                    out, jacobian))
         continue;
       ++out->rim_points_in_contact;
       out->max_depth = std::max(out->max_depth, depth);

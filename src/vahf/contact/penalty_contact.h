@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "vahf/contact/contact_jacobian.h"
 #include "vahf/contact/contact_model.h"
 #include "vahf/contact/contact_params.h"
 #include "vahf/contact/point_shell.h"
@@ -70,10 +71,17 @@ class PenaltyContact final : public ContactModel {
   const std::vector<ShellPoint>& shell() const { return shell_; }
   std::size_t obstacle_count() const { return obstacles_.size(); }
 
-  // The normal pressure law alone (for tests), Pa.
-  static double Pressure(const ContactParams& params, double depth, double depth_rate);
+  // A law's slopes: per metre of depth and per m/s of depth rate.
+  struct Slopes {
+    double depth = 0, rate = 0;
+  };
+  // The normal pressure law alone (for tests), Pa; with `slopes`, also its
+  // derivatives (the value the same bits).
+  static double Pressure(const ContactParams& params, double depth, double depth_rate,
+                         Slopes* slopes = nullptr);
   // The rim's line law alone (for tests), N/m: Pressure with line_stiffness.
-  static double LineLoad(const ContactParams& params, double depth, double depth_rate);
+  static double LineLoad(const ContactParams& params, double depth, double depth_rate,
+                         Slopes* slopes = nullptr);
   // Rim points per culling block (see RimBlock).
   static constexpr std::size_t kRimBlockSize = 32;
   // The barrier's reserve eps: the law leaves the barrier for its tangent at
@@ -81,8 +89,8 @@ class PenaltyContact final : public ContactModel {
   static constexpr double kBarrierReserve = 1e-3;
 
  protected:
-  ContactForces DoEvaluate(const RigidMotion& motion,
-                           ContactCounters& counters) const override;
+  ContactForces DoEvaluate(const RigidMotion& motion, ContactCounters& counters,
+                           ContactJacobian* jacobian) const override;
 
  private:
   // A bounding-sphere tree over the shell points (part frame), built once by
@@ -125,21 +133,30 @@ class PenaltyContact final : public ContactModel {
   };
   static RimSet BuildRimSet(const std::vector<RimPoint>& rim);
 
-  // The law shared by faces and rims: stiffness k, onset x0, dissipation c.
+  // The law shared by faces and rims: stiffness k, onset x0, dissipation c;
+  // its slopes too when `slopes` is given.
   static double Law(double k, double x0, double c, double barrier, double depth,
-                    double depth_rate);
+                    double depth_rate, Slopes* slopes);
   // Adds a normal force fn pushing the moving part along the world unit vector
   // u at r (world, from its origin), and the friction against the moving
   // material's velocity v there; false (nothing added) when fn is not positive.
   bool AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
                   const Eigen::Vector3d& u, double fn, double mu,
                   ContactForces* out) const;
+  // One point at `depth` with its face (area, Pressure) or line (length,
+  // LineLoad) law: AddContact and, with `jacobian`, its derivative
+  // (contact_jacobian.h; w the part's angular velocity).
+  bool AddPoint(const Eigen::Vector3d& r, const Eigen::Vector3d& v, const Eigen::Vector3d& u,
+                double depth, bool line, double size, double mu, PointFrame frame,
+                const Eigen::Vector3d& w, ContactForces* out, ContactJacobian* jacobian) const;
   // The obstacle's rim points against the moving part, after its shell points.
   // The moving part's rims against obstacle `index`'s field.
   void EvaluateMovingRims(std::size_t index, const RigidMotion& motion, double mu,
-                          ContactCounters& counters, ContactForces* out) const;
+                          ContactCounters& counters, ContactForces* out,
+                          ContactJacobian* jacobian) const;
   void EvaluateRims(std::size_t index, const RigidMotion& motion, double mu,
-                    ContactCounters& counters, ContactForces* out) const;
+                    ContactCounters& counters, ContactForces* out,
+                    ContactJacobian* jacobian) const;
 
   std::vector<ShellPoint> shell_;
   std::vector<Node> nodes_;

@@ -14,8 +14,10 @@
 // speed it causes at the part's farthest point. (Simbody's default unit
 // weights count 1 rad as 1 m, which for a 50 mm peg asks 20 times more of
 // its angular velocity than of its rim's speed; the step was then held by
-// the error estimates of wx and wy.) The Jacobian is CVODE's difference
-// quotient (13 evaluations each).
+// the error estimates of wx and wy.) The Jacobian is analytic
+// (rigid_body_jacobian.h: one contact pass with its derivative, instead of the
+// 13 right-hand sides of CVODE's difference quotient, which
+// TrialContext::difference_quotient_jacobian restores for comparison).
 #pragma once
 
 #include <optional>

@@ -81,6 +81,7 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key, const TrialOpt
   TrialContext c(model, key);
   c.work = options.initial_work;
   c.record_trace = options.record_trace;
+  c.difference_quotient_jacobian = options.difference_quotient_jacobian;
   const auto start = std::chrono::steady_clock::now();
   TrialResult result;
   TrialCounters counters;

@@ -30,6 +30,9 @@ struct TrialOptions {
   // simulated time (TrialResult::samples), from the integrator's
   // interpolant: the trajectory and the result are the same as without.
   double sample_interval = 0.0;
+  // CVODE only, for comparisons and tests: CVODE's difference-quotient
+  // Jacobian (13 right-hand sides each) instead of the analytic one.
+  bool difference_quotient_jacobian = false;
 };
 
 // Runs one trial with the integrator and accuracy of scene.params.simulation.

@@ -169,13 +169,16 @@ void TrialModel::OperatorLoad(const contact::RigidMotion& m, const Decision& d,
 }
 
 Loads TrialModel::LoadsAt(const contact::RigidMotion& m, const Decision& d,
-                          contact::ContactCounters* counters) const {
+                          contact::ContactCounters* counters, LoadJacobian* jacobian) const {
   Loads out;
-  out.contact = ContactAt(m, counters);
+  contact::ContactJacobian cj;
+  out.contact = jacobian && contact.model ? contact.model->Evaluate(m, counters, &cj)
+                                          : ContactAt(m, counters);
   Vector3d torque;
   OperatorLoad(m, d, out.contact, &out.assembly_force, &torque);
   out.force = out.assembly_force + out.contact.normal_force + out.contact.friction_force;
   out.torque = torque + out.contact.torque;
+  if (jacobian) *jacobian = LoadJacobianAt(m, d, out, cj);
   return out;
 }
 

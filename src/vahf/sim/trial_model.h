@@ -42,6 +42,11 @@ struct Loads {
   contact::ContactForces contact;
 };
 
+// The derivative of the loads' force (rows 0-2) and torque about the origin
+// (rows 3-5) with respect to the part's motion, in contact::ContactJacobian's
+// columns (dx, dtheta, v, w): for implicit steppers.
+using LoadJacobian = Eigen::Matrix<double, 6, 12>;
+
 // What Eq. 1 is cast against: the part's mesh and the fixed parts' meshes,
 // tessellated once. A caster (Embree scene) is built from them per trial:
 // casting moves the part's instance, so casters are not shared.
@@ -90,8 +95,14 @@ struct TrialModel {
                     Eigen::Vector3d* torque) const;
   // Both elements at m (gravity aside): the contact first, as the operator
   // feels it, then their sum, operator first (the order fixes the bits).
+  // With `jacobian`, also their derivative, from the same contact pass (the
+  // loads the same bits as without).
   Loads LoadsAt(const contact::RigidMotion& m, const Decision& d,
-                contact::ContactCounters* counters) const;
+                contact::ContactCounters* counters, LoadJacobian* jacobian = nullptr) const;
+  // The derivative of LoadsAt(m, d) given its `loads` and the contact's
+  // derivative there (trial_model_jacobian.cc).
+  LoadJacobian LoadJacobianAt(const contact::RigidMotion& m, const Decision& d,
+                              const Loads& loads, const contact::ContactJacobian& cj) const;
 
   // Distance and angle to the target, for completion and progress.
   double DistanceToTarget(const contact::RigidMotion& m) const;

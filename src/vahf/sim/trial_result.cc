@@ -29,6 +29,9 @@ std::string TrialResult::BriefReport() const {
       "failures, {} realizations\n",
       integrator, accuracy, c.steps_taken, c.steps_attempted, c.error_test_failures,
       c.realizations);
+  if (c.jacobian_evaluations > 0)
+    out += fmt::format("linear solver: {} Jacobian evaluations, {} nonlinear convergence failures\n",
+                       c.jacobian_evaluations, c.convergence_failures);
   out += fmt::format(
       "contact: {} shell points, {} evaluations, {} point queries, {} clusters and {} "
       "pairs skipped by the broad phase\n",

@@ -48,6 +48,11 @@ struct TrialCounters {
   std::int64_t steps_attempted = 0;
   std::int64_t error_test_failures = 0;
   std::int64_t realizations = 0;
+  // CVODE only: Jacobian evaluations (analytic or by difference quotients,
+  // whose right-hand sides count as realizations) and nonlinear (Newton)
+  // convergence failures.
+  std::int64_t jacobian_evaluations = 0;
+  std::int64_t convergence_failures = 0;
   std::int64_t contact_evaluations = 0;
   std::int64_t contact_point_queries = 0;
   std::int64_t broad_phase_skips = 0;

@@ -67,6 +67,9 @@ struct TrialContext {
   std::vector<TraceRow> samples;  // every sample_interval of simulated time
   bool record_trace = true;
   bool integrated = false;  // the integrator was initialized (its counters mean something)
+  // CVODE: its own difference-quotient Jacobian instead of the analytic one
+  // (TrialOptions, for comparisons).
+  bool difference_quotient_jacobian = false;
 
   void End(Ending e) {
     ended = e.status;
