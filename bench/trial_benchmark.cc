@@ -36,6 +36,7 @@ void PegTrial(benchmark::State& state, const std::string& integrator) {
 BENCHMARK_CAPTURE(PegTrial, RungeKuttaMerson, std::string("RungeKuttaMerson"))
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(PegTrial, CPodes, std::string("CPodes"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(PegTrial, CVODE, std::string("CVODE"))->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
