@@ -229,18 +229,18 @@ ContactForces PenaltyContact::DoEvaluate(const RigidMotion& m, ContactCounters& 
         out.max_depth = std::max(out.max_depth, h->depth);
       }
     }
-    EvaluateMovingRims(index, m, mu, counters, &out, jacobian);
+    EvaluateMovingRims(index, m, moving_in_obstacle, to_obstacle, mu, counters, &out, jacobian);
     EvaluateRims(index, m, mu, counters, &out, jacobian);
   }
   return out;
 }
 
-void PenaltyContact::EvaluateMovingRims(std::size_t index, const RigidMotion& m, double mu,
+void PenaltyContact::EvaluateMovingRims(std::size_t index, const RigidMotion& m,
+                                        const Eigen::Isometry3d& moving_in_obstacle,
+                                        const MeridianMap& to_obstacle, double mu,
                                         ContactCounters& counters, ContactForces* out,
                                         ContactJacobian* jacobian) const {
   const Obstacle& o = obstacles_[index];
-  const Eigen::Isometry3d moving_in_obstacle = o.pose.inverse() * m.pose;
-  const MeridianMap to_obstacle(moving_in_obstacle);
   for (const RimBlock& block : moving_rim_set_.blocks) {
     const Eigen::Vector3d c_o = moving_in_obstacle * block.centre;
     if (ClusterClear(o.field, c_o, block.radius, block.sector, to_obstacle)) {

@@ -149,11 +149,13 @@ class PenaltyContact final : public ContactModel {
   bool AddPoint(const Eigen::Vector3d& r, const Eigen::Vector3d& v, const Eigen::Vector3d& u,
                 double depth, bool line, double size, double mu, PointFrame frame,
                 const Eigen::Vector3d& w, ContactForces* out, ContactJacobian* jacobian) const;
+  // The moving part's rims against obstacle `index`'s field, with the moving
+  // frame in the obstacle's and its meridian map (DoEvaluate's, for the shell).
+  void EvaluateMovingRims(std::size_t index, const RigidMotion& motion,
+                          const Eigen::Isometry3d& moving_in_obstacle,
+                          const MeridianMap& to_obstacle, double mu, ContactCounters& counters,
+                          ContactForces* out, ContactJacobian* jacobian) const;
   // The obstacle's rim points against the moving part, after its shell points.
-  // The moving part's rims against obstacle `index`'s field.
-  void EvaluateMovingRims(std::size_t index, const RigidMotion& motion, double mu,
-                          ContactCounters& counters, ContactForces* out,
-                          ContactJacobian* jacobian) const;
   void EvaluateRims(std::size_t index, const RigidMotion& motion, double mu,
                     ContactCounters& counters, ContactForces* out,
                     ContactJacobian* jacobian) const;

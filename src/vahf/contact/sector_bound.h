@@ -39,8 +39,8 @@ struct MeridianBox {
   double r_min, r_max, z_min, z_max;
 };
 
-// What ToMeridian needs of a transform T (p = A q + t), computed once per
-// transform rather than once per cluster.
+// The box of a sector bound under a transform T (p = A q + t), with what
+// T contributes computed once per transform rather than once per cluster.
 class MeridianMap {
  public:
   explicit MeridianMap(const Eigen::Isometry3d& t);
