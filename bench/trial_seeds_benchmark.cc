@@ -11,21 +11,15 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <ctime>
 #include <string>
 #include <vector>
 
+#include "vahf/core/thread_cpu.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/sim/trial.h"
 #include "vahf/sim/trial_model.h"
 
 namespace {
-
-double ThreadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 int SeedCount() {
   const char* env = std::getenv("VAHF_BENCH_SEEDS");
@@ -53,10 +47,10 @@ void Seeds(benchmark::State& state, const std::string& scene_file, int position,
     cpu.clear();
     rtf.clear();
     for (int k = 0; k < n; ++k) {
-      const double start = ThreadCpuSeconds();
+      const double start = vahf::ThreadCpuSeconds();
       const vahf::sim::TrialResult r =
           vahf::sim::RunTrial(*model, {1, static_cast<std::uint64_t>(k)}, {0, 0.0, false});
-      const double seconds = ThreadCpuSeconds() - start;
+      const double seconds = vahf::ThreadCpuSeconds() - start;
       cpu.push_back(seconds);
       rtf.push_back(r.end_time / seconds);
       evaluations += static_cast<double>(r.counters.contact_evaluations);

@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "vahf/experiment/design.h"
@@ -153,7 +154,9 @@ TEST(PaperClaims, FatigueOverAnHourIsNotReproduced) {
   EXPECT_GT(t.at("time_last_minus_first").at("p_greater").get<double>(), 0.05);
 }
 
-// Every kind's report renders: tables, summary, and each gnuplot figure.
+// Every kind's report renders: tables, summary, and each gnuplot figure; and
+// each writes what its trials cost (report/cost.h) as a measured file, a row
+// per part with the CPU its trials took.
 TEST(PaperClaims, EveryKindWritesItsReportWithAllPlots) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "vahf_paper_claims_report";
@@ -166,6 +169,16 @@ TEST(PaperClaims, EveryKindWritesItsReportWithAllPlots) {
     for (const Plot& p : r->section.plots)
       EXPECT_TRUE(std::filesystem::exists(dir / name / p.file)) << p.file;
     EXPECT_TRUE(std::filesystem::exists(dir / name / "report.md"));
+    const std::string cost = std::string(name) + "_cost.csv";
+    std::ifstream manifest_file(dir / name / "manifest.json");
+    const nlohmann::json manifest = nlohmann::json::parse(manifest_file);
+    EXPECT_EQ(manifest.at("measured_files"), (nlohmann::json{cost, "measured.json"}));
+    const nlohmann::json& parts =
+        r->section.measured.at("cost").at("parts");
+    ASSERT_EQ(parts.size(), 3u) << name;  // the cylinder's three parts
+    EXPECT_EQ(parts[0].at("part"), "piston_rod");
+    EXPECT_GT(parts[0].at("cpu_p50_s").get<double>(), 0.0);
+    EXPECT_GE(parts[0].at("cpu_max_s").get<double>(), parts[0].at("cpu_p50_s").get<double>());
   }
   std::filesystem::remove_all(dir);
 }

@@ -1,8 +1,9 @@
 #include "vahf/report/section.h"
 
-#include "vahf/report/health.h"
-
 #include <fmt/format.h>
+
+#include "vahf/report/cost.h"
+#include "vahf/report/health.h"
 
 #include "vahf/core/error.h"
 
@@ -58,6 +59,14 @@ Section SectionFor(const experiment::ExperimentRun& run) {
   Section out = KindSection(run);
   out.summary["health"] = HealthJson(run.run);
   out.markdown += HealthMarkdown(run.run);
+  // The precision kind measures its cost per setting itself (precision_wall.csv).
+  if (run.file->kind != "precision") {
+    Table cost = CostTable(run.run);
+    out.markdown += CostMarkdown(cost);
+    VAHF_CHECK(out.measured.is_null(), "a kind's own measured figures would be replaced");
+    out.measured = {{"cost", CostJson(cost)}};
+    out.measured_tables.emplace_back(run.file->kind + "_cost.csv", std::move(cost));
+  }
   return out;
 }
 

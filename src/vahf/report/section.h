@@ -57,7 +57,9 @@ Section FatigueSection(const experiment::ExperimentRun& run);
 Section PrecisionSection(const experiment::ExperimentRun& run);
 
 // The section of a run of any kind but "paper", with its numerical health
-// (health.h) in summary["health"] and at the end of its markdown.
+// (health.h) in summary["health"] and at the end of its markdown, and, but for
+// precision (which measures its settings' cost itself), what its trials cost
+// (cost.h) as a measured table KIND_cost.csv, measured.json and markdown.
 Section SectionFor(const experiment::ExperimentRun& run);
 
 }  // namespace vahf::report

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <optional>
 
+#include "vahf/core/thread_cpu.h"
 #include "vahf/core/warnings.h"
 #include "vahf/sim/cvode_stepper.h"
 #include "vahf/sim/integrators.h"
@@ -83,6 +84,7 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key, const TrialOpt
   c.record_trace = options.record_trace;
   c.difference_quotient_jacobian = options.difference_quotient_jacobian;
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = ThreadCpuSeconds();
   TrialResult result;
   TrialCounters counters;
   std::optional<TraceRow> final_row;
@@ -90,6 +92,7 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key, const TrialOpt
       c, options.sample_interval, &final_row, &counters);
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.cpu_seconds = ThreadCpuSeconds() - cpu_start;
   result.status = c.ended.value_or(Status::kTimeout);
   if (!c.ended) c.detail = fmt::format("time limit {} s", params.simulation.time_limit);
   result.detail = c.detail;

@@ -22,8 +22,9 @@ std::string TrialResult::BriefReport() const {
   out += fmt::format("part: {}, seed {}, trial {}\n", part, key.seed, key.trial);
   if (status == Status::kCompleted)
     out += fmt::format("completion time: {:.6f} s\n", completion_time);
-  out += fmt::format("simulated: {:.6f} s in {:.4f} s wall ({:.1f} x real time)\n", end_time,
-                     wall_seconds, wall_seconds > 0 ? end_time / wall_seconds : 0.0);
+  out += fmt::format("simulated: {:.6f} s in {:.4f} s wall, {:.4f} s CPU ({:.1f} x real time)\n",
+                     end_time, wall_seconds, cpu_seconds,
+                     cpu_seconds > 0 ? end_time / cpu_seconds : 0.0);
   out += fmt::format(
       "integrator: {} at accuracy {:g}: {} steps taken, {} attempted, {} error-test "
       "failures, {} realizations\n",
