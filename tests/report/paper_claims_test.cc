@@ -75,14 +75,17 @@ TEST(PaperClaims, EtaRisesAsEachPartNearsItsTarget) {
 
 // Numerical health of the same run: no numerical failure and no warning but
 // the one the shell contact is known for (docs/physics.md, Contact): the
-// cylinder's parts sink deeper than a tenth of their 28-34 um fits.
+// cylinder's parts sink deeper than a tenth of their 28-34 um fits; and
+// CVODE's recovered Newton failures (integrator_retry), where a step crosses
+// a shell point's contact onset and the force's slope jumps inside it.
 TEST(PaperClaims, Table1RunHasOnlyTheExpectedWarnings) {
   const auto r = RunShipped("table1", 4);
   const nlohmann::json& health = r->section.summary.at("health");
   for (const auto& c : health.at("conditions")) {
     EXPECT_EQ(c.at("numerical_failures"), 0) << c.dump();
     for (const auto& [kind, w] : c.at("warnings").items())
-      EXPECT_EQ(kind, "penetration_bound") << "unexpected warning: " << w.dump();
+      EXPECT_TRUE(kind == "penetration_bound" || kind == "integrator_retry")
+          << "unexpected warning " << kind << ": " << w.dump();
   }
   EXPECT_NE(r->section.markdown.find("### Numerical health"), std::string::npos);
 }

@@ -156,7 +156,8 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       {"fatigue.json", "fatigue"},
       {"paper.json", "paper"},
       {"precision.json", "precision"},
-      {"precision_peg.json", "precision"}};
+      {"precision_peg.json", "precision"},
+      {"precision_cylinder.json", "precision"}};
   std::set<std::string> found;
   for (const auto& entry :
        std::filesystem::directory_iterator(SourcePath("experiments"))) {
@@ -760,14 +761,14 @@ TEST(PrecisionTest, ScenesReferenceAndSettingsLoad) {
 
 // Each setting is applied on top of each scene's own parameters: what it does
 // not set keeps the scene's value (the cylinder sets shell_spacing 2 mm,
-// hand_mass 1.5 kg and time_limit 10 s).
+// hand_mass 1.5 kg, time_limit 10 s and CVODE at 1e-6).
 TEST(PrecisionTest, ASettingKeepsTheScenesOtherParameters) {
   const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Precision()));
   const PrecisionScene& cylinder = e.precision.scenes[1];
   const Parameters& scene = cylinder.scene.params;
   EXPECT_DOUBLE_EQ(scene.contact.shell_spacing, 0.002);
-  EXPECT_EQ(scene.simulation.integrator, "RungeKuttaMerson");
-  EXPECT_DOUBLE_EQ(scene.simulation.accuracy, 1e-4);
+  EXPECT_EQ(scene.simulation.integrator, "CVODE");
+  EXPECT_DOUBLE_EQ(scene.simulation.accuracy, 1e-6);
 
   const Parameters& cpodes = cylinder.settings[1].params;
   EXPECT_EQ(cpodes.simulation.integrator, "CPodes");
@@ -778,12 +779,12 @@ TEST(PrecisionTest, ASettingKeepsTheScenesOtherParameters) {
 
   const Parameters& grid = cylinder.settings[2].params;
   EXPECT_EQ(grid.visibility.grid, 16);
-  EXPECT_DOUBLE_EQ(grid.simulation.accuracy, 1e-4);  // the scene's, not the reference's
+  EXPECT_DOUBLE_EQ(grid.simulation.accuracy, 1e-6);  // the scene's, not the reference's
 
   const Parameters& shell = cylinder.settings[3].params;
   EXPECT_DOUBLE_EQ(shell.contact.shell_spacing, 0.004);
   const Parameters& accuracy = cylinder.settings[4].params;
-  EXPECT_EQ(accuracy.simulation.integrator, "RungeKuttaMerson");
+  EXPECT_EQ(accuracy.simulation.integrator, "CVODE");  // the scene's
   EXPECT_DOUBLE_EQ(accuracy.simulation.accuracy, 1e-5);
 
   EXPECT_DOUBLE_EQ(cylinder.reference.params.simulation.accuracy, 1e-8);
