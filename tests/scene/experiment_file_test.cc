@@ -822,6 +822,11 @@ TEST(PrecisionTest, LabelsAreReadable) {
   EXPECT_EQ(SettingLabel(Overrides{{"visibility/mode", "off"}, {"visibility/grid", 8}}),
             "visibility/mode off, visibility/grid 8");
   EXPECT_EQ(SettingLabel(Overrides{}), "scene parameters");
+  // Integrator and accuracy first, whatever else the setting changes.
+  EXPECT_EQ(SettingLabel(Overrides{{"simulation/accuracy", 1e-4},
+                                   {"simulation/integrator", "CVODE"},
+                                   {"simulation/velocity_time_scale", 0.1}}),
+            "CVODE 1e-4, simulation/velocity_time_scale 0.1");
 }
 
 TEST(PrecisionTest, CheckListsScenesReferenceAndSettings) {

@@ -185,11 +185,14 @@ std::string SettingLabel(
     if (name == "simulation/integrator") integrator = &value;
     if (name == "simulation/accuracy") accuracy = &value;
   }
-  if (integrator && accuracy && overrides.size() == 2)
-    return ValueText(*integrator) + " " + ValueText(*accuracy);
   std::string out;
-  for (const auto& [name, value] : overrides)
+  if (integrator && accuracy) out = ValueText(*integrator) + " " + ValueText(*accuracy);
+  for (const auto& [name, value] : overrides) {
+    if (integrator && accuracy &&
+        (name == "simulation/integrator" || name == "simulation/accuracy"))
+      continue;
     out += (out.empty() ? "" : ", ") + name + " " + ValueText(value);
+  }
   return out;
 }
 

@@ -74,9 +74,10 @@ struct PrecisionDesign {
   static constexpr int kDefaultNoiseTrials = 12;
 };
 
-// "RungeKuttaMerson 1e-4" for an integrator and accuracy, else "group/key
-// value" joined by ", "; "scene parameters" for no overrides. Numbers in their
-// shortest exact form, powers of ten as 1e-4.
+// "RungeKuttaMerson 1e-4" for an integrator and accuracy, then "group/key
+// value" for each other override, joined by ", " ("CVODE 1e-4,
+// simulation/velocity_time_scale 0.1"); "scene parameters" for no overrides.
+// Numbers in their shortest exact form, powers of ten as 1e-4.
 std::string SettingLabel(const std::vector<std::pair<std::string, nlohmann::json>>& overrides);
 
 struct ExperimentFile {

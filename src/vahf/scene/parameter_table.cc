@@ -88,6 +88,7 @@ std::vector<ParamSpec> MakeTable() {
       {"simulation", "integrator", "-", R::kChoice, "Simbody integrator, or CVODE (SUNDIALS BDF, without Simbody)", nullptr, nullptr, VAHF_TEXT(simulation.integrator), IntegratorNames()},
       {"simulation", "accuracy", "1", R::kPositive, "integrator relative accuracy", VAHF_REAL(simulation.accuracy)},
       {"simulation", "fixed_step", "s", R::kPositive, "step of the FixedStep integrator", VAHF_REAL(simulation.fixed_step)},
+      {"simulation", "velocity_time_scale", "s", R::kPositive, "CVODE: velocity tolerance = accuracy / this (m/s)", VAHF_REAL(simulation.velocity_time_scale)},
       {"simulation", "step_floor", "s", R::kPositive, "an accepted step shorter than this is a warning", VAHF_REAL(simulation.step_floor)},
   };
   return t;

@@ -90,18 +90,20 @@ struct Cvode {
   }
 };
 
-// The absolute tolerances, in the part's units: `accuracy` in m and m/s for
-// its origin's position and velocity, and for its orientation and angular
-// velocity `accuracy` over L, its bounding radius about the origin, so that
+// The absolute tolerances, in the part's units: `accuracy` m for its
+// origin's position and accuracy / time_scale m/s for its velocity
+// (simulation/velocity_time_scale), and for its orientation and angular
+// velocity the same over L, its bounding radius about the origin, so that
 // an error counts as the displacement or speed it causes at the part's
 // farthest point (a unit quaternion's components move by half the angle).
-void SetAbsoluteTolerances(const TrialModel& model, double accuracy, N_Vector atol) {
+void SetAbsoluteTolerances(const TrialModel& model, double accuracy, double time_scale,
+                           N_Vector atol) {
   const double length = model.bounding_radius > 0 ? model.bounding_radius : 1.0;
   Eigen::Map<BodyState> a = Of(atol);
   a.segment<3>(0).setConstant(accuracy);
   a.segment<4>(3).setConstant(accuracy / (2 * length));
-  a.segment<3>(7).setConstant(accuracy);
-  a.segment<3>(10).setConstant(accuracy / length);
+  a.segment<3>(7).setConstant(accuracy / time_scale);
+  a.segment<3>(10).setConstant(accuracy / (length * time_scale));
 }
 
 }  // namespace
@@ -135,7 +137,7 @@ double IntegrateWithCvode(TrialContext& c, double sample_interval,
     ok(CVodeSetUserData(cv.mem, &p), "user data");
     ok(CVodeSetErrHandlerFn(cv.mem, OnError, &p), "error handler");
     cv.atol = N_VNew_Serial(kBodyStateSize, cv.context);
-    SetAbsoluteTolerances(model, sim.accuracy, cv.atol);
+    SetAbsoluteTolerances(model, sim.accuracy, sim.velocity_time_scale, cv.atol);
     ok(CVodeSVtolerances(cv.mem, sim.accuracy, cv.atol), "tolerances");
     cv.matrix = SUNDenseMatrix(kBodyStateSize, kBodyStateSize, cv.context);
     cv.solver = SUNLinSol_Dense(cv.y, cv.matrix, cv.context);
