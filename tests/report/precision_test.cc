@@ -103,6 +103,30 @@ TEST(ComparePart, TheKsCriterionSeesALostSpread) {
   EXPECT_EQ(c.failures, "KS distance 0.500 (as a shift 400 ms) >= noise 303 ms");
 }
 
+// A bimodal time, as the peg's two branches at the chamfer: 90 cycles near
+// 0.100 s and 10 at 0.220 s. The setting moves every fast cycle 0.5 ms
+// later. The noise (sd about 36 ms over sqrt(12)) dwarfs the mean difference
+// (0.45 ms) and the shift that explains D (0.5 ms), but D = 0.9 over 100
+// cycles: the KS test tells the two apart (p below 1e-10), and only that
+// criterion refuses the setting.
+TEST(ComparePart, TheKsTestSeesAShiftedMode) {
+  std::vector<double> reference, setting;
+  for (int i = 0; i < 100; ++i) {
+    const bool slow = i % 10 == 9;
+    const double t = slow ? 0.220 : 0.100 + 1e-6 * i;
+    reference.push_back(t);
+    setting.push_back(slow ? t : t + 5e-4);
+  }
+  const PartComparison c = ComparePart(Completions(setting), Completions(reference), 12);
+  EXPECT_NEAR(*c.difference.mean, 4.5e-4, 1e-12);
+  EXPECT_LT(*c.ks_shift, *c.noise);
+  EXPECT_LT(*c.difference_bound, *c.noise);
+  EXPECT_GE(c.ks->distance, 0.8);
+  EXPECT_LT(c.ks->p_value, 1e-10);
+  EXPECT_THAT(c.failures, HasSubstr("tells the times from the reference's"));
+  EXPECT_EQ(c.failures.find("noise"), std::string::npos) << c.failures;
+}
+
 TEST(ComparePart, TheReferenceAgainstItselfHasNoError) {
   const PartComparison c =
       ComparePart(Completions(kReference), Completions(kReference), 12);

@@ -22,6 +22,9 @@ scene::Scene LoadExample(const std::string& name, double accuracy = 1e-4) {
       scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + name);
   s.params.simulation.integrator = "CVODE";
   s.params.simulation.accuracy = accuracy;
+  // The default velocity time scale, whatever the scene sets (the measured
+  // figures below are at it).
+  s.params.simulation.velocity_time_scale = scene::SimulationParams().velocity_time_scale;
   return s;
 }
 

@@ -428,15 +428,23 @@ TEST(Trial, PegSinkingIntoTheBoreIsHiddenByIt) {
   const TraceRow& first = r.trace.front();
   const TraceRow& last = r.trace.back();
   EXPECT_NEAR(first.factors.V, 1.0, 1e-12);  // above the bore, in plain view
-  // Measured (seed 1): V 1, 1, 0.93, 0.79, 0.58 at 20 ms intervals, eta 0.02
-  // to 0.46; the top face stays in view from the eye above, so V stays > 0.
+  // Measured (seed 1): V 1, 1, 0.87, 0.73, 0.63, 0.58 at 20 ms intervals,
+  // eta 0.02 to 0.46; the top face stays in view from the eye above, so V
+  // stays > 0.
   EXPECT_LT(last.factors.V, first.factors.V - 0.3) << "V at t = " << last.time;
   EXPECT_GT(last.factors.eta, first.factors.eta + 0.3);
+  // V falls while the peg sinks (by more than 0.1 mm between instants). At
+  // the bottom it rattles in the bore by micrometres and a degree's fraction,
+  // and V may move by a few thousandths either way.
+  int sinking = 0;
   for (std::size_t k = 1; k < r.trace.size(); ++k) {
+    EXPECT_GE(r.trace[k].factors.V, 0.0);
+    if (!(r.trace[k].position.z() < r.trace[k - 1].position.z() - 1e-4)) continue;
+    ++sinking;
     EXPECT_LE(r.trace[k].factors.V, r.trace[k - 1].factors.V)
         << "t = " << r.trace[k].time;
-    EXPECT_GE(r.trace[k].factors.V, 0.0);
   }
+  EXPECT_GE(sinking, 3);
 }
 
 TEST(Trial, RayGridAndMeshToleranceOutOfRangeNameTheSceneParameter) {

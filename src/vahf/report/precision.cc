@@ -83,6 +83,10 @@ std::string RuleFailures(const PartComparison& c) {
   if (c.noise && c.ks_shift && !(*c.ks_shift < *c.noise))
     why.push_back(fmt::format("KS distance {:.3f} (as a shift {:.3g} ms) >= noise {:.3g} ms",
                               c.ks->distance, *c.ks_shift * 1e3, *c.noise * 1e3));
+  if (c.ks && c.ks->p_value < kKsLevel)
+    why.push_back(fmt::format("KS distance {:.3f} tells the times from the reference's "
+                              "(p = {:.2g} < {:g})",
+                              c.ks->distance, c.ks->p_value, kKsLevel));
   if (!(c.outcome_share < kMaxOutcomeShare))
     why.push_back(fmt::format("outcome differs in {}/{} cycles ({:.0f} % >= {:.0f} %)",
                               c.outcome_differences, c.cycles, c.outcome_share * 100,

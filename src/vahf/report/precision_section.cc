@@ -24,8 +24,9 @@ const char* const kRule =
     "completion-time standard deviation / sqrt(noise_trials): the larger end (in absolute "
     "value) of the 95 % t interval of the paired mean difference of completion time is "
     "below the noise; the KS distance as a shift (the smallest shift of the reference's "
-    "completion times that puts them as far from themselves) is below the noise; and "
-    "the outcome (status, or not reaching the part) differs from the reference's in fewer "
+    "completion times that puts them as far from themselves) is below the noise; the "
+    "two-sample KS test does not tell the setting's times from the reference's at the 5 % "
+    "level; and the outcome (status, or not reaching the part) differs from the reference's in fewer "
     "than 5 % of the cycles. The recommended setting of a scene is the cheapest by median "
     "wall time per cycle among those meeting the rule for every part; the reference meets "
     "it by definition.";
