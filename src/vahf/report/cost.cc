@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <variant>
 #include <vector>
 
 #include "vahf/stats/distribution.h"
