@@ -58,8 +58,9 @@ Section PrecisionSection(const experiment::ExperimentRun& run);
 
 // The section of a run of any kind but "paper", with its numerical health
 // (health.h) in summary["health"] and at the end of its markdown, and, but for
-// precision (which measures its settings' cost itself), what its trials cost
-// (cost.h) as a measured table KIND_cost.csv, measured.json and markdown.
+// a kind that measures its cost itself (precision, per setting: its
+// `measured` is set), what its trials cost (cost.h) as a measured table
+// KIND_cost.csv, measured.json and markdown.
 Section SectionFor(const experiment::ExperimentRun& run);
 
 }  // namespace vahf::report

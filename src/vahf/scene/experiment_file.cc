@@ -185,12 +185,11 @@ std::string SettingLabel(
     if (name == "simulation/integrator") integrator = &value;
     if (name == "simulation/accuracy") accuracy = &value;
   }
-  std::string out;
-  if (integrator && accuracy) out = ValueText(*integrator) + " " + ValueText(*accuracy);
+  // Integrator and accuracy together lead as "CVODE 1e-4"; the rest follow.
+  const bool paired = integrator && accuracy;
+  std::string out = paired ? ValueText(*integrator) + " " + ValueText(*accuracy) : "";
   for (const auto& [name, value] : overrides) {
-    if (integrator && accuracy &&
-        (name == "simulation/integrator" || name == "simulation/accuracy"))
-      continue;
+    if (paired && (&value == integrator || &value == accuracy)) continue;
     out += (out.empty() ? "" : ", ") + name + " " + ValueText(value);
   }
   return out;
