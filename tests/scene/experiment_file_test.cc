@@ -1,6 +1,7 @@
 // Tests of the experiment files' kind-specific keys (LoadExperiment): the
 // shipped experiments/*.json load with their kinds, operators, conditions,
-// instants, fatigue design and listed experiments; the operators of
+// instants, fatigue design, listed experiments and calibration design
+// (parameters, targets, loss, relative_step); the operators of
 // assembly_time.json are GB/T 10000-1988's (data/anthropometry/gb10000_1988.csv);
 // and every malformed variant throws vahf::InputError naming the file that
 // holds the fault, the exact JSON pointer, the value and the rule broken.
@@ -126,6 +127,26 @@ json Precision() {
           {"noise_trials", 10}};
 }
 
+// A calibration of kappa to the synthetic lab's times, on the steel block
+// (docs/calibration.md), every optional key set away from its default.
+json FitParam(const std::string& name, double start, double lower, double upper) {
+  return {{"name", name}, {"start", start}, {"lower", lower}, {"upper", upper}};
+}
+
+json Calibrate() {
+  json e = Experiment("calibrate");
+  e["scene"] = SourcePath("experiments/scenes/steel_block_move.json");
+  e["lab"] = SourcePath("data/synthetic_block/dataset.json");
+  e["parameters"] = {FitParam("guidance/kappa", 400, 50, 2000),
+                     FitParam("guidance/hand_mass", 1.0, 0.5, 2.0)};
+  e["targets"] = {{{"quantity", "assembly_time"}, {"part", "block"}, {"by", "operator"}},
+                  {{"quantity", "success_rate"}, {"part", "all"}}};
+  e["loss"] = {{"kind", "cauchy"}, {"scale", 2}};
+  e["relative_step"] = 0.1;
+  e["max_iterations"] = 12;
+  return e;
+}
+
 // Writes `doc` to DIR/experiment.json and expects LoadExperiment to throw an
 // InputError naming that file at `where`, whose rule contains `rule` and,
 // unless `value` is empty, whose value contains `value` (ignoring case).
@@ -157,7 +178,9 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       {"paper.json", "paper"},
       {"precision.json", "precision"},
       {"precision_peg.json", "precision"},
-      {"precision_cylinder.json", "precision"}};
+      {"precision_cylinder.json", "precision"},
+      {"calibrate_synthetic.json", "calibrate"},
+      {"compare_synthetic.json", "compare"}};
   std::set<std::string> found;
   for (const auto& entry :
        std::filesystem::directory_iterator(SourcePath("experiments"))) {
@@ -170,6 +193,10 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
     EXPECT_EQ(e.name, entry.path().stem().string()) << name;
     EXPECT_EQ(e.file, entry.path().string());
     EXPECT_FALSE(e.description.empty()) << name;
+    if (e.kind == "calibrate" || e.kind == "compare") {  // their own seeds and scene
+      EXPECT_EQ(e.scene.name, "steel_block_move") << name;
+      continue;
+    }
     EXPECT_EQ(e.seed, 1u) << name;
     if (e.kind == "paper") {
       EXPECT_TRUE(e.scene_path.empty()) << name;
@@ -954,6 +981,256 @@ TEST(PrecisionErrorsTest, Scenes) {
 }
 
 // ---------------------------------------------------------------------------
+// Calibrations (calibrate).
+
+TEST(CalibrateTest, ParametersTargetsLossAndStepsLoad) {
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Calibrate()));
+  EXPECT_EQ(e.kind, "calibrate");
+  EXPECT_EQ(e.scene.name, "steel_block_move");
+  const CalibrationDesign& d = e.calibration;
+  EXPECT_TRUE(std::filesystem::equivalent(d.lab_path,
+                                          SourcePath("data/synthetic_block/dataset.json")))
+      << d.lab_path;
+  ASSERT_EQ(d.parameters.size(), 2u);
+  EXPECT_EQ(d.parameters[0].name, "guidance/kappa");
+  EXPECT_DOUBLE_EQ(d.parameters[0].start, 400);
+  EXPECT_DOUBLE_EQ(d.parameters[0].lower, 50);
+  EXPECT_DOUBLE_EQ(d.parameters[0].upper, 2000);
+  EXPECT_EQ(d.parameters[0].pointer, "/parameters/0");
+  EXPECT_EQ(d.parameters[1].name, "guidance/hand_mass");
+  EXPECT_DOUBLE_EQ(d.parameters[1].start, 1.0);
+  EXPECT_DOUBLE_EQ(d.parameters[1].lower, 0.5);
+  EXPECT_DOUBLE_EQ(d.parameters[1].upper, 2.0);
+  EXPECT_EQ(d.parameters[1].pointer, "/parameters/1");
+  ASSERT_EQ(d.targets.size(), 2u);
+  EXPECT_EQ(d.targets[0].quantity, "assembly_time");
+  EXPECT_EQ(d.targets[0].part, "block");
+  EXPECT_TRUE(d.targets[0].by_operator);
+  EXPECT_EQ(d.targets[0].pointer, "/targets/0");
+  EXPECT_EQ(d.targets[1].quantity, "success_rate");
+  EXPECT_EQ(d.targets[1].part, "all");
+  EXPECT_FALSE(d.targets[1].by_operator);  // "by" defaults to "all"
+  EXPECT_EQ(d.targets[1].pointer, "/targets/1");
+  EXPECT_EQ(d.loss, "cauchy");
+  EXPECT_DOUBLE_EQ(d.loss_scale, 2.0);
+  EXPECT_DOUBLE_EQ(d.relative_step, 0.1);
+  EXPECT_EQ(d.max_iterations, 12);
+  EXPECT_EQ(e.seed, 5u);
+  EXPECT_EQ(e.trials, 2);
+}
+
+TEST(CalibrateTest, Defaults) {
+  json doc = Calibrate();
+  for (const char* key : {"loss", "relative_step", "max_iterations"}) doc.erase(key);
+  doc["targets"][0]["by"] = "all";
+  ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
+  const CalibrationDesign defaults;
+  EXPECT_EQ(e.calibration.loss, "huber");
+  EXPECT_DOUBLE_EQ(e.calibration.loss_scale, 3.0);
+  EXPECT_DOUBLE_EQ(e.calibration.relative_step, 0.05);
+  EXPECT_EQ(e.calibration.max_iterations, 30);
+  EXPECT_EQ(e.calibration.loss, defaults.loss);
+  EXPECT_FALSE(e.calibration.targets[0].by_operator);
+  // A loss without a scale keeps the default scale.
+  doc["loss"] = {{"kind", "none"}};
+  e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
+  EXPECT_EQ(e.calibration.loss, "none");
+  EXPECT_DOUBLE_EQ(e.calibration.loss_scale, 3.0);
+}
+
+TEST(CalibrateTest, ShippedExperimentResolvesItsLabRelativeToItself) {
+  const ExperimentFile e = LoadExperiment(SourcePath("experiments/calibrate_synthetic.json"));
+  EXPECT_EQ(e.kind, "calibrate");
+  EXPECT_TRUE(std::filesystem::equivalent(e.calibration.lab_path,
+                                          SourcePath("data/synthetic_block/dataset.json")))
+      << e.calibration.lab_path;
+  EXPECT_TRUE(std::filesystem::equivalent(
+      e.scene_path, SourcePath("experiments/scenes/steel_block_move.json")));
+  ASSERT_EQ(e.calibration.parameters.size(), 1u);
+  EXPECT_EQ(e.calibration.parameters[0].name, "guidance/kappa");
+  ASSERT_EQ(e.calibration.targets.size(), 1u);
+  EXPECT_TRUE(e.calibration.targets[0].by_operator);
+  EXPECT_EQ(e.calibration.loss, "huber");
+  EXPECT_EQ(e.trials, 20);
+}
+
+TEST(CalibrateErrorsTest, UnknownParameterName) {
+  json doc = Calibrate();
+  doc["parameters"][1]["name"] = "guidance/kapa";
+  ExpectError(doc, "/parameters/1/name", "must be one of: ", "\"guidance/kapa\"");
+}
+
+TEST(CalibrateErrorsTest, ChoiceOrIntegerParameter) {
+  for (const char* name : {"simulation/integrator", "visibility/grid", "visibility/mode"}) {
+    SCOPED_TRACE(name);
+    json doc = Calibrate();
+    doc["parameters"][0] = FitParam(name, 16, 8, 32);
+    ExpectError(doc, "/parameters/0/name", "a calibration fits real-valued parameters", name);
+  }
+}
+
+TEST(CalibrateErrorsTest, FittedTwice) {
+  json doc = Calibrate();
+  doc["parameters"][1] = FitParam("guidance/kappa", 300, 100, 500);
+  ExpectError(doc, "/parameters/1/name", "fitted once only (also at /parameters/0)");
+}
+
+TEST(CalibrateErrorsTest, LowerNotBelowUpper) {
+  json doc = Calibrate();
+  doc["parameters"][0] = FitParam("guidance/kappa", 400, 400, 400);
+  ExpectError(doc, "/parameters/0/upper", "must exceed lower = 400", "400");
+  doc["parameters"][0] = FitParam("guidance/kappa", 400, 500, 300);
+  ExpectError(doc, "/parameters/0/upper", "must exceed lower = 500", "300");
+}
+
+TEST(CalibrateErrorsTest, StartOutsideTheBounds) {
+  json doc = Calibrate();
+  doc["parameters"][0] = FitParam("guidance/kappa", 40, 50, 2000);
+  ExpectError(doc, "/parameters/0/start", "must lie within [lower, upper] = [50, 2000]", "40");
+  doc["parameters"][0] = FitParam("guidance/kappa", 2001, 50, 2000);
+  ExpectError(doc, "/parameters/0/start", "must lie within [lower, upper] = [50, 2000]",
+              "2001");
+}
+
+TEST(CalibrateErrorsTest, MissingOrMistypedParameterFields) {
+  for (const char* key : {"name", "start", "lower", "upper"}) {
+    SCOPED_TRACE(key);
+    json doc = Calibrate();
+    doc["parameters"][0].erase(key);
+    ExpectError(doc, std::string("/parameters/0/") + key,
+                std::string("required field '") + key + "' is missing", "(missing)");
+  }
+  json doc = Calibrate();
+  doc["parameters"][0]["lower"] = "50";
+  ExpectError(doc, "/parameters/0/lower", "must be a number, not a string");
+  doc = Calibrate();
+  doc["parameters"][0]["step"] = 0.1;
+  ExpectError(doc, "/parameters/0/step", "unknown key 'step'");
+  doc = Calibrate();
+  doc["parameters"] = json::array();
+  ExpectError(doc, "/parameters", "at least 1 element");
+  doc.erase("parameters");
+  ExpectError(doc, "/parameters", "required field 'parameters' is missing");
+}
+
+// Derivatives are taken a relative_step beyond each bound: there, too, the
+// value must obey the parameter's rule.
+TEST(CalibrateErrorsTest, WidenedBoundBreaksTheRule) {
+  json doc = Calibrate();
+  doc.erase("relative_step");  // 0.05: 1.0 * 1.05 lies beyond [0, 1]
+  doc["parameters"][1] = FitParam("reach/value_at_d2", 0.5, 0.2, 1.0);
+  ExpectError(doc, "/parameters/1/upper",
+              "with relative_step 0.05, derivatives are taken at 1.05, which breaks "
+              "reach/value_at_d2's rule: must lie in [0, 1]",
+              "1");
+  // 0.96 * 1.05 = 1.008 breaks it too; with a step of 0.04, 0.9984 does not.
+  doc["parameters"][1] = FitParam("reach/value_at_d2", 0.5, 0.2, 0.96);
+  ExpectError(doc, "/parameters/1/upper", "breaks reach/value_at_d2's rule");
+  doc["relative_step"] = 0.04;
+  EXPECT_DOUBLE_EQ(LoadExperiment(WriteJson(TestDir() / "e.json", doc))
+                       .calibration.parameters[1]
+                       .upper,
+                   0.96);
+  // A positive parameter's lower bound of 0 stays 0 when widened.
+  doc = Calibrate();
+  doc["parameters"][0] = FitParam("guidance/kappa", 400, 0, 2000);
+  ExpectError(doc, "/parameters/0/lower", "breaks guidance/kappa's rule: must be > 0", "0");
+  // An angle's upper bound of 180 degrees.
+  doc = Calibrate();
+  doc["parameters"][1] = FitParam("sight/plateau_to_deg", 60, 45, 180);
+  ExpectError(doc, "/parameters/1/upper", "breaks sight/plateau_to_deg's rule");
+}
+
+TEST(CalibrateErrorsTest, UnknownQuantity) {
+  json doc = Calibrate();
+  doc["targets"][1]["quantity"] = "assembly_tme";
+  ExpectError(doc, "/targets/1/quantity", "must be one of: assembly_time, success_rate",
+              "\"assembly_tme\"");
+}
+
+TEST(CalibrateErrorsTest, PartNotInTheScenesSequence) {
+  json doc = Calibrate();
+  doc["targets"][0]["part"] = "piston_rod";
+  ExpectError(doc, "/targets/0/part", "must be one of: all, block", "\"piston_rod\"");
+}
+
+TEST(CalibrateErrorsTest, TargetsShapeAndBy) {
+  json doc = Calibrate();
+  doc["targets"][0]["by"] = "sex";
+  ExpectError(doc, "/targets/0/by", "must be one of: operator, all", "\"sex\"");
+  doc = Calibrate();
+  doc["targets"][0]["parts"] = "block";
+  ExpectError(doc, "/targets/0/parts", "did you mean 'part'?");
+  doc = Calibrate();
+  doc["targets"][1].erase("part");
+  ExpectError(doc, "/targets/1/part", "required field 'part' is missing");
+  doc = Calibrate();
+  doc["targets"] = json::array();
+  ExpectError(doc, "/targets", "at least 1 element");
+}
+
+TEST(CalibrateErrorsTest, LossStepAndIterationsOutOfRange) {
+  json doc = Calibrate();
+  doc["loss"]["kind"] = "l2";
+  ExpectError(doc, "/loss/kind", "must be one of: huber, cauchy, none", "\"l2\"");
+  doc = Calibrate();
+  doc["loss"]["scale"] = 0;
+  ExpectError(doc, "/loss/scale", "must lie in [0.1, 100]", "0");
+  doc = Calibrate();
+  doc["loss"] = {{"scale", 3}};
+  ExpectError(doc, "/loss/kind", "required field 'kind' is missing");
+  doc = Calibrate();
+  doc["relative_step"] = 0.6;
+  ExpectError(doc, "/relative_step", "must lie in [0.0001, 0.5]", "0.6");
+  doc = Calibrate();
+  doc["max_iterations"] = 0;
+  ExpectError(doc, "/max_iterations", "must lie in [1, 1000]", "0");
+  doc["max_iterations"] = 2.5;
+  ExpectError(doc, "/max_iterations", "must be an integer", "2.5");
+}
+
+TEST(CalibrateErrorsTest, LabFileMissing) {
+  json doc = Calibrate();
+  doc["lab"] = "no_such_lab/dataset.json";
+  ExpectError(doc, "/lab", "no lab dataset file at", "no_such_lab/dataset.json");
+  doc.erase("lab");
+  ExpectError(doc, "/lab", "required field 'lab' is missing", "(missing)");
+}
+
+TEST(CalibrateErrorsTest, ErrorsNameTheExperimentFileNotTheScene) {
+  json doc = Calibrate();
+  doc["parameters"][0]["name"] = "visibility/grid";
+  const std::string path = WriteJson(TestDir() / "experiment.json", doc);
+  try {
+    LoadExperiment(path);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": /parameters/0/name = \"visibility/grid\": "
+                                            "a calibration fits real-valued parameters");
+  }
+}
+
+TEST(FormatOfTest, NamesEveryVahfFormat) {
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"experiments/scenes/steel_block_move.json", "scene"},
+      {"experiments/calibrate_synthetic.json", "experiment"},
+      {"data/synthetic_block/dataset.json", "lab"},
+      {"data/synthetic_block/generator.json", "synthetic"}};
+  for (const auto& [file, format] : files) EXPECT_EQ(FileFormatOf(SourcePath(file)), format);
+  EXPECT_EQ(FormatOf({{"format", "vahf-overrides/1"}, {"parameters", json::object()}}, "o.json"),
+            "overrides");
+  try {
+    FormatOf({{"format", "vahf-override/1"}}, "o.json");
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "o.json");
+    EXPECT_EQ(e.where(), "/format");
+    EXPECT_THAT(e.rule(), HasSubstr("\"vahf-overrides/1\""));
+    EXPECT_THAT(e.rule(), HasSubstr("\"vahf-synthetic/1\""));
+  }
+}
+
+// ---------------------------------------------------------------------------
 // A key that only another kind reads is an error naming the key and the kind.
 
 struct WrongKindCase {
@@ -976,9 +1253,17 @@ TEST(WrongKindTest, EachKeyWithEachOtherKind) {
       {"reference", {{"simulation/accuracy", 1e-8}}, "precision"},
       {"settings", json::array({{{"simulation/accuracy", 1e-3}}}), "precision"},
       {"noise_trials", 12, "precision"},
+      {"parameters", json::array({FitParam("guidance/kappa", 400, 50, 2000)}),
+       "calibrate"},
+      {"targets", json::array({{{"quantity", "assembly_time"}, {"part", "all"}}}),
+       "calibrate"},
+      {"loss", {{"kind", "huber"}}, "calibrate"},
+      {"relative_step", 0.05, "calibrate"},
+      {"max_iterations", 30, "calibrate"},
   };
-  const std::vector<std::string> kinds = {"table1", "assembly_time", "human_factors_groups",
-                                          "fatigue", "paper", "precision"};
+  const std::vector<std::string> kinds = {"table1",   "assembly_time", "human_factors_groups",
+                                          "fatigue",  "paper",         "precision",
+                                          "calibrate"};
   for (const WrongKindCase& c : cases) {
     for (const std::string& kind : kinds) {
       if (kind == c.reader) continue;
@@ -988,6 +1273,8 @@ TEST(WrongKindTest, EachKeyWithEachOtherKind) {
         doc = Paper({SourcePath("experiments/table1.json")});
       } else if (kind == "precision") {
         doc = Precision();
+      } else if (kind == "calibrate") {
+        doc = Calibrate();
       } else if (kind == "human_factors_groups") {
         doc = HumanFactorsGroups();
       } else {
@@ -998,6 +1285,21 @@ TEST(WrongKindTest, EachKeyWithEachOtherKind) {
                   std::string("only an experiment of kind \"") + c.reader +
                       "\" reads \"" + c.key + "\"");
     }
+  }
+}
+
+// "lab" is read by calibrate (and by compare, when that kind exists).
+TEST(WrongKindTest, LabInAnotherKindsFile) {
+  for (const std::string kind :
+       {"table1", "assembly_time", "human_factors_groups", "fatigue", "paper", "precision"}) {
+    SCOPED_TRACE(kind);
+    json doc = kind == "paper"                  ? Paper({SourcePath("experiments/table1.json")})
+               : kind == "precision"            ? Precision()
+               : kind == "human_factors_groups" ? HumanFactorsGroups()
+                                                : Experiment(kind);
+    doc["lab"] = SourcePath("data/synthetic_block/dataset.json");
+    ExpectError(doc, "/lab", "only an experiment of kind \"calibrate\"");
+    ExpectError(doc, "/lab", "reads \"lab\"");
   }
 }
 

@@ -2,10 +2,19 @@
 # Tests of the vahf command's exit status and output: `check` on a valid scene,
 # a malformed scene (one-line error naming the file, JSON pointer and rule,
 # exit 2), a missing file and invalid JSON (exit 2), the precision experiment
-# (its settings listed) and a bad precision setting (exit 2); `reference`;
+# (its settings listed) and a bad precision setting (exit 2); a lab dataset
+# (valid: exit 0; a bad value or a missing file: one line naming the file and
+# line or pointer, exit 2); the calibration files (docs/calibration.md): the
+# calibrate experiment, the synthetic generator and its dataset, a parameter
+# override file (valid: exit 0; malformed: one line naming it, exit 2);
+# `reference`;
 # `--help`; and bad options (exit 2); `run`: the same results digest on 1 and
 # 2 threads, a bad experiment (exit 2), an --out that is not a vahf output
-# (refused, exit 2, untouched) and SIGINT (exit 130, no output directory left).
+# (refused, exit 2, untouched) and SIGINT (exit 130, no output directory left);
+# `synthesize` (the shipped synthetic dataset's bytes, on 1 and 2 threads);
+# `run` on the calibrate experiment (calibrated.json, an override file; the
+# same results digest on 2 threads) and `run --overrides` with its output, or
+# an override that breaks an operator's reach rule (exit 2, no output).
 #
 # Usage: cli_test.sh VAHF_EXECUTABLE REPO_ROOT
 set -uo pipefail
@@ -183,6 +192,100 @@ expect_lines "check precision with an unknown parameter" "$err" 1
 expect_in "check precision with an unknown parameter" "$err" \
   "$bad_precision: /settings/0/simulation~1acuracy = 0.0001: unknown key 'simulation/acuracy' (did you mean 'simulation/accuracy'?)"
 
+# --- check: a lab dataset (docs/lab-data.md) is valid and described.
+lab=$tmp/lab
+mkdir -p "$lab"
+cat >"$lab/dataset.json" <<'EOF'
+{"format": "vahf-lab/1", "name": "cli_lab", "description": "Two trials of one operator.",
+ "provenance": {"source": "synthetic: tests/tools/cli_test.sh"},
+ "trials": {"file": "trials.csv", "units": {"height": "m", "arm_length": "m", "time": "s"}}}
+EOF
+cat >"$lab/trials.csv" <<'EOF'
+operator,sex,height,arm_length,condition,part,repetition,time,success
+male 1,male,1.75,0.74,good,all,1,16.2,1
+male 1,male,1.75,0.74,good,all,2,,0
+EOF
+run check "$lab/dataset.json"
+expect_status "check lab dataset" 0
+for text in "lab dataset 'cli_lab'" "provenance: synthetic: tests/tools/cli_test.sh" \
+    "trials (trials.csv): 2 trials, 1 operator, 1 part, 1 condition; 1 successful" \
+    "$lab/dataset.json: valid lab dataset"; do
+  expect_in "check lab dataset" "$out" "$text"
+done
+expect_lines "check lab dataset" "$err" 0
+
+# --- check: a lab dataset with a negative time: one line, the file, line, column, value, rule.
+sed -i 's/,,0$/,-3,0/' "$lab/trials.csv"
+run check "$lab/dataset.json"
+expect_status "check lab dataset with a negative time" 2
+expect_lines "check lab dataset with a negative time" "$err" 1
+expect_in "check lab dataset with a negative time" "$err" \
+  "vahf: error: $lab/trials.csv: line 3, column time = -3: an assembly time is > 0"
+if [[ -s $out ]]; then
+  fail "check lab dataset with a negative time: prints nothing on stdout"
+else
+  pass "check lab dataset with a negative time: prints nothing on stdout"
+fi
+
+# --- check: a lab dataset naming a file that is not there: the manifest's pointer.
+rm "$lab/trials.csv"
+run check "$lab/dataset.json"
+expect_status "check lab dataset with a missing file" 2
+expect_lines "check lab dataset with a missing file" "$err" 1
+expect_in "check lab dataset with a missing file" "$err" \
+  "$lab/dataset.json: /trials/file = \"trials.csv\": no such file: $lab/trials.csv"
+
+# --- check: the calibration's files (docs/calibration.md) are valid.
+calibrate=$root/experiments/calibrate_synthetic.json
+generator=$root/data/synthetic_block/generator.json
+synthetic_dataset=$root/data/synthetic_block/dataset.json
+run check "$calibrate"
+expect_status "check calibrate experiment" 0
+for text in "kind calibrate" "fits guidance/kappa from 400 within [50, 2000]" "target " \
+    "$calibrate: valid experiment"; do
+  expect_in "check calibrate experiment" "$out" "$text"
+done
+expect_lines "check calibrate experiment" "$err" 0
+run check "$generator"
+expect_status "check synthetic generator" 0
+for text in "synthetic lab 'synthetic_block'" "6 operator(s) x 10 repetitions, seed 20261123" \
+    "guidance/kappa = 250 (stated)" "$generator: valid synthetic lab generator"; do
+  expect_in "check synthetic generator" "$out" "$text"
+done
+run check "$synthetic_dataset"
+expect_status "check synthetic dataset" 0
+expect_in "check synthetic dataset" "$out" "$synthetic_dataset: valid lab dataset"
+
+# --- check: a parameter override file is valid and listed.
+overrides=$tmp/overrides.json
+cat >"$overrides" <<'EOF'
+{"format": "vahf-overrides/1", "source": "cli_test",
+ "parameters": {"guidance/kappa": 300, "simulation/accuracy": 0.0002}}
+EOF
+run check "$overrides"
+expect_status "check override file" 0
+for text in "parameter overrides ($overrides): cli_test" "guidance/kappa = 300" \
+    "simulation/accuracy = 0.0002" "$overrides: valid parameter override file"; do
+  expect_in "check override file" "$out" "$text"
+done
+expect_lines "check override file" "$err" 0
+
+# --- check: an override file with a value that breaks its rule: one line, the file.
+bad_overrides=$tmp/bad_overrides.json
+cat >"$bad_overrides" <<'EOF'
+{"format": "vahf-overrides/1", "parameters": {"guidance/kappa": -1}}
+EOF
+run check "$bad_overrides"
+expect_status "check malformed override file" 2
+expect_lines "check malformed override file" "$err" 1
+expect_in "check malformed override file" "$err" \
+  "vahf: error: $bad_overrides: /parameters/guidance~1kappa = -1: must be > 0"
+if [[ -s $out ]]; then
+  fail "check malformed override file: prints nothing on stdout"
+else
+  pass "check malformed override file: prints nothing on stdout"
+fi
+
 # --- check without a file is a usage error.
 run check
 expect_status "check without FILE" 2
@@ -323,6 +426,86 @@ if [[ "$(listing)" == "$before" && ! -e "$mine.partial" ]]; then
   pass "run --out a directory that is not a vahf output: left untouched"
 else
   fail "run --out a directory that is not a vahf output: it was changed"
+fi
+
+# --- synthesize: the shipped synthetic dataset, byte for byte, on 1 and 2 threads.
+run synthesize "$generator" --threads 1 --out "$tmp/synth1"
+expect_status "synthesize --threads 1" 0
+if cmp -s "$tmp/synth1/trials.csv" "$root/data/synthetic_block/trials.csv"; then
+  pass "synthesize: trials.csv identical to data/synthetic_block/trials.csv"
+else
+  fail "synthesize: trials.csv differs from data/synthetic_block/trials.csv"
+fi
+run check "$tmp/synth1/dataset.json"
+expect_status "check synthesized dataset" 0
+expect_in "check synthesized dataset" "$out" "valid lab dataset"
+run synthesize "$generator" --threads 2 --out "$tmp/synth2"
+expect_status "synthesize --threads 2" 0
+if cmp -s "$tmp/synth1/trials.csv" "$tmp/synth2/trials.csv" &&
+   cmp -s "$tmp/synth1/dataset.json" "$tmp/synth2/dataset.json"; then
+  pass "synthesize: the same bytes on 1 and 2 threads"
+else
+  fail "synthesize: 1 and 2 threads write different bytes"
+fi
+
+# --- run: the calibration writes calibrated.json, an override file; the same
+# results digest on 2 threads.
+run run "$calibrate" --trials 4 --out "$tmp/cal1"
+expect_status "run calibrate" 0
+expect_in "run calibrate" "$out" "guidance/kappa = "
+digest_cal1=$(grep '^results digest ' "$out")
+calibrated=$tmp/cal1/calibrated.json
+run check "$calibrated"
+expect_status "check calibrated.json" 0
+expect_in "check calibrated.json" "$out" "$calibrated: valid parameter override file"
+expect_in "check calibrated.json" "$out" "guidance/kappa = "
+run run "$calibrate" --trials 4 --threads 2 --out "$tmp/cal2"
+expect_status "run calibrate --threads 2" 0
+digest_cal2=$(grep '^results digest ' "$out")
+if [[ ${#digest_cal1} -eq 79 && "$digest_cal1" == "$digest_cal2" ]]; then
+  pass "run calibrate: the same results digest on 1 and 2 threads"
+else
+  fail "run calibrate: '$digest_cal1' on 1 thread, '$digest_cal2' on 2"
+fi
+
+# --- run --overrides: Table 1 with the calibrated kappa; the manifest records
+# the value and lists the file among its inputs.
+run run "$table1" --trials 1 --overrides "$calibrated" --out "$tmp/t1_calibrated"
+expect_status "run table1 --overrides calibrated.json" 0
+if python3 - "$calibrated" "$tmp/t1_calibrated/manifest.json" <<'EOF'
+import json, os, sys
+calibrated = json.load(open(sys.argv[1]))
+manifest = json.load(open(sys.argv[2]))
+kappa = calibrated["parameters"]["guidance/kappa"]
+got = manifest["parameters"]["guidance"]["kappa"]
+assert got == kappa, (got, kappa)
+paths = [os.path.realpath(i["path"]) for i in manifest["inputs"]]
+assert os.path.realpath(sys.argv[1]) in paths, paths
+EOF
+then
+  pass "run table1 --overrides: the manifest has the calibrated kappa and lists calibrated.json"
+else
+  fail "run table1 --overrides: the manifest lacks the calibrated kappa or calibrated.json"
+fi
+
+# --- run --overrides: a value that breaks the reach rule for one of the
+# experiment's operators (D1 = 0.9 * 0.733 m > D2 = 0.39 * 1.678 m for the P50
+# man of assembly_time.json): one line naming the override file, exit 2, no output.
+reach_overrides=$tmp/reach_overrides.json
+cat >"$reach_overrides" <<'EOF'
+{"format": "vahf-overrides/1", "parameters": {"reach/d1_arm_fraction": 0.9}}
+EOF
+run run "$root/experiments/assembly_time.json" --trials 1 --overrides "$reach_overrides" \
+  --out "$tmp/reach_out"
+expect_status "run --overrides breaking an operator's reach rule" 2
+expect_lines "run --overrides breaking an operator's reach rule" "$err" 1
+expect_in "run --overrides breaking an operator's reach rule" "$err" \
+  "vahf: error: $reach_overrides: /parameters"
+expect_in "run --overrides breaking an operator's reach rule" "$err" "operator 'male P50'"
+if [[ ! -e "$tmp/reach_out" && ! -e "$tmp/reach_out.partial" ]]; then
+  pass "run --overrides breaking an operator's reach rule: no output directory"
+else
+  fail "run --overrides breaking an operator's reach rule: an output directory was written"
 fi
 
 # --- run: SIGINT stops the run with exit status 130 and writes nothing.

@@ -1,21 +1,30 @@
-// The vahf command: validates scene and experiment files, checks the paper's
-// reference values, and (as the harness grows) runs trials and experiments.
+// The vahf command: validates scene, experiment and lab dataset files, checks
+// the paper's reference values, and (as the harness grows) runs trials and
+// experiments.
 // Exit status: 0 success, 2 bad input (a file, a value or an option), 1 other.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <string>
 
+#include "vahf/calibrate/calibration.h"
+#include "vahf/calibrate/synthetic_lab.h"
+#include "vahf/compare/comparison.h"
 #include "vahf/core/atomic_file.h"
 #include "vahf/core/error.h"
+#include "vahf/data/lab_dataset.h"
 #include "vahf/experiment/design.h"
 #include "vahf/experiment/interrupt.h"
 #include "vahf/experiment/table1_reference.h"
+#include "vahf/report/calibration_section.h"
+#include "vahf/report/compare_section.h"
 #include "vahf/report/run_output.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/json_reader.h"
+#include "vahf/scene/overrides.h"
 #include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/sim/trace_csv.h"
@@ -40,10 +49,46 @@ void CheckModels(const vahf::scene::Scene& scene) {
   }
 }
 
+// A calibration's lab dataset and the targets it must supply, as a run
+// would read them before its first trial.
+void CheckCalibration(const vahf::scene::ExperimentFile& e) {
+  const vahf::data::LabDataset lab = vahf::data::LoadLabDataset(e.calibration.lab_path);
+  std::fputs(vahf::data::DescribeLabDataset(lab).c_str(), stdout);
+  vahf::calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
+  for (const vahf::scene::FitParameter& p : e.calibration.parameters)
+    std::printf("  fits %s from %g within [%g, %g]\n", p.name.c_str(), p.start, p.lower,
+                p.upper);
+  for (const auto& t : vahf::calibrate::LabTargets(lab, e.calibration.targets, e.file))
+    std::printf("  target %s: lab %g (se %g, n %d)\n", t.label.c_str(), t.lab.value,
+                std::sqrt(t.lab.variance), t.lab.n);
+  std::fputs(vahf::scene::DescribeScene(e.scene).c_str(), stdout);
+  CheckModels(e.scene);
+}
+
 int Check(const std::string& path) {
   const nlohmann::json document = vahf::scene::ReadJsonFile(path);  // read once
   const std::string format = vahf::scene::FormatOf(document, path);
-  if (format == "scene") {
+  if (format == "lab") {
+    std::fputs(vahf::data::DescribeLabDataset(vahf::data::ParseLabDataset(document, path))
+                   .c_str(),
+               stdout);
+  } else if (format == "overrides") {
+    const vahf::scene::ParameterOverrides o = vahf::scene::LoadOverrides(path);
+    std::printf("parameter overrides (%s)%s%s\n", path.c_str(), o.source.empty() ? "" : ": ",
+                o.source.c_str());
+    for (const auto& [name, value] : o.values)
+      std::printf("  %s = %s\n", name.c_str(), value.dump().c_str());
+  } else if (format == "synthetic") {
+    const vahf::calibrate::SyntheticLabSpec spec = vahf::calibrate::LoadSyntheticLabSpec(path);
+    std::printf("synthetic lab '%s': scene %s, %zu operator(s) x %d repetitions, seed %llu, "
+                "reading error sd %g s, resolution %g s\n",
+                spec.name.c_str(), spec.scene_path.c_str(), spec.operators.size(),
+                spec.repetitions, static_cast<unsigned long long>(spec.seed), spec.time_sd,
+                spec.time_resolution);
+    for (const auto& [name, value] : spec.truth)
+      std::printf("  %s = %g (stated)\n", name.c_str(), value);
+    CheckModels(spec.scene);
+  } else if (format == "scene") {
     const vahf::scene::Scene scene = vahf::scene::ParseScene(document, path);
     std::fputs(vahf::scene::DescribeScene(scene).c_str(), stdout);
     CheckModels(scene);
@@ -56,6 +101,22 @@ int Check(const std::string& path) {
                     : (", " + std::to_string(e.trials) + " cycles per condition").c_str());
     if (e.kind == "precision") {
       std::fputs(vahf::scene::DescribePrecision(e).c_str(), stdout);
+    } else if (e.kind == "calibrate") {
+      CheckCalibration(e);
+    } else if (e.kind == "compare") {
+      const vahf::data::LabDataset lab = vahf::data::LoadLabDataset(e.comparison.lab_path);
+      std::fputs(vahf::data::DescribeLabDataset(lab).c_str(), stdout);
+      vahf::calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
+      for (const vahf::scene::FitTarget& q : e.comparison.quantities) {
+        // The lab must hold trials of each quantity's part, as a run checks.
+        if (vahf::calibrate::LabSamples(lab, q, "").attempts == 0)
+          throw vahf::InputError(e.file, q.pointer, q.part,
+                                 "the lab dataset " + lab.file + " has no trials of this part");
+        std::printf("  compares %s of %s%s within +-%g\n", q.quantity.c_str(), q.part.c_str(),
+                    q.by_operator ? " per operator" : "", q.margin);
+      }
+      std::fputs(vahf::scene::DescribeScene(e.scene).c_str(), stdout);
+      CheckModels(e.scene);
     } else if (e.kind == "paper") {
       for (const vahf::scene::ExperimentFile& x : e.experiments)
         std::printf("  %s (%s): kind %s, %d cycles per condition, scene %s\n",
@@ -66,7 +127,11 @@ int Check(const std::string& path) {
       CheckModels(e.scene);
     }
   }
-  std::printf("%s: valid %s\n", path.c_str(), format.c_str());
+  std::printf("%s: valid %s\n", path.c_str(),
+              format == "lab"         ? "lab dataset"
+              : format == "overrides" ? "parameter override file"
+              : format == "synthetic" ? "synthetic lab generator"
+                                      : format.c_str());
   return 0;
 }
 
@@ -121,6 +186,7 @@ int Trial(const TrialArgs& a) {
 
 struct RunArgs {
   std::string experiment;
+  std::string overrides;
   std::uint64_t seed = 0;
   bool seed_given = false;
   int trials = 0;
@@ -128,8 +194,107 @@ struct RunArgs {
   std::string out;
 };
 
+// The files a run against a lab dataset read besides the experiment file:
+// the scene, the dataset's manifest and files, the override file.
+std::vector<std::string> LabRunInputs(const vahf::scene::ExperimentFile& file,
+                                      const vahf::data::LabDataset& lab) {
+  std::vector<std::string> inputs = {file.scene_path, lab.file};
+  for (const std::string& f : {lab.trials_file, lab.segments_file, lab.summaries_file})
+    if (!f.empty()) inputs.push_back(lab.folder + "/" + f);
+  for (const auto& t : lab.tracks) inputs.push_back(t.file);
+  if (!file.overrides_path.empty()) inputs.push_back(file.overrides_path);
+  return inputs;
+}
+
+// Writes the output directory of a run against a lab dataset (calibrate,
+// compare): the header from the experiment file and the dataset, the one
+// section; says on stderr which plots failed.
+vahf::report::RunOutput WriteLabRun(const vahf::scene::ExperimentFile& file,
+                                    const vahf::data::LabDataset& lab, std::uint64_t seed,
+                                    int trials, const std::string& cycles,
+                                    const vahf::report::Section& section,
+                                    vahf::report::OutputDirectory& directory,
+                                    const vahf::report::RunInfo& info) {
+  vahf::report::RunHeader h;
+  h.file = &file;
+  h.first = &file;
+  h.seed = seed;
+  h.trials = trials;
+  h.cycles_per_condition = std::to_string(trials) + cycles;
+  h.integration = vahf::report::IntegrationText(file.scene.params);
+  h.inputs = LabRunInputs(file, lab);
+  const vahf::report::RunOutput written =
+      vahf::report::WriteSections(h, {section}, directory, info);
+  for (const std::string& failure : written.failed_plots)
+    std::fprintf(stderr, "vahf: error: plot not rendered (results kept): %s\n",
+                 failure.c_str());
+  return written;
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A comparison: the lab dataset, the virtual design, its output directory.
+int RunComparison(const vahf::scene::ExperimentFile& file,
+                  const vahf::experiment::RunSettings& settings, const RunArgs& a,
+                  vahf::report::OutputDirectory& directory) {
+  const vahf::data::LabDataset lab = vahf::data::LoadLabDataset(file.comparison.lab_path);
+  const int trials = settings.trials > 0 ? settings.trials : file.trials;
+  vahf::experiment::RunnerOptions options;
+  options.threads = settings.threads;
+  options.label = file.name + " (compare)";
+  options.unit = "cycles";
+  const auto start = std::chrono::steady_clock::now();
+  const vahf::compare::ComparisonResult result = vahf::compare::Compare(
+      file.scene, lab, file.comparison, file.file, settings.seed, trials, options);
+  const vahf::report::RunInfo info{a.threads, SecondsSince(start)};
+  const vahf::report::RunOutput written =
+      WriteLabRun(file, lab, settings.seed, trials, " per lab operator",
+                  vahf::report::ComparisonSection(file, lab, result), directory, info);
+  for (const auto& q : result.quantities)
+    std::printf("%s: %s\n", q.target.label.c_str(), q.verdict.c_str());
+  std::printf("%s: compare, seed %llu, %.1f s on %d thread(s)\nresults digest %s\n"
+              "report: %s/report.md\n",
+              file.name.c_str(), static_cast<unsigned long long>(settings.seed),
+              info.wall_seconds, a.threads, written.results_digest.c_str(),
+              directory.path().c_str());
+  return written.failed_plots.empty() ? 0 : 1;
+}
+
+// A calibration: the lab dataset, Ceres' fit with a line per design
+// evaluation, and its output directory with calibrated.json.
+int RunCalibration(const vahf::scene::ExperimentFile& file,
+                   const vahf::experiment::RunSettings& settings, const RunArgs& a,
+                   vahf::report::OutputDirectory& directory) {
+  const vahf::data::LabDataset lab = vahf::data::LoadLabDataset(file.calibration.lab_path);
+  const int trials = settings.trials > 0 ? settings.trials : file.trials;
+  vahf::experiment::RunnerOptions options;
+  options.threads = settings.threads;
+  const auto start = std::chrono::steady_clock::now();
+  const vahf::calibrate::CalibrationResult result = vahf::calibrate::Calibrate(
+      file.scene, lab, file.calibration, file.file, settings.seed, trials, options,
+      [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+  const vahf::report::RunInfo info{a.threads, SecondsSince(start)};
+  const vahf::report::RunOutput written = WriteLabRun(
+      file, lab, settings.seed, trials, " per lab operator and parameter vector",
+      vahf::report::CalibrationSection(file, lab, result), directory, info);
+  for (const auto& p : result.parameters)
+    std::printf("%s = %.6g, standard error %.3g, 95 %% interval [%.6g, %.6g]\n",
+                p.name.c_str(), p.estimate, p.standard_error, p.ci.lower, p.ci.upper);
+  std::printf("%s: calibrate, seed %llu, %.1f s on %d thread(s), %d evaluations\n"
+              "results digest %s\nreport: %s/report.md\noverrides: %s/%s\n",
+              file.name.c_str(), static_cast<unsigned long long>(settings.seed),
+              info.wall_seconds, a.threads, result.evaluations,
+              written.results_digest.c_str(), directory.path().c_str(),
+              directory.path().c_str(), vahf::report::kOverridesFile);
+  return written.failed_plots.empty() ? 0 : 1;
+}
+
 int Run(const RunArgs& a) {
-  const vahf::scene::ExperimentFile file = vahf::scene::LoadExperiment(a.experiment);
+  vahf::scene::ExperimentFile file = vahf::scene::LoadExperiment(a.experiment);
+  if (!a.overrides.empty())
+    vahf::scene::ApplyOverrides(vahf::scene::LoadOverrides(a.overrides), &file);
   vahf::experiment::RunSettings settings;
   settings.seed = a.seed_given ? a.seed : file.seed;
   settings.trials = a.trials;
@@ -139,6 +304,8 @@ int Run(const RunArgs& a) {
   // Checked and staged before any simulation: a refused path costs nothing.
   vahf::report::OutputDirectory directory(out);
   vahf::experiment::InstallInterruptHandler();
+  if (file.kind == "calibrate") return RunCalibration(file, settings, a, directory);
+  if (file.kind == "compare") return RunComparison(file, settings, a, directory);
   const auto start = std::chrono::steady_clock::now();
   const vahf::experiment::ExperimentRun run = vahf::experiment::RunExperiment(file, settings);
   vahf::report::RunInfo info;
@@ -157,6 +324,26 @@ int Run(const RunArgs& a) {
   return written.failed_plots.empty() ? 0 : 1;
 }
 
+struct SynthesizeArgs {
+  std::string generator;
+  std::string out;
+  int threads = 1;
+};
+
+int Synthesize(const SynthesizeArgs& a) {
+  const vahf::calibrate::SyntheticLabSpec spec = vahf::calibrate::LoadSyntheticLabSpec(a.generator);
+  vahf::experiment::RunnerOptions options;
+  options.threads = a.threads;
+  options.label = spec.name + " (synthetic lab)";
+  options.unit = "cycles";
+  vahf::experiment::InstallInterruptHandler();
+  const vahf::data::LabDataset lab = vahf::calibrate::GenerateSyntheticLab(spec, options);
+  vahf::data::WriteLabDataset(lab, a.out);
+  std::printf("%s: %zu trials of %zu operator(s) written to %s/dataset.json\n",
+              spec.name.c_str(), lab.trials.size(), spec.operators.size(), a.out.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -168,8 +355,11 @@ int main(int argc, char** argv) {
 
   std::string check_path;
   CLI::App* check = app.add_subcommand(
-      "check", "Validate a scene or experiment file and print what it holds");
-  check->add_option("FILE", check_path, "scene or experiment JSON file")->required();
+      "check", "Validate a scene, experiment or lab dataset file and print what it holds");
+  check
+      ->add_option("FILE", check_path,
+                   "scene, experiment or lab dataset (its dataset.json) JSON file")
+      ->required();
 
   std::string table_path = "reference/paper/table1.json";
   CLI::App* reference = app.add_subcommand(
@@ -219,6 +409,22 @@ int main(int argc, char** argv) {
                   "output directory (default runs/NAME-seedSEED); replaced whole, only if it "
                   "is empty or a previous vahf output");
 
+  run->add_option("--overrides", run_args.overrides,
+                  "parameter-override file (vahf-overrides/1, e.g. a calibration's "
+                  "calibrated.json) applied to every scene the experiment runs");
+
+  SynthesizeArgs synth_args;
+  CLI::App* synthesize = app.add_subcommand(
+      "synthesize", "Make a synthetic lab dataset: the model at stated parameter values plays "
+                    "the lab (docs/calibration.md)");
+  synthesize->add_option("GENERATOR", synth_args.generator, "generator JSON file (vahf-synthetic/1)")
+      ->required();
+  synthesize->add_option("--out", synth_args.out, "folder for dataset.json and trials.csv")
+      ->required();
+  synthesize->add_option("--threads", synth_args.threads, "worker threads (results do not depend on it)")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
+
   CLI::App* params = app.add_subcommand(
       "params", "Print every model parameter with its unit, rule and default (Markdown)");
 
@@ -240,6 +446,7 @@ int main(int argc, char** argv) {
     if (*reference) return Reference(table_path);
     if (*trial) return Trial(trial_args);
     if (*run) return Run(run_args);
+    if (*synthesize) return Synthesize(synth_args);
     if (*params) {
       std::fputs(vahf::scene::ParameterTableMarkdown().c_str(), stdout);
       return 0;

@@ -38,7 +38,7 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
         std::upper_bound(first.begin(), first.end(), k) - first.begin() - 1);
     const std::size_t j = k - first[r.condition];
     const std::size_t n = first[r.condition + 1] - first[r.condition];
-    r.cycle = first_cycle + j;
+    r.cycle = first_cycle + conds[r.condition].cycle_offset + j;
     const Condition& c = conds[r.condition];
     const double u = (static_cast<double>(j) + 0.5) / static_cast<double>(n);
     r.start_minute = c.minute_start + (c.minute_end - c.minute_start) * u;
@@ -66,6 +66,14 @@ std::shared_ptr<const scene::Scene> Share(const scene::Scene& s) {
 
 }  // namespace
 
+Condition OperatorCondition(const scene::Scene& scene, const scene::OperatorEntry& op) {
+  scene::Scene s = scene;
+  s.op.height = op.height;
+  s.op.arm_length = op.arm_length;
+  s.op.sex = op.sex;
+  return {op.name, op.sex, Share(s)};
+}
+
 ExperimentRun RunExperiment(const scene::ExperimentFile& file, const RunSettings& settings) {
   ExperimentRun out;
   out.file = &file;
@@ -88,13 +96,8 @@ ExperimentRun RunExperiment(const scene::ExperimentFile& file, const RunSettings
     if (file.operators.empty()) {
       conditions.push_back({"scene operator", file.scene.op.sex, Share(file.scene)});
     }
-    for (const scene::OperatorEntry& o : file.operators) {
-      scene::Scene s = file.scene;
-      s.op.height = o.height;
-      s.op.arm_length = o.arm_length;
-      s.op.sex = o.sex;
-      conditions.push_back({o.name, o.sex, Share(s)});
-    }
+    for (const scene::OperatorEntry& o : file.operators)
+      conditions.push_back(OperatorCondition(file.scene, o));
     out.run = RunDesign(conditions, out.trials, out.seed, false, options);
   } else if (kind == "human_factors_groups") {
     for (const scene::ConditionEntry& c : file.conditions)

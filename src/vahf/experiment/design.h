@@ -30,11 +30,19 @@ struct Condition {
   std::string group;  // an operator's sex; a precision setting's scene; else empty
   std::shared_ptr<const scene::Scene> scene;
   int trials = 0;     // > 0: this condition's cycles instead of RunDesign's `trials`
+  // Added to the cycles' stream indices: 0 shares streams with the other
+  // conditions (common random numbers, the default); a lab's operators are
+  // different people and draw their own (calibrate/targets.h).
+  std::uint64_t cycle_offset = 0;
   // Cycle j of N starts at minute start + (end - start) (j + 0.5) / N of the
   // operator's working time, with the work A done by then (fatigue; else 0).
   double minute_start = 0, minute_end = 0;
   double work_start = 0, work_end = 0;
 };
+
+// The condition of one operator (Sec. 5.2): the scene with the operator's
+// sex, stature and arm length, standing where the scene's operator stands.
+Condition OperatorCondition(const scene::Scene& scene, const scene::OperatorEntry& op);
 
 struct CycleRecord {
   std::size_t condition = 0;  // index into DesignRun::conditions

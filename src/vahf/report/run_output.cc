@@ -35,6 +35,7 @@ void AddInputs(const scene::ExperimentFile& f, std::vector<std::string>* paths) 
   for (const auto& c : f.conditions) add(c.scene_path);
   for (const auto& s : f.precision.scenes) add(s.path);
   if (!f.paper_table_path.empty()) add(f.paper_table_path);
+  add(f.overrides_path);
 }
 
 // "10", or for a paper run each experiment's: "table1 8, fatigue 12", or for
@@ -76,21 +77,45 @@ std::string ClaimsMarkdown(const std::vector<Section>& sections) {
 
 }  // namespace
 
+std::string IntegrationText(const scene::Parameters& p) {
+  return fmt::format("{} at accuracy {:g}, contact model {}", p.simulation.integrator,
+                     p.simulation.accuracy, p.contact.model);
+}
+
 RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& out,
                          const RunInfo& info) {
-  RunOutput result;
-  const scene::ExperimentFile& file = *run.file;
   std::vector<Section> sections;
   for (const experiment::ExperimentRun* leaf : Leaves(run))
     sections.push_back(SectionFor(*leaf));
+  RunHeader h;
+  h.file = run.file;
+  h.first = run.parts.empty() ? run.file : run.parts[0].file;
+  h.seed = run.seed;
+  h.trials = run.trials;
+  h.cycles_per_condition = CyclesPerCondition(run);
+  for (const experiment::ExperimentRun* leaf : Leaves(run)) {
+    const std::string one = IntegrationText(leaf->file->scene.params);
+    if (h.integration.find(one) == std::string::npos)
+      h.integration += (h.integration.empty() ? "" : "; ") + one;
+    if (leaf != &run) h.inputs.push_back(leaf->file->file);
+    AddInputs(*leaf->file, &h.inputs);
+  }
+  for (const auto& part : run.parts)
+    h.experiments.push_back(
+        {{"name", part.file->name}, {"kind", part.file->kind}, {"trials", part.trials}});
+  return WriteSections(h, sections, out, info);
+}
 
+RunOutput WriteSections(const RunHeader& h, const std::vector<Section>& sections,
+                        OutputDirectory& out, const RunInfo& info) {
+  RunOutput result;
+  const scene::ExperimentFile& file = *h.file;
   std::map<std::string, std::string> results;  // name -> bytes, for the digest
-  nlohmann::json summary = {{"experiment", file.name},
-                            {"kind", file.kind},
-                            {"seed", run.seed},
-                            {"trials", run.trials}};
+  nlohmann::json summary = {
+      {"experiment", file.name}, {"kind", file.kind}, {"seed", h.seed}, {"trials", h.trials}};
   for (const Section& s : sections) {
     for (const auto& [name, table] : s.tables) results[name] = table.ToCsv();
+    for (const auto& [name, bytes] : s.files) results[name] = bytes;
     summary["sections"][s.kind] = s.summary;
   }
   results["summary.json"] = summary.dump(1) + "\n";
@@ -117,44 +142,25 @@ RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& 
   }
 
   // Manifest: the experiment file, the first scene, and every file read.
-  const scene::ExperimentFile& first = run.parts.empty() ? file : *run.parts[0].file;
   ManifestFields m;
   m.experiment = DescribeInputFile(file.file);
-  m.scene = DescribeInputFile(first.scene_path);
-  m.seed = run.seed;
-  m.trials = run.trials;
+  m.scene = DescribeInputFile(h.first->scene_path);
+  m.seed = h.seed;
+  m.trials = h.trials;
   m.threads = info.threads;
-  m.parameters = first.scene.params;
+  m.parameters = h.first->scene.params;
   m.result_files = result_files;
   m.results_digest = digest;
   nlohmann::json manifest = ManifestJson(m);
-  std::vector<std::string> inputs;
-  for (const experiment::ExperimentRun* leaf : Leaves(run)) {
-    if (leaf != &run) inputs.push_back(leaf->file->file);
-    AddInputs(*leaf->file, &inputs);
-  }
-  for (const std::string& p : inputs) {
+  for (const std::string& p : h.inputs) {
     const InputFile f = DescribeInputFile(p);
     manifest["inputs"].push_back({{"path", f.path}, {"sha256", f.sha256}});
   }
   if (!measured_files.empty()) manifest["measured_files"] = measured_files;
-  if (!run.parts.empty()) {
-    for (const auto& part : run.parts)
-      manifest["experiments"].push_back({{"name", part.file->name},
-                                         {"kind", part.file->kind},
-                                         {"trials", part.trials}});
-  }
+  if (!h.experiments.is_null()) manifest["experiments"] = h.experiments;
   out.Write(OutputDirectory::kMarkerFile, manifest.dump(1) + "\n");
 
   // Report: what ran, the claims, then each section with its plots.
-  std::string integration;  // each distinct setting of the scenes the run used
-  for (const experiment::ExperimentRun* leaf : Leaves(run)) {
-    const auto& sim = leaf->file->scene.params.simulation;
-    const std::string one = fmt::format("{} at accuracy {:g}, contact model {}", sim.integrator,
-                                        sim.accuracy, leaf->file->scene.params.contact.model);
-    if (integration.find(one) == std::string::npos)
-      integration += (integration.empty() ? "" : "; ") + one;
-  }
   std::string md = fmt::format(
       "# vahf report: {}\n\n{}\n\n"
       "- experiment file: `{}` (kind {}), seed {}, cycles per condition: {}\n"
@@ -163,10 +169,9 @@ RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& 
       "- threads: {}, wall time: {:.1f} s (not part of any result file)\n"
       "- results digest (SHA-256 over the CSV tables and summary.json): `{}`\n"
       "- program: {} ({}), {} {}\n\n",
-      file.name, file.description, file.file, file.kind, run.seed, CyclesPerCondition(run),
-      integration, info.threads,
-      info.wall_seconds, digest, m.build.version, m.build.git_describe, m.build.compiler_id,
-      m.build.compiler_version);
+      file.name, file.description, file.file, file.kind, h.seed, h.cycles_per_condition,
+      h.integration, info.threads, info.wall_seconds, digest, m.build.version,
+      m.build.git_describe, m.build.compiler_id, m.build.compiler_version);
   md += ClaimsMarkdown(sections);
   for (const Section& s : sections) {
     md += s.markdown + "\n";
@@ -181,8 +186,9 @@ RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& 
       }
     }
     md += "Tables: ";
-    for (std::size_t k = 0; k < s.tables.size(); ++k)
-      md += fmt::format("{}`{}`", k ? ", " : "", s.tables[k].first);
+    std::size_t k = 0;
+    for (const auto& [name, table] : s.tables) md += fmt::format("{}`{}`", k++ ? ", " : "", name);
+    for (const auto& [name, bytes] : s.files) md += fmt::format("{}`{}`", k++ ? ", " : "", name);
     for (const auto& [name, table] : s.measured_tables)
       md += fmt::format(", `{}` (measured, outside the digest)", name);
     if (!s.measured.is_null()) md += ", `measured.json` (measured, outside the digest)";

@@ -8,6 +8,7 @@
 
 #include "vahf/experiment/design.h"
 #include "vahf/report/output_directory.h"
+#include "vahf/report/section.h"
 
 namespace vahf::report {
 
@@ -28,5 +29,28 @@ struct RunOutput {
 // simulation) and commits it.
 RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& out,
                          const RunInfo& info);
+
+// What an output directory says about a run besides its sections: the
+// experiment file, the file whose scene and parameters the manifest records,
+// the seed and cycles, and every other file the run read.
+struct RunHeader {
+  const scene::ExperimentFile* file = nullptr;
+  const scene::ExperimentFile* first = nullptr;  // its scene_path and scene.params
+  std::uint64_t seed = 0;
+  int trials = 0;                    // the manifest's and summary's "trials"
+  std::string cycles_per_condition;  // for report.md
+  std::string integration;           // each distinct integration setting, for report.md
+  std::vector<std::string> inputs;   // besides the experiment file, in order
+  nlohmann::json experiments;        // a paper run's parts for the manifest; null: none
+};
+
+// The "integrator at accuracy A, contact model M" of a scene's parameters.
+std::string IntegrationText(const scene::Parameters& p);
+
+// Writes `sections` with the header's manifest, summary.json and report.md
+// into `out`, and commits it (what WriteRunOutput does for an experiment run;
+// a kind that is not a design of cycles, calibrate, calls it directly).
+RunOutput WriteSections(const RunHeader& header, const std::vector<Section>& sections,
+                        OutputDirectory& out, const RunInfo& info);
 
 }  // namespace vahf::report

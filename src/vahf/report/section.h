@@ -24,6 +24,8 @@ struct Plot {
 struct Section {
   std::string kind;
   std::vector<std::pair<std::string, Table>> tables;  // file name -> table
+  // Other result files (digested like the tables): file name -> bytes.
+  std::vector<std::pair<std::string, std::string>> files;
   nlohmann::json summary;  // always holds "claims": a list (possibly empty)
   std::string markdown;
   std::vector<Plot> plots;

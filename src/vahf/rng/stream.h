@@ -22,6 +22,7 @@ enum class Purpose : std::uint32_t {
   kVisionError = 2,      // E_i of Eq. 5
   kTorqueError = 3,      // perturbation of the assembly torque
   kOperatorVariation = 4,
+  kMeasurementNoise = 5, // a synthetic lab's reading errors (calibrate/synthetic_lab.h)
   kTest = 0xFFFF,        // reserved for tests
 };
 

@@ -23,9 +23,6 @@ ExperimentFile LoadExperiment(const std::string& path) {
   return ParseExperiment(ReadJsonFile(path), path);
 }
 
-namespace {
-
-// A file named in `node`, relative to the experiment file's folder; it must exist.
 std::string ResolvePath(const JsonNode& node, const std::string& experiment_path,
                         const char* what) {
   const std::filesystem::path relative = node.String();
@@ -60,6 +57,8 @@ std::vector<OperatorEntry> ReadOperators(const JsonNode& node, const Scene& scen
   }
   return out;
 }
+
+namespace {
 
 // A number for a label: shortest exact form, scientific (1e-4, 2.5e-3) when
 // small or large.
@@ -106,11 +105,9 @@ Scene Apply(const Scene& scene, const PrecisionSetting& setting, const JsonNode&
   Scene out = scene;
   for (const auto& [name, value] : setting.overrides)
     ReadParamValue(*FindParam(name), node.Required(name), &out.params);
-  for (const std::string& violation :
-       {out.params.sight.Violation(), out.params.glance.Violation(),
-        out.params.reach.Violation(out.op.arm_length, out.op.height)})
-    if (!violation.empty())
-      node.Fail("applied to scene '" + scene.name + "' (" + scene.file + "): " + violation);
+  const std::string violation = ParameterViolation(out);
+  if (!violation.empty())
+    node.Fail("applied to scene '" + scene.name + "' (" + scene.file + "): " + violation);
   return out;
 }
 
@@ -160,6 +157,93 @@ void ReadPrecision(const JsonNode& root, const std::string& path, ExperimentFile
   }
   e->scene_path = d.scenes[0].path;
   e->scene = d.scenes[0].scene;
+}
+
+// A fitted parameter's value must obey the parameter table's rule, and so
+// must the points a central difference visits around it.
+void CheckFitValue(const ParamSpec& spec, const JsonNode& node, double value, double step) {
+  Parameters scratch;
+  try {
+    ReadParamValue(spec, JsonNode(nlohmann::json(value), node.file(), node.path()), &scratch);
+  } catch (const InputError& e) {
+    node.Fail(fmt::format("with relative_step {}, derivatives are taken at {}, which breaks "
+                          "{}'s rule: {}",
+                          step, value, ParamName(spec), e.rule()));
+  }
+}
+
+// Lab summaries as a calibration's targets or a comparison's quantities name
+// them: quantity, part (of the scene's sequence, or "all"), by ("operator" or
+// "all"), and for a comparison the equivalence margin.
+std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, bool margin) {
+  std::vector<FitTarget> out;
+  const std::size_t m = list.ArraySize(1);
+  for (std::size_t k = 0; k < m; ++k) {
+    const JsonNode node = list.At(k);
+    if (margin) {
+      node.ExpectObject({"quantity", "part", "by", "margin"});
+    } else {
+      node.ExpectObject({"quantity", "part", "by"});
+    }
+    FitTarget t;
+    t.pointer = node.path();
+    t.quantity = node.Required("quantity").Choice({"assembly_time", "success_rate"});
+    std::vector<std::string> parts = {"all"};
+    for (int index : scene.sequence) parts.push_back(scene.parts[index].name);
+    t.part = node.Required("part").Choice(parts);
+    if (auto by = node.Optional("by")) t.by_operator = by->Choice({"operator", "all"}) == "operator";
+    // A margin is in the quantity's unit: at most an hour for a time, 1 for a rate.
+    if (margin)
+      t.margin = node.Required("margin").InRange(0, t.quantity == "assembly_time" ? 3600 : 1);
+    if (margin && !(t.margin > 0)) node.Required("margin").Fail("must be > 0");
+    out.push_back(t);
+  }
+  return out;
+}
+
+void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+  CalibrationDesign& d = e->calibration;
+  d.lab_path = ResolvePath(root.Required("lab"), path, "lab dataset");
+  if (auto step = root.Optional("relative_step")) d.relative_step = step->InRange(1e-4, 0.5);
+  if (auto it = root.Optional("max_iterations"))
+    d.max_iterations = static_cast<int>(it->Integer(1, 1000));
+  if (auto loss = root.Optional("loss")) {
+    loss->ExpectObject({"kind", "scale"});
+    d.loss = loss->Required("kind").Choice({"huber", "cauchy", "none"});
+    if (auto scale = loss->Optional("scale")) d.loss_scale = scale->InRange(0.1, 100);
+  }
+  const JsonNode params = root.Required("parameters");
+  const std::size_t n = params.ArraySize(1);
+  for (std::size_t k = 0; k < n; ++k) {
+    const JsonNode node = params.At(k);
+    node.ExpectObject({"name", "start", "lower", "upper"});
+    FitParameter p;
+    p.pointer = node.path();
+    const JsonNode name = node.Required("name");
+    p.name = name.Choice(ParamNames());
+    const ParamSpec& spec = *FindParam(p.name);
+    if (!spec.real) name.Fail("a calibration fits real-valued parameters");
+    for (const FitParameter& other : d.parameters)
+      if (other.name == p.name) name.Fail("fitted once only (also at " + other.pointer + ")");
+    const JsonNode lower = node.Required("lower"), upper = node.Required("upper"),
+                   start = node.Required("start");
+    p.lower = lower.Number();
+    p.upper = upper.Number();
+    p.start = start.Number();
+    if (!(p.lower < p.upper)) upper.Fail(fmt::format("must exceed lower = {}", p.lower));
+    if (!(p.lower <= p.start && p.start <= p.upper))
+      start.Fail(fmt::format("must lie within [lower, upper] = [{}, {}]", p.lower, p.upper));
+    // Numeric derivatives step a relative_step beyond the bounds.
+    CheckFitValue(spec, lower, p.lower * (1 - d.relative_step), d.relative_step);
+    CheckFitValue(spec, upper, p.upper * (1 + d.relative_step), d.relative_step);
+    d.parameters.push_back(p);
+  }
+  d.targets = ReadTargets(root.Required("targets"), e->scene, false);
+}
+
+void ReadComparison(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+  e->comparison.lab_path = ResolvePath(root.Required("lab"), path, "lab dataset");
+  e->comparison.quantities = ReadTargets(root.Required("quantities"), e->scene, true);
 }
 
 }  // namespace
@@ -224,7 +308,8 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
   root.ExpectObject({"format", "name", "description", "kind", "scene", "seed", "trials",
                      "operators", "conditions", "instants_s", "paper_cycle_s", "fatigue",
                      "experiments", "paper_table", "scenes", "reference", "settings",
-                     "noise_trials"});
+                     "noise_trials", "lab", "parameters", "targets", "loss", "relative_step",
+                     "max_iterations", "quantities"});
   const JsonNode format = root.Required("format");
   if (format.String() != kExperimentFormat)
     format.Fail(std::string("an experiment file declares \"format\": \"") +
@@ -252,6 +337,11 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
   only_for("paper_table", "table1");
   for (const char* key : {"scenes", "reference", "settings", "noise_trials"})
     only_for(key, "precision");
+  for (const char* key : {"parameters", "targets", "loss", "relative_step", "max_iterations"})
+    only_for(key, "calibrate");
+  only_for("quantities", "compare");
+  if (auto lab = root.Optional("lab"); lab && e.kind != "calibrate" && e.kind != "compare")
+    lab->Fail("only an experiment of kind \"calibrate\" or \"compare\" reads \"lab\"");
   if (auto t = root.Optional("paper_table"))
     e.paper_table_path = ResolvePath(*t, path, "paper table");
 
@@ -307,6 +397,8 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
       e.instants_s.push_back(t);
     }
   }
+  if (e.kind == "calibrate") ReadCalibration(root, path, &e);
+  if (e.kind == "compare") ReadComparison(root, path, &e);
   if (auto f = root.Optional("fatigue")) {
     f->ExpectObject({"duration_min", "segments", "pilot_cycles"});
     if (auto d = f->Optional("duration_min")) e.fatigue.duration_min = d->Positive();
@@ -329,8 +421,12 @@ std::string FormatOf(const nlohmann::json& document, const std::string& path) {
   const std::string f = format.String();
   if (f == kSceneFormat) return "scene";
   if (f == kExperimentFormat) return "experiment";
-  format.Fail(std::string("must be \"") + kSceneFormat + "\" or \"" + kExperimentFormat +
-              "\"");
+  if (f == kLabFormat) return "lab";
+  if (f == kOverridesFormat) return "overrides";
+  if (f == kSyntheticFormat) return "synthetic";
+  format.Fail(fmt::format("must be one of \"{}\", \"{}\", \"{}\", \"{}\", \"{}\"",
+                          kSceneFormat, kExperimentFormat, kLabFormat, kOverridesFormat,
+                          kSyntheticFormat));
 }
 
 }  // namespace vahf::scene

@@ -8,11 +8,20 @@
 #include <utility>
 #include <vector>
 
+#include "vahf/scene/json_reader.h"
 #include "vahf/scene/scene.h"
 
 namespace vahf::scene {
 
 inline constexpr const char* kExperimentFormat = "vahf-experiment/1";
+// A lab dataset's manifest (data/lab_dataset.h reads it; named here so that
+// FormatOf can tell it without the data layer).
+inline constexpr const char* kLabFormat = "vahf-lab/1";
+// A parameter-override file (overrides.h) and a synthetic lab generator
+// (calibrate/synthetic_lab.h): named here so that FormatOf tells every vahf
+// file apart.
+inline constexpr const char* kOverridesFormat = "vahf-overrides/1";
+inline constexpr const char* kSyntheticFormat = "vahf-synthetic/1";
 
 // The experiment kinds of docs/design.md, "Experiments".
 const std::vector<std::string>& ExperimentKinds();
@@ -74,6 +83,48 @@ struct PrecisionDesign {
   static constexpr int kDefaultNoiseTrials = 12;
 };
 
+// A parameter a calibration fits: its name in the parameter table
+// ("guidance/kappa", a real-valued one), where the search starts and the
+// bounds it stays within (docs/calibration.md).
+struct FitParameter {
+  std::string name;
+  double start = 0, lower = 0, upper = 0;
+  std::string pointer;  // where the experiment file states it
+};
+
+// A lab summary a calibration fits (calibrate/targets.h): a quantity of one
+// part ("all": whole cycles), over all the lab's operators or each one's.
+struct FitTarget {
+  std::string quantity;      // "assembly_time" or "success_rate"
+  std::string part;          // a part of the scene's sequence, or "all"
+  bool by_operator = false;  // one target per lab operator instead of one over all
+  std::string pointer;       // where the experiment file states it
+  // compare: the equivalence margin, in the quantity's unit (s, or 1 for a
+  // rate): virtual and lab agree when their difference is shown within it.
+  double margin = 0;
+};
+
+// A virtual design against a lab dataset, quantity by quantity
+// (compare/comparison.h).
+struct ComparisonDesign {
+  std::string lab_path;  // the lab dataset's manifest
+  std::vector<FitTarget> quantities;
+};
+
+// Ceres least squares of parameters to a lab dataset's summaries
+// (calibrate/calibration.h).
+struct CalibrationDesign {
+  std::string lab_path;  // the lab dataset's manifest
+  std::vector<FitParameter> parameters;
+  std::vector<FitTarget> targets;
+  // Robust loss on the whitened residuals: "huber", "cauchy" or "none"; its
+  // scale in standard deviations (residuals beyond it are down-weighted).
+  std::string loss = "huber";
+  double loss_scale = 3.0;
+  double relative_step = 0.05;  // of each parameter's value, central differences
+  int max_iterations = 30;      // Levenberg-Marquardt iterations per round
+};
+
 // "RungeKuttaMerson 1e-4" for an integrator and accuracy, then "group/key
 // value" for each other override, joined by ", " ("CVODE 1e-4,
 // simulation/velocity_time_scale 0.1"); "scene parameters" for no overrides.
@@ -104,6 +155,10 @@ struct ExperimentFile {
   // precision: the scenes, reference and settings; `scene_path` and `scene`
   // are its first scene's (the manifest's "scene").
   PrecisionDesign precision;
+  CalibrationDesign calibration;           // calibrate
+  ComparisonDesign comparison;             // compare
+  // The parameter-override file applied to every scene (overrides.h), if any.
+  std::string overrides_path;
   std::vector<ExperimentFile> experiments; // paper: the experiments it runs
 };
 
@@ -111,14 +166,25 @@ struct ExperimentFile {
 // their cycles, the reference and every setting with its overrides.
 std::string DescribePrecision(const ExperimentFile& file);
 
+// A file named in `node`, relative to `experiment_path`'s folder (or
+// absolute); an InputError at the node when no such file exists. `what`
+// names the kind of file in the message ("scene").
+std::string ResolvePath(const JsonNode& node, const std::string& experiment_path,
+                        const char* what);
+
+// Operators as an experiment file lists them (assembly_time's "operators":
+// name, sex, height, arm_length, source), checked against the scene's reach
+// rule; names unique.
+std::vector<OperatorEntry> ReadOperators(const JsonNode& node, const Scene& scene);
+
 // Loads the experiment and the scene it names; errors name whichever file
 // holds the fault.
 ExperimentFile LoadExperiment(const std::string& path);
 // The same for an already parsed document read from `path`.
 ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string& path);
 
-// "scene" or "experiment" by the document's "format" field; an InputError
-// naming `file` otherwise.
+// "scene", "experiment", "lab", "overrides" or "synthetic" by the document's "format" field; an
+// InputError naming `file` otherwise.
 std::string FormatOf(const nlohmann::json& document, const std::string& file);
 // The same, reading the file.
 std::string FileFormatOf(const std::string& path);

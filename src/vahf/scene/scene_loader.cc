@@ -248,4 +248,12 @@ std::string DescribeScene(const Scene& s) {
   return out;
 }
 
+std::string ParameterViolation(const Scene& scene) {
+  for (const std::string& violation :
+       {scene.params.sight.Violation(), scene.params.glance.Violation(),
+        scene.params.reach.Violation(scene.op.arm_length, scene.op.height)})
+    if (!violation.empty()) return violation;
+  return "";
+}
+
 }  // namespace vahf::scene

@@ -19,4 +19,11 @@ Scene ParseScene(const nlohmann::json& document, const std::string& file);
 // A human-readable account of what a scene holds (`vahf check`).
 std::string DescribeScene(const Scene& scene);
 
+// The rules that tie a scene's parameters together (the sight and glance
+// plateaus' order, D1 < D2 < D3 for its operator): the first one `scene`
+// breaks, or empty. The loader applies them to a file's values; whatever
+// changes parameters after loading (an experiment's settings, a calibration's
+// trial values) applies them again.
+std::string ParameterViolation(const Scene& scene);
+
 }  // namespace vahf::scene

@@ -1,0 +1,238 @@
+#include "vahf/calibrate/calibration.h"
+
+#include <ceres/ceres.h>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include "vahf/core/error.h"
+#include "vahf/scene/parameter_table.h"
+#include "vahf/scene/scene_loader.h"
+
+namespace vahf::calibrate {
+namespace {
+
+// Two-sided 95 % normal quantile, for intervals from the covariance.
+constexpr double kZ95 = 1.959963984540054;
+
+std::string VectorText(const std::vector<ParameterSpec>& params, const double* x) {
+  std::string out;
+  for (std::size_t i = 0; i < params.size(); ++i)
+    out += fmt::format("{}{} {:.6g}", i ? ", " : "", params[i].name, x[i]);
+  return out;
+}
+
+// The virtual statistics of every target at a parameter vector, each vector
+// simulated once: Ceres asks for the same point again (a Jacobian at an
+// accepted step, the covariance at the estimate).
+class VirtualModel {
+ public:
+  VirtualModel(const scene::Scene& scene, const data::LabDataset& lab,
+               const CalibrationSpec& spec, const std::vector<Target>& targets,
+               const std::string& experiment_file, std::uint64_t seed, int trials,
+               const experiment::RunnerOptions& options, const CalibrationProgress& progress)
+      : scene_(scene), lab_(lab), spec_(spec), targets_(targets), file_(experiment_file),
+        seed_(seed), trials_(trials), options_(options), progress_(progress) {
+    options_.progress = false;  // one line per evaluation instead (progress_)
+  }
+
+  const std::vector<Statistic>& At(const double* x) {
+    std::vector<double> key(x, x + spec_.parameters.size());
+    auto found = cache_.find(key);
+    if (found != cache_.end()) return found->second;
+    const auto start = std::chrono::steady_clock::now();
+    const scene::Scene s = WithParameters(scene_, spec_.parameters, key, file_);
+    const experiment::DesignRun run =
+        experiment::RunDesign(LabConditions(s, lab_, trials_), trials_, seed_, false, options_);
+    std::vector<Statistic> stats;
+    for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, run));
+    ++evaluations_;
+    if (progress_)
+      progress_(fmt::format(
+          "calibrate: evaluation {} at {} ({:.1f} s)", evaluations_,
+          VectorText(spec_.parameters, x),
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
+    return cache_.emplace(std::move(key), std::move(stats)).first->second;
+  }
+
+  int evaluations() const { return evaluations_; }
+
+ private:
+  const scene::Scene& scene_;
+  const data::LabDataset& lab_;
+  const CalibrationSpec& spec_;
+  const std::vector<Target>& targets_;
+  std::string file_;
+  std::uint64_t seed_;
+  int trials_;
+  experiment::RunnerOptions options_;
+  CalibrationProgress progress_;
+  std::map<std::vector<double>, std::vector<Statistic>> cache_;
+  int evaluations_ = 0;
+};
+
+// One target's whitened residual at a fixed weight, for Ceres' numeric
+// differentiation. Each target is its own residual block, so that the robust
+// loss weighs each target by its own residual, not by the norm of all.
+struct Residual {
+  VirtualModel* model;
+  const Target* target;
+  std::size_t index;
+  double sigma;
+  bool operator()(double const* const* parameters, double* residual) const {
+    const Statistic& v = model->At(parameters[0])[index];
+    if (!std::isfinite(v.value)) return false;  // no sample: Ceres steps back
+    residual[0] = (v.value - target->lab.value) / sigma;
+    return true;
+  }
+};
+
+// sigma_i = sqrt(lab variance + virtual variance) at the virtual statistics `v`.
+std::vector<double> Weights(const std::vector<Target>& targets, const std::vector<Statistic>& v,
+                            const std::string& where) {
+  std::vector<double> sigma;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const double var = targets[i].lab.variance + v[i].variance;
+    if (!std::isfinite(v[i].value) || !(std::isfinite(var) && var > 0))
+      throw std::runtime_error(fmt::format(
+          "calibration: the virtual design at {} gives no usable {} ({} samples): "
+          "too few completed trials to weigh this target; widen `trials` or change the start",
+          where, targets[i].label, v[i].n));
+    sigma.push_back(std::sqrt(var));
+  }
+  return sigma;
+}
+
+ceres::LossFunction* MakeLoss(const CalibrationSpec& spec) {
+  if (spec.loss == "huber") return new ceres::HuberLoss(spec.loss_scale);
+  if (spec.loss == "cauchy") return new ceres::CauchyLoss(spec.loss_scale);
+  return nullptr;  // "none": plain least squares
+}
+
+}  // namespace
+
+scene::Scene WithParameters(const scene::Scene& scene, const std::vector<ParameterSpec>& params,
+                            const std::vector<double>& values,
+                            const std::string& experiment_file) {
+  VAHF_CHECK(params.size() == values.size(), "one value per fitted parameter");
+  scene::Scene out = scene;
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    const scene::ParamSpec* spec = scene::FindParam(params[i].name);
+    VAHF_CHECK(spec && spec->real, "fitted parameters are real-valued table entries");
+    spec->real(out.params) = values[i];
+  }
+  const std::string violation = scene::ParameterViolation(out);
+  if (!violation.empty()) {
+    std::string text;
+    for (std::size_t i = 0; i < params.size(); ++i)
+      text += fmt::format("{}{} = {:.6g}", i ? ", " : "", params[i].name, values[i]);
+    throw InputError(experiment_file, "/parameters", text,
+                     "the bounds admit parameter values that break a rule of scene '" +
+                         scene.name + "': " + violation + "; narrow the bounds");
+  }
+  return out;
+}
+
+CalibrationResult Calibrate(const scene::Scene& scene, const data::LabDataset& lab,
+                            const CalibrationSpec& spec, const std::string& experiment_file,
+                            std::uint64_t seed, int trials,
+                            const experiment::RunnerOptions& options,
+                            const CalibrationProgress& progress) {
+  const std::vector<Target> targets = LabTargets(lab, spec.targets, experiment_file);
+  const int p = static_cast<int>(spec.parameters.size());
+  const int m = static_cast<int>(targets.size());
+  VAHF_CHECK(p >= 1 && m >= 1, "a calibration fits at least one parameter to one target");
+  VirtualModel model(scene, lab, spec, targets, experiment_file, seed, trials, options,
+                     progress);
+
+  std::vector<double> x;
+  for (const ParameterSpec& s : spec.parameters) x.push_back(s.start);
+  const std::vector<Statistic> at_start = model.At(x.data());
+
+  CalibrationResult out;
+  std::vector<double> sigma = Weights(targets, at_start, VectorText(spec.parameters, x.data()));
+  for (int round = 1; round <= kMaxRounds; ++round) {
+    out.rounds = round;
+    ceres::NumericDiffOptions diff;
+    diff.relative_step_size = spec.relative_step;
+    ceres::Problem problem;
+    for (int i = 0; i < m; ++i) {
+      auto* cost = new ceres::DynamicNumericDiffCostFunction<Residual, ceres::CENTRAL>(
+          new Residual{&model, &targets[i], static_cast<std::size_t>(i), sigma[i]},
+          ceres::TAKE_OWNERSHIP, diff);
+      cost->AddParameterBlock(p);
+      cost->SetNumResiduals(1);
+      problem.AddResidualBlock(cost, MakeLoss(spec), x.data());
+    }
+    for (int i = 0; i < p; ++i) {
+      problem.SetParameterLowerBound(x.data(), i, spec.parameters[i].lower);
+      problem.SetParameterUpperBound(x.data(), i, spec.parameters[i].upper);
+    }
+    ceres::Solver::Options solver;
+    solver.linear_solver_type = ceres::DENSE_QR;
+    solver.max_num_iterations = spec.max_iterations;
+    solver.num_threads = 1;  // parallel inside each evaluation instead
+    // A relative change of 1e-4 in the parameters is far below what the
+    // Monte Carlo noise of a design resolves.
+    solver.parameter_tolerance = 1e-4;
+    solver.logging_type = ceres::SILENT;
+    ceres::Solver::Summary summary;
+    ceres::Solve(solver, &problem, &summary);
+    out.ceres_brief += fmt::format("round {}: {}\n", round, summary.BriefReport());
+    out.ceres_full = summary.FullReport();
+    out.converged = summary.termination_type == ceres::CONVERGENCE;
+    out.final_cost = summary.final_cost;
+    if (progress)
+      progress(fmt::format("calibrate: round {}: {} ({})", round,
+                           VectorText(spec.parameters, x.data()), summary.BriefReport()));
+
+    const std::vector<Statistic>& at_fit = model.At(x.data());
+    const std::vector<double> refit =
+        Weights(targets, at_fit, VectorText(spec.parameters, x.data()));
+    bool stable = true;
+    for (int i = 0; i < m; ++i) stable = stable && std::abs(refit[i] / sigma[i] - 1) < 0.1;
+    if (!stable && round < kMaxRounds) {
+      sigma = refit;
+      continue;
+    }
+    // The covariance of this round's problem, at the estimate.
+    ceres::Covariance::Options cov_options;
+    cov_options.algorithm_type = ceres::DENSE_SVD;
+    ceres::Covariance covariance(cov_options);
+    out.covariance = Eigen::MatrixXd::Constant(p, p, std::nan(""));
+    const std::vector<const double*> blocks = {x.data()};
+    if (covariance.Compute(blocks, &problem)) {
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> c(p, p);
+      out.covariance_ok = covariance.GetCovarianceMatrix(blocks, c.data());
+      if (out.covariance_ok) out.covariance = c;
+    }
+    break;
+  }
+
+  for (int i = 0; i < p; ++i) {
+    FittedParameter f;
+    f.name = spec.parameters[i].name;
+    f.start = spec.parameters[i].start;
+    f.estimate = x[i];
+    f.standard_error = out.covariance_ok ? std::sqrt(out.covariance(i, i)) : std::nan("");
+    f.ci = {f.estimate - kZ95 * f.standard_error, f.estimate + kZ95 * f.standard_error};
+    out.parameters.push_back(f);
+  }
+  const std::vector<Statistic>& fitted = model.At(x.data());
+  for (int i = 0; i < m; ++i) {
+    FittedTarget t;
+    t.target = targets[i];
+    t.start = at_start[i];
+    t.fitted = fitted[i];
+    t.residual = (fitted[i].value - targets[i].lab.value) / sigma[i];
+    out.targets.push_back(t);
+  }
+  out.evaluations = model.evaluations();
+  return out;
+}
+
+}  // namespace vahf::calibrate

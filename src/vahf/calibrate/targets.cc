@@ -1,0 +1,177 @@
+#include "vahf/calibrate/targets.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <utility>
+
+#include "vahf/core/error.h"
+#include "vahf/stats/summary.h"
+
+namespace vahf::calibrate {
+namespace {
+
+const char* UnitOf(const std::string& quantity) {
+  return quantity == "assembly_time" ? "s" : "1";
+}
+
+// The operators of the lab's trials in order of first appearance.
+std::vector<const data::LabTrial*> FirstTrialOfEachOperator(const data::LabDataset& lab) {
+  std::vector<const data::LabTrial*> out;
+  for (const data::LabTrial& t : lab.trials)
+    if (std::none_of(out.begin(), out.end(),
+                     [&](const data::LabTrial* o) { return o->operator_id == t.operator_id; }))
+      out.push_back(&t);
+  return out;
+}
+
+// Mean of times with variance s^2 / n; needs n >= 2.
+Statistic MeanStatistic(const std::vector<double>& times) {
+  const stats::Summary s = stats::Summarize(times);
+  Statistic out;
+  out.n = static_cast<int>(times.size());
+  out.value = s.mean.value_or(std::numeric_limits<double>::quiet_NaN());
+  out.variance = s.standard_error ? *s.standard_error * *s.standard_error
+                                  : std::numeric_limits<double>::quiet_NaN();
+  return out;
+}
+
+Statistic RateStatistic(int successes, int n) {
+  Statistic out;
+  out.n = n;
+  out.value = n > 0 ? static_cast<double>(successes) / n
+                    : std::numeric_limits<double>::quiet_NaN();
+  const double p = (successes + 1.0) / (n + 2.0);
+  out.variance = p * (1 - p) / std::max(n, 1);
+  return out;
+}
+
+}  // namespace
+
+void TargetSamples::Add(bool success, double time, const std::string& op) {
+  ++attempts;
+  if (!success) return;
+  ++successes;
+  times.push_back(time);
+  auto it = std::find_if(by_operator.begin(), by_operator.end(),
+                         [&](const auto& e) { return e.first == op; });
+  if (it == by_operator.end()) it = by_operator.insert(by_operator.end(), {op, {}});
+  it->second.push_back(time);
+}
+
+Statistic TargetSamples::Of(const std::string& quantity) const {
+  if (quantity != "assembly_time") return RateStatistic(successes, attempts);
+  Statistic out = MeanStatistic(times);
+  double sum = 0;
+  for (const auto& [op, t] : by_operator) {
+    if (t.size() < 2) return out;
+    const double sd = stats::SampleStandardDeviation(t);
+    sum += static_cast<double>(t.size()) * sd * sd;
+  }
+  if (by_operator.size() > 1)
+    out.variance = sum / (static_cast<double>(times.size()) * static_cast<double>(times.size()));
+  return out;
+}
+
+TargetSamples LabSamples(const data::LabDataset& lab, const TargetSpec& spec,
+                         const std::string& operator_id) {
+  TargetSamples samples;
+  for (const data::LabTrial& t : lab.trials)
+    if (t.part == spec.part && (operator_id.empty() || t.operator_id == operator_id))
+      samples.Add(t.success, t.time, t.operator_id);
+  return samples;
+}
+
+const std::vector<std::string>& TargetQuantities() {
+  static const std::vector<std::string> kQuantities = {"assembly_time", "success_rate"};
+  return kQuantities;
+}
+
+std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<TargetSpec>& specs,
+                               const std::string& experiment_file) {
+  std::vector<Target> out;
+  for (const TargetSpec& spec : specs) {
+    std::vector<std::string> operators = {""};
+    if (spec.by_operator) {
+      operators.clear();
+      for (const data::LabTrial* t : FirstTrialOfEachOperator(lab))
+        operators.push_back(t->operator_id);
+    }
+    for (const std::string& op : operators) {
+      const TargetSamples samples = LabSamples(lab, spec, op);
+      Target target;
+      target.spec = spec;
+      target.operator_id = op;
+      target.unit = UnitOf(spec.quantity);
+      target.label = spec.quantity + " of " + spec.part + (op.empty() ? "" : ", operator " + op);
+      const std::string where = lab.file + (op.empty() ? "" : " (operator " + op + ")");
+      if (samples.attempts == 0)
+        throw InputError(experiment_file, spec.pointer, spec.part,
+                         "the lab dataset " + where + " has no trials of this part");
+      if (spec.quantity == "assembly_time" && samples.times.size() < 2)
+        throw InputError(experiment_file, spec.pointer, spec.part,
+                         fmt::format("the lab dataset {} has {} successful trial(s) of this "
+                                     "part; a mean time and its variance need at least 2",
+                                     where, samples.times.size()));
+      target.lab = samples.Of(spec.quantity);
+      out.push_back(std::move(target));
+    }
+  }
+  return out;
+}
+
+std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
+                                                 const data::LabDataset& lab, int trials) {
+  std::vector<experiment::Condition> out;
+  for (const data::LabTrial* t : FirstTrialOfEachOperator(lab)) {
+    scene::OperatorEntry op;
+    op.name = t->operator_id;
+    op.sex = t->sex;
+    op.height = t->height;
+    op.arm_length = t->arm_length;
+    // The reach curve needs D1 < D2 < D3 for each operator (as a scene's or an
+    // experiment's operators do): a lab operator the scene's reach parameters
+    // cannot take is named with the row that introduced them.
+    const std::string reach = scene.params.reach.Violation(op.arm_length, op.height);
+    if (!reach.empty())
+      throw InputError(lab.folder + "/" + lab.trials_file,
+                       fmt::format("line {}, operator {}", t->line, op.name),
+                       fmt::format("height {} m, arm_length {} m", op.height, op.arm_length),
+                       "with scene '" + scene.name + "''s reach parameters: " + reach);
+    out.push_back(experiment::OperatorCondition(scene, op));
+    out.back().cycle_offset = static_cast<std::uint64_t>(out.size() - 1) *
+                              static_cast<std::uint64_t>(trials);
+  }
+  if (out.empty())
+    out.push_back({"scene operator", scene.op.sex, std::make_shared<const scene::Scene>(scene)});
+  return out;
+}
+
+Statistic VirtualStatistic(const Target& target, const experiment::DesignRun& run) {
+  return VirtualSamples(target, run).Of(target.spec.quantity);
+}
+
+TargetSamples VirtualSamples(const Target& target, const experiment::DesignRun& run) {
+  TargetSamples samples;
+  for (const experiment::CycleRecord& r : run.records) {
+    if (!target.operator_id.empty() && run.conditions[r.condition].name != target.operator_id)
+      continue;
+    const experiment::CycleResult& c = r.result;
+    const std::string& op = run.conditions[r.condition].name;
+    if (target.spec.part == kAllParts) {
+      if (!c.numerical_failure) samples.Add(c.completed, c.time, op);
+      continue;
+    }
+    for (const experiment::PartRun& p : c.parts) {
+      if (p.trial.part != target.spec.part || p.trial.status == sim::Status::kNumericalFailure)
+        continue;
+      samples.Add(p.trial.status == sim::Status::kCompleted, p.trial.completion_time, op);
+    }
+  }
+  return samples;
+}
+
+}  // namespace vahf::calibrate

@@ -1,0 +1,96 @@
+// What a calibration fits: lab summaries (docs/calibration.md). A target names
+// a quantity of one part, over all the lab's trials or one operator's; the lab
+// side gives its value and the variance of that value, and the virtual side
+// the same statistic over a design that mirrors the lab's operators.
+//
+//   assembly_time  mean time of the successful trials of the part, s
+//                  ("all": of whole cycles); variance s^2 / n
+//   success_rate   share of the part's trials that succeeded; variance
+//                  p (1 - p) / n with p = (successes + 1) / (n + 2), so that
+//                  a rate of 0 or 1 still carries its sampling uncertainty
+//                  (the Laplace estimate; Agresti and Coull, Am. Stat. 52(2)
+//                  119, 1998, for why the plain p(1 - p) / n fails there)
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vahf/data/lab_dataset.h"
+#include "vahf/experiment/design.h"
+
+namespace vahf::calibrate {
+
+inline constexpr const char* kAllParts = "all";
+
+using TargetSpec = scene::FitTarget;
+
+// The quantities a target may name.
+const std::vector<std::string>& TargetQuantities();
+
+// A statistic with the variance of its estimate.
+struct Statistic {
+  double value = 0;
+  double variance = 0;  // of `value` as an estimate, in its unit squared
+  int n = 0;            // samples behind it
+};
+
+// The samples behind a target: the times of its successful trials (each also
+// filed under its operator) and its counts of attempts and successes.
+// Operators differ in stature and reach, and both the lab and the virtual
+// design hold each operator's share of trials fixed, so the variance of a
+// pooled mean time is the stratified one, sum over operators of n_o s_o^2 /
+// n^2: the pooled s^2 / n would count the differences between operators,
+// which the fixed shares keep out of the mean, as noise (it made the
+// intervals 1.5 times too wide on data/synthetic_block). With an operator of
+// fewer than two times, s^2 / n.
+struct TargetSamples {
+  std::vector<double> times;
+  std::vector<std::pair<std::string, std::vector<double>>> by_operator;
+  int attempts = 0, successes = 0;
+  void Add(bool success, double time, const std::string& operator_id);
+  Statistic Of(const std::string& quantity) const;
+};
+
+// The lab's samples of a target's part, of one operator ("": all).
+TargetSamples LabSamples(const data::LabDataset& lab, const TargetSpec& spec,
+                         const std::string& operator_id);
+
+// One residual of a calibration: the lab's statistic for a target (for one
+// operator, or "" for all).
+struct Target {
+  TargetSpec spec;
+  std::string operator_id;  // "" for all operators
+  std::string label;        // "assembly_time of peg, operator male 1"
+  std::string unit;         // "s" or "1"
+  Statistic lab;
+};
+
+// The lab's targets, in spec order and, by operator, in the order operators
+// first appear in the lab's trials. An InputError naming `experiment_file` and
+// the target's pointer when the lab has no trials for it (or, for
+// assembly_time, fewer than two successful ones: no variance).
+std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<TargetSpec>& specs,
+                               const std::string& experiment_file);
+
+// The virtual design that mirrors the lab: one condition per lab operator (by
+// first appearance in its trials), the scene with the operator's sex, stature
+// and arm length (experiment::OperatorCondition); the scene's own operator
+// when the lab has no trials. An InputError naming the lab's trials file and
+// row when an operator's stature and arm length break the scene's reach rule
+// (D1 < D2 < D3). Operator k draws from cycle indices k * trials,
+// k * trials + 1, ...: lab operators are different people, whose errors are
+// independent, and so must the virtual ones' be for the targets of different
+// operators to be independent residuals (with shared streams the six
+// operators of data/synthetic_block gave a standard error 2.5 times too small).
+std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
+                                                 const data::LabDataset& lab, int trials);
+
+// A target's statistic on a run of LabConditions. A part trial that ended
+// as a numerical failure is left out (it says nothing about the assembly).
+// With no sample (no completed trial for assembly_time), value is NaN.
+Statistic VirtualStatistic(const Target& target, const experiment::DesignRun& run);
+// The samples VirtualStatistic summarises.
+TargetSamples VirtualSamples(const Target& target, const experiment::DesignRun& run);
+
+}  // namespace vahf::calibrate

@@ -1,0 +1,91 @@
+#include "vahf/scene/overrides.h"
+
+#include <algorithm>
+
+#include "vahf/core/error.h"
+#include "vahf/scene/json_reader.h"
+#include "vahf/scene/parameter_table.h"
+#include "vahf/scene/scene_loader.h"
+
+namespace vahf::scene {
+namespace {
+
+void Set(const ParameterOverrides& o, const std::string& name, const nlohmann::json& value,
+         Scene* scene) {
+  // Each value was read by its rule at load; reading it again cannot fail.
+  ReadParamValue(*FindParam(name), JsonNode(value, o.file, "/parameters/" + name),
+                 &scene->params);
+}
+
+void Check(const ParameterOverrides& o, const Scene& scene) {
+  const std::string violation = ParameterViolation(scene);
+  if (!violation.empty())
+    throw InputError(o.file, "/parameters", "applied to scene '" + scene.name + "'",
+                     violation);
+}
+
+}  // namespace
+
+ParameterOverrides LoadOverrides(const std::string& path) {
+  const nlohmann::json document = ReadJsonFile(path);
+  const JsonNode root(document, path);
+  if (!document.is_object()) root.Fail("an override file is a JSON object");
+  root.ExpectObject({"format", "source", "parameters"});
+  const JsonNode format = root.Required("format");
+  if (format.String() != kOverridesFormat)
+    format.Fail(std::string("an override file declares \"format\": \"") + kOverridesFormat +
+                "\"");
+  ParameterOverrides out;
+  out.file = path;
+  if (auto source = root.Optional("source")) out.source = source->String();
+  const JsonNode params = root.Required("parameters");
+  params.ExpectObject(ParamNames());
+  Parameters scratch;
+  for (const auto& item : params.json().items()) {
+    ReadParamValue(*FindParam(item.key()), params.Required(item.key()), &scratch);
+    out.values.emplace_back(item.key(), item.value());
+  }
+  if (out.values.empty()) params.Fail("names at least one parameter");
+  return out;
+}
+
+void ApplyOverrides(const ParameterOverrides& o, Scene* scene) {
+  for (const auto& [name, value] : o.values) Set(o, name, value, scene);
+  Check(o, *scene);
+}
+
+void ApplyOverrides(const ParameterOverrides& o, ExperimentFile* file) {
+  file->overrides_path = o.file;
+  if (!file->scene_path.empty()) ApplyOverrides(o, &file->scene);
+  // assembly_time runs the scene once per listed operator: the reach rule must
+  // hold for each of them, as ReadOperators checks when the file is loaded.
+  for (const OperatorEntry& op : file->operators) {
+    const std::string violation =
+        file->scene.params.reach.Violation(op.arm_length, op.height);
+    if (!violation.empty())
+      throw InputError(o.file, "/parameters",
+                       "applied to scene '" + file->scene.name + "' with operator '" +
+                           op.name + "' of " + file->file,
+                       violation);
+  }
+  for (ConditionEntry& c : file->conditions) ApplyOverrides(o, &c.scene);
+  PrecisionDesign& d = file->precision;
+  const auto apply_except = [&](const PrecisionSetting& setting, Scene* scene) {
+    for (const auto& [name, value] : o.values) {
+      const bool own = std::any_of(setting.overrides.begin(), setting.overrides.end(),
+                                   [&](const auto& s) { return s.first == name; });
+      if (!own) Set(o, name, value, scene);
+    }
+    Check(o, *scene);
+  };
+  for (PrecisionScene& ps : d.scenes) {
+    ApplyOverrides(o, &ps.scene);
+    apply_except(d.reference, &ps.reference);
+    for (std::size_t k = 0; k < ps.settings.size(); ++k)
+      apply_except(d.settings[k], &ps.settings[k]);
+  }
+  if (!d.scenes.empty()) file->scene = d.scenes[0].scene;
+  for (ExperimentFile& sub : file->experiments) ApplyOverrides(o, &sub);
+}
+
+}  // namespace vahf::scene
