@@ -44,7 +44,7 @@ SyntheticLabSpec BlockLab(std::uint64_t seed) {
 CalibrationSpec KappaFromTime() {
   CalibrationSpec spec;
   spec.parameters = {{"guidance/kappa", 400.0, 50.0, 2000.0, "/parameters/0"}};
-  spec.targets = {{"assembly_time", "block", false, "/targets/0"}};
+  spec.targets = {{"assembly_time", "block", false, "/targets/0", 0, 0, ""}};
   return spec;
 }
 
@@ -137,7 +137,7 @@ TEST(Calibration, ATargetTheLabCannotSupplyIsAnInputError) {
   const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   const data::LabDataset lab = GenerateSyntheticLab(BlockLab(9), Quiet());
   CalibrationSpec spec = KappaFromTime();
-  spec.targets = {{"assembly_time", "piston_rod", false, "/targets/0"}};
+  spec.targets = {{"assembly_time", "piston_rod", false, "/targets/0", 0, 0, ""}};
   EXPECT_THROW(Calibrate(scene, lab, spec, "calib.json", 1, 4, Quiet()), InputError);
 }
 

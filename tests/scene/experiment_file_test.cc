@@ -1267,6 +1267,8 @@ TEST(WrongKindTest, EachKeyWithEachOtherKind) {
   for (const WrongKindCase& c : cases) {
     for (const std::string& kind : kinds) {
       if (kind == c.reader) continue;
+      // A calibration reads the fatigue design its segment targets need.
+      if (kind == "calibrate" && std::string(c.key) == "fatigue") continue;
       SCOPED_TRACE(std::string(c.key) + " in a " + kind + " experiment");
       json doc;
       if (kind == "paper") {
@@ -1282,8 +1284,8 @@ TEST(WrongKindTest, EachKeyWithEachOtherKind) {
       }
       doc[c.key] = c.value;
       ExpectError(doc, std::string("/") + c.key,
-                  std::string("only an experiment of kind \"") + c.reader +
-                      "\" reads \"" + c.key + "\"");
+                  std::string("only an experiment of kind \"") + c.reader + "\"");
+      ExpectError(doc, std::string("/") + c.key, std::string("reads \"") + c.key + "\"");
     }
   }
 }
@@ -1313,7 +1315,7 @@ TEST(WrongKindTest, WhatReadsFileWhereValueRule) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               path +
-                  ": /fatigue = {\"segments\":4}: only an experiment of kind \"fatigue\" "
+                  ": /fatigue = {\"segments\":4}: only an experiment of kind \"fatigue\" or \"calibrate\" "
                   "reads \"fatigue\"");
   }
 }

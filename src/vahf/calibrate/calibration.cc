@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -38,6 +39,11 @@ class VirtualModel {
       : scene_(scene), lab_(lab), spec_(spec), targets_(targets), file_(experiment_file),
         seed_(seed), trials_(trials), options_(options), progress_(progress) {
     options_.progress = false;  // one line per evaluation instead (progress_)
+    for (const Target& t : targets_)
+      if (t.spec.segment > 0 &&
+          std::find(segments_.begin(), segments_.end(), t.spec.segment - 1) == segments_.end())
+        segments_.push_back(t.spec.segment - 1);
+    std::sort(segments_.begin(), segments_.end());
   }
 
   const std::vector<Statistic>& At(const double* x) {
@@ -46,10 +52,19 @@ class VirtualModel {
     if (found != cache_.end()) return found->second;
     const auto start = std::chrono::steady_clock::now();
     const scene::Scene s = WithParameters(scene_, spec_.parameters, key, file_);
-    const experiment::DesignRun run =
-        experiment::RunDesign(LabConditions(s, lab_, trials_), trials_, seed_, false, options_);
     std::vector<Statistic> stats;
-    for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, run));
+    if (segments_.empty()) {
+      const experiment::DesignRun run = experiment::RunDesign(LabConditions(s, lab_, trials_),
+                                                              trials_, seed_, false, options_);
+      for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, run));
+    } else {
+      // The scene's operator works the hour; only the segments the targets
+      // name are run (the pilot, which measures the work rate, always is).
+      const experiment::FatigueRun f =
+          experiment::RunFatigue(std::make_shared<const scene::Scene>(s), spec_.fatigue, trials_,
+                                 seed_, options_, options_, segments_);
+      for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, f.run, f.segments));
+    }
     ++evaluations_;
     if (progress_)
       progress_(fmt::format(
@@ -72,6 +87,7 @@ class VirtualModel {
   experiment::RunnerOptions options_;
   CalibrationProgress progress_;
   std::map<std::vector<double>, std::vector<Statistic>> cache_;
+  std::vector<int> segments_;  // 0-based segments the targets read; empty: no fatigue design
   int evaluations_ = 0;
 };
 

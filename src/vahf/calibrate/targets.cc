@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "vahf/core/error.h"
@@ -49,6 +50,50 @@ Statistic RateStatistic(int successes, int n) {
   return out;
 }
 
+// Whether a lab row's text field matches a target's ("" in the target: any).
+bool Matches(const std::string& wanted, const std::string& row) {
+  return wanted.empty() || wanted == row;
+}
+
+// A statistic the lab reports without its trials, for a target: a segment's
+// attempts and successes (segments.csv), or a row of summaries.csv with the
+// target's quantity, part ("all" matches a row for the whole assembly),
+// condition and segment. Its variance: sd^2 / n when the row gives both; for
+// a rate with n, that of a rate of n trials (the Laplace estimate, as for
+// trials); else the reading uncertainty's (a half-width taken as 1.96 sd).
+// Nothing found: nullopt. Found without any uncertainty: an InputError, since
+// a residual needs a weight.
+std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab, const TargetSpec& spec,
+                                           const std::string& experiment_file) {
+  if (spec.quantity == "success_rate" && spec.segment > 0)
+    for (const data::LabSegment& g : lab.segments)
+      if (g.segment == spec.segment && Matches(spec.condition, g.condition))
+        return RateStatistic(g.successes, g.attempts);
+  for (const data::LabSummary& r : lab.summaries) {
+    if (r.quantity != spec.quantity || r.part != spec.part || r.segment != spec.segment ||
+        !Matches(spec.condition, r.condition))
+      continue;
+    Statistic out;
+    out.value = r.value;
+    out.n = r.n;
+    if (std::isfinite(r.sd) && r.n > 0) {
+      out.variance = r.sd * r.sd / r.n;
+    } else if (spec.quantity == "success_rate" && r.n > 0) {
+      const double p = (r.value * r.n + 1.0) / (r.n + 2.0);
+      out.variance = p * (1 - p) / r.n;
+    } else if (std::isfinite(r.uncertainty) && r.uncertainty > 0) {
+      out.variance = (r.uncertainty / 1.96) * (r.uncertainty / 1.96);
+    } else {
+      throw InputError(experiment_file, spec.pointer, spec.quantity,
+                       fmt::format("the lab reports {} = {} ({}, line {}) without sd and n or "
+                                   "an uncertainty: a calibration cannot weigh it",
+                                   r.quantity, r.value, lab.summaries_file, r.line));
+    }
+    return out;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 void TargetSamples::Add(bool success, double time, const std::string& op) {
@@ -79,8 +124,10 @@ Statistic TargetSamples::Of(const std::string& quantity) const {
 TargetSamples LabSamples(const data::LabDataset& lab, const TargetSpec& spec,
                          const std::string& operator_id) {
   TargetSamples samples;
+  if (spec.segment > 0) return samples;  // trials carry no segment
   for (const data::LabTrial& t : lab.trials)
-    if (t.part == spec.part && (operator_id.empty() || t.operator_id == operator_id))
+    if (t.part == spec.part && Matches(operator_id, t.operator_id) &&
+        Matches(spec.condition, t.condition))
       samples.Add(t.success, t.time, t.operator_id);
   return samples;
 }
@@ -106,8 +153,19 @@ std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<Ta
       target.spec = spec;
       target.operator_id = op;
       target.unit = UnitOf(spec.quantity);
-      target.label = spec.quantity + " of " + spec.part + (op.empty() ? "" : ", operator " + op);
+      target.label = spec.quantity + " of " + spec.part +
+                     (spec.segment > 0 ? fmt::format(", segment {}", spec.segment) : "") +
+                     (spec.condition.empty() ? "" : ", " + spec.condition) +
+                     (op.empty() ? "" : ", operator " + op);
       const std::string where = lab.file + (op.empty() ? "" : " (operator " + op + ")");
+      // Without trials, what the lab reports: a segment's counts or a summary.
+      if (samples.attempts == 0 && !spec.by_operator) {
+        if (std::optional<Statistic> reported = ReportedStatistic(lab, spec, experiment_file)) {
+          target.lab = *reported;
+          out.push_back(std::move(target));
+          continue;
+        }
+      }
       if (samples.attempts == 0)
         throw InputError(experiment_file, spec.pointer, spec.part,
                          "the lab dataset " + where + " has no trials of this part");
@@ -150,14 +208,19 @@ std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
   return out;
 }
 
-Statistic VirtualStatistic(const Target& target, const experiment::DesignRun& run) {
-  return VirtualSamples(target, run).Of(target.spec.quantity);
+Statistic VirtualStatistic(const Target& target, const experiment::DesignRun& run,
+                           const std::vector<int>& segments) {
+  return VirtualSamples(target, run, segments).Of(target.spec.quantity);
 }
 
-TargetSamples VirtualSamples(const Target& target, const experiment::DesignRun& run) {
+TargetSamples VirtualSamples(const Target& target, const experiment::DesignRun& run,
+                             const std::vector<int>& segments) {
   TargetSamples samples;
   for (const experiment::CycleRecord& r : run.records) {
     if (!target.operator_id.empty() && run.conditions[r.condition].name != target.operator_id)
+      continue;
+    if (target.spec.segment > 0 &&
+        (r.condition >= segments.size() || segments[r.condition] != target.spec.segment - 1))
       continue;
     const experiment::CycleResult& c = r.result;
     const std::string& op = run.conditions[r.condition].name;

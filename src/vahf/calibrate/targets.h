@@ -67,7 +67,11 @@ struct Target {
 };
 
 // The lab's targets, in spec order and, by operator, in the order operators
-// first appear in the lab's trials. An InputError naming `experiment_file` and
+// first appear in the lab's trials. A target's lab statistic comes from the
+// lab's trials of its part (and condition); without any, from what the lab
+// reports: a segment's counts (segments.csv) or a summary (summaries.csv),
+// weighted by its sd and n or its reading uncertainty (an InputError when it
+// has neither). An InputError naming `experiment_file` and
 // the target's pointer when the lab has no trials for it (or, for
 // assembly_time, fewer than two successful ones: no variance).
 std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<TargetSpec>& specs,
@@ -89,8 +93,12 @@ std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
 // A target's statistic on a run of LabConditions. A part trial that ended
 // as a numerical failure is left out (it says nothing about the assembly).
 // With no sample (no completed trial for assembly_time), value is NaN.
-Statistic VirtualStatistic(const Target& target, const experiment::DesignRun& run);
+// A segment target reads the conditions whose 0-based segment, in
+// `segments` (experiment::FatigueRun::segments), is its own.
+Statistic VirtualStatistic(const Target& target, const experiment::DesignRun& run,
+                           const std::vector<int>& segments = {});
 // The samples VirtualStatistic summarises.
-TargetSamples VirtualSamples(const Target& target, const experiment::DesignRun& run);
+TargetSamples VirtualSamples(const Target& target, const experiment::DesignRun& run,
+                             const std::vector<int>& segments = {});
 
 }  // namespace vahf::calibrate

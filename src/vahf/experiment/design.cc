@@ -74,6 +74,39 @@ Condition OperatorCondition(const scene::Scene& scene, const scene::OperatorEntr
   return {op.name, op.sex, Share(s)};
 }
 
+FatigueRun RunFatigue(const std::shared_ptr<const scene::Scene>& scene,
+                      const scene::FatigueDesign& f, int trials, std::uint64_t seed,
+                      const RunnerOptions& options, const RunnerOptions& pilot_options,
+                      const std::vector<int>& only) {
+  FatigueRun out;
+  const int pilot = f.pilot_cycles > 0 ? f.pilot_cycles : trials;
+  // The pilot's streams are its own: cycle indices after every segment's.
+  out.pilot = RunDesign({{"pilot", "", scene}}, pilot, seed, false, pilot_options,
+                        static_cast<std::uint64_t>(trials));
+  double work = 0, time = 0;
+  for (const CycleRecord& r : out.pilot.records) {
+    work += r.result.work - r.initial_work;
+    time += r.result.time;
+  }
+  out.work_rate = time > 0 ? work / time : 0.0;
+  const double per_segment = f.duration_min / f.segments;
+  std::vector<Condition> conditions;
+  for (int s = 0; s < f.segments; ++s) {
+    if (!only.empty() && std::find(only.begin(), only.end(), s) == only.end()) continue;
+    Condition c;
+    c.name = fmt::format("{:g}-{:g} min", s * per_segment, (s + 1) * per_segment);
+    c.scene = scene;
+    c.minute_start = s * per_segment;
+    c.minute_end = (s + 1) * per_segment;
+    c.work_start = out.work_rate * 60.0 * c.minute_start;
+    c.work_end = out.work_rate * 60.0 * c.minute_end;
+    conditions.push_back(c);
+    out.segments.push_back(s);
+  }
+  out.run = RunDesign(conditions, trials, seed, false, options);
+  return out;
+}
+
 ExperimentRun RunExperiment(const scene::ExperimentFile& file, const RunSettings& settings) {
   ExperimentRun out;
   out.file = &file;
@@ -104,31 +137,11 @@ ExperimentRun RunExperiment(const scene::ExperimentFile& file, const RunSettings
       conditions.push_back({c.name, "", Share(c.scene)});
     out.run = RunDesign(conditions, out.trials, out.seed, true, options);
   } else if (kind == "fatigue") {
-    const scene::FatigueDesign& f = file.fatigue;
-    const int pilot = f.pilot_cycles > 0 ? f.pilot_cycles : out.trials;
-    const auto scene = Share(file.scene);
-    // The pilot's streams are its own: cycle indices after every segment's.
-    out.pilot = RunDesign({{"pilot", "", scene}}, pilot, out.seed, false,
-                          Options(settings, file.name + " (fatigue pilot)"),
-                          static_cast<std::uint64_t>(out.trials));
-    double work = 0, time = 0;
-    for (const CycleRecord& r : out.pilot.records) {
-      work += r.result.work - r.initial_work;
-      time += r.result.time;
-    }
-    out.work_rate = time > 0 ? work / time : 0.0;
-    const double per_segment = f.duration_min / f.segments;
-    for (int s = 0; s < f.segments; ++s) {
-      Condition c;
-      c.name = fmt::format("{:g}-{:g} min", s * per_segment, (s + 1) * per_segment);
-      c.scene = scene;
-      c.minute_start = s * per_segment;
-      c.minute_end = (s + 1) * per_segment;
-      c.work_start = out.work_rate * 60.0 * c.minute_start;
-      c.work_end = out.work_rate * 60.0 * c.minute_end;
-      conditions.push_back(c);
-    }
-    out.run = RunDesign(conditions, out.trials, out.seed, false, options);
+    FatigueRun f = RunFatigue(Share(file.scene), file.fatigue, out.trials, out.seed, options,
+                              Options(settings, file.name + " (fatigue pilot)"));
+    out.pilot = std::move(f.pilot);
+    out.work_rate = f.work_rate;
+    out.run = std::move(f.run);
   } else if (kind == "precision") {
     out.run = RunDesign(PrecisionConditions(file, settings.trials), out.trials, out.seed,
                         false, options);

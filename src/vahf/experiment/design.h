@@ -64,6 +64,23 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
                     bool record_trace, const RunnerOptions& options,
                     std::uint64_t first_cycle = 0);
 
+// The fatigue design (Sec. 5.4; see RunExperiment): a pilot of cycles from
+// A = 0 measures the work rate w (J per second of cycle time); segment s of S
+// covers minutes [s, s + 1) * duration / S, and its `trials` cycles start with
+// the work w * 60 * minute that back-to-back cycles would have accumulated by
+// their minute. `only` lists the 0-based segments to run (empty: all), in
+// increasing order; a segment's cycles are the same whichever others run.
+struct FatigueRun {
+  DesignRun pilot;
+  double work_rate = 0;
+  DesignRun run;  // one condition per segment run, in segment order
+  std::vector<int> segments;  // the 0-based segment of each condition of `run`
+};
+FatigueRun RunFatigue(const std::shared_ptr<const scene::Scene>& scene,
+                      const scene::FatigueDesign& design, int trials, std::uint64_t seed,
+                      const RunnerOptions& options, const RunnerOptions& pilot_options,
+                      const std::vector<int>& only = {});
+
 struct RunSettings {
   std::uint64_t seed = 1;
   int trials = 0;  // > 0 overrides the experiment file's

@@ -183,7 +183,7 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, boo
     if (margin) {
       node.ExpectObject({"quantity", "part", "by", "margin"});
     } else {
-      node.ExpectObject({"quantity", "part", "by"});
+      node.ExpectObject({"quantity", "part", "by", "segment", "condition"});
     }
     FitTarget t;
     t.pointer = node.path();
@@ -192,6 +192,11 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, boo
     for (int index : scene.sequence) parts.push_back(scene.parts[index].name);
     t.part = node.Required("part").Choice(parts);
     if (auto by = node.Optional("by")) t.by_operator = by->Choice({"operator", "all"}) == "operator";
+    if (auto segment = node.Optional("segment"))
+      t.segment = static_cast<int>(segment->Integer(1, 1000));
+    if (auto condition = node.Optional("condition")) t.condition = condition->String();
+    if (t.segment > 0 && t.by_operator)
+      node.Required("by").Fail("a segment's value is the lab's over all operators");
     // A margin is in the quantity's unit: at most an hour for a time, 1 for a rate.
     if (margin)
       t.margin = node.Required("margin").InRange(0, t.quantity == "assembly_time" ? 3600 : 1);
@@ -239,6 +244,13 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
     d.parameters.push_back(p);
   }
   d.targets = ReadTargets(root.Required("targets"), e->scene, false);
+  // One virtual design per calibration: the lab's operators, or the hour of
+  // work in segments.
+  for (const FitTarget& t : d.targets)
+    if ((t.segment > 0) != (d.targets[0].segment > 0))
+      throw InputError(path, t.pointer, t.quantity,
+                       "targets of segments and targets without a segment cannot be fitted "
+                       "together (one runs the fatigue design, the other the lab's operators)");
 }
 
 void ReadComparison(const JsonNode& root, const std::string& path, ExperimentFile* e) {
@@ -332,7 +344,8 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
   only_for("conditions", "human_factors_groups");
   only_for("instants_s", "human_factors_groups");
   only_for("paper_cycle_s", "human_factors_groups");
-  only_for("fatigue", "fatigue");
+  if (auto node = root.Optional("fatigue"); node && e.kind != "fatigue" && e.kind != "calibrate")
+    node->Fail("only an experiment of kind \"fatigue\" or \"calibrate\" reads \"fatigue\"");
   only_for("experiments", "paper");
   only_for("paper_table", "table1");
   for (const char* key : {"scenes", "reference", "settings", "noise_trials"})
@@ -407,6 +420,12 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
     if (auto p = f->Optional("pilot_cycles"))
       e.fatigue.pilot_cycles = static_cast<int>(p->Integer(0, 10'000'000));
   }
+  e.calibration.fatigue = e.fatigue;
+  // A calibration's segment targets lie within its fatigue design's hour.
+  for (const FitTarget& t : e.calibration.targets)
+    if (t.segment > e.fatigue.segments)
+      throw InputError(path, t.pointer + "/segment", std::to_string(t.segment),
+                       fmt::format("the fatigue design has {} segments", e.fatigue.segments));
   return e;
 }
 

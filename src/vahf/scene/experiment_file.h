@@ -102,6 +102,11 @@ struct FitTarget {
   // compare: the equivalence margin, in the quantity's unit (s, or 1 for a
   // rate): virtual and lab agree when their difference is shown within it.
   double margin = 0;
+  // A segment of the hour of work (1-based; 0: none): the lab's value of that
+  // segment, against a fatigue design's (FatigueDesign of the same file).
+  int segment = 0;
+  // The lab's condition (series) to read, e.g. "real"; empty: any.
+  std::string condition;
 };
 
 // A virtual design against a lab dataset, quantity by quantity
@@ -123,6 +128,9 @@ struct CalibrationDesign {
   double loss_scale = 3.0;
   double relative_step = 0.05;  // of each parameter's value, central differences
   int max_iterations = 30;      // Levenberg-Marquardt iterations per round
+  // The hour of work that segment targets are read from (the file's
+  // "fatigue", as the fatigue kind reads it).
+  FatigueDesign fatigue;
 };
 
 // "RungeKuttaMerson 1e-4" for an integrator and accuracy, then "group/key
