@@ -132,6 +132,24 @@ TargetSamples LabSamples(const data::LabDataset& lab, const TargetSpec& spec,
   return samples;
 }
 
+std::vector<std::string> LabOperators(const data::LabDataset& lab) {
+  std::vector<std::string> out;
+  for (const data::LabTrial* t : FirstTrialOfEachOperator(lab)) out.push_back(t->operator_id);
+  return out;
+}
+
+Target MakeTarget(const TargetSpec& spec, const std::string& operator_id) {
+  Target target;
+  target.spec = spec;
+  target.operator_id = operator_id;
+  target.unit = UnitOf(spec.quantity);
+  target.label = spec.quantity + " of " + spec.part +
+                 (spec.segment > 0 ? fmt::format(", segment {}", spec.segment) : "") +
+                 (spec.condition.empty() ? "" : ", " + spec.condition) +
+                 (operator_id.empty() ? "" : ", operator " + operator_id);
+  return target;
+}
+
 const std::vector<std::string>& TargetQuantities() {
   static const std::vector<std::string> kQuantities = {"assembly_time", "success_rate"};
   return kQuantities;
@@ -141,22 +159,11 @@ std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<Ta
                                const std::string& experiment_file) {
   std::vector<Target> out;
   for (const TargetSpec& spec : specs) {
-    std::vector<std::string> operators = {""};
-    if (spec.by_operator) {
-      operators.clear();
-      for (const data::LabTrial* t : FirstTrialOfEachOperator(lab))
-        operators.push_back(t->operator_id);
-    }
+    const std::vector<std::string> operators =
+        spec.by_operator ? LabOperators(lab) : std::vector<std::string>{""};
     for (const std::string& op : operators) {
       const TargetSamples samples = LabSamples(lab, spec, op);
-      Target target;
-      target.spec = spec;
-      target.operator_id = op;
-      target.unit = UnitOf(spec.quantity);
-      target.label = spec.quantity + " of " + spec.part +
-                     (spec.segment > 0 ? fmt::format(", segment {}", spec.segment) : "") +
-                     (spec.condition.empty() ? "" : ", " + spec.condition) +
-                     (op.empty() ? "" : ", operator " + op);
+      Target target = MakeTarget(spec, op);
       const std::string where = lab.file + (op.empty() ? "" : " (operator " + op + ")");
       // Without trials, what the lab reports: a segment's counts or a summary.
       if (samples.attempts == 0 && !spec.by_operator) {

@@ -66,6 +66,13 @@ struct Target {
   Statistic lab;
 };
 
+// The lab's operators in order of first appearance in its trials.
+std::vector<std::string> LabOperators(const data::LabDataset& lab);
+
+// A target of `spec` for one operator ("": all) with its label and unit; its
+// lab statistic is left for the caller.
+Target MakeTarget(const TargetSpec& spec, const std::string& operator_id);
+
 // The lab's targets, in spec order and, by operator, in the order operators
 // first appear in the lab's trials. A target's lab statistic comes from the
 // lab's trials of its part (and condition); without any, from what the lab

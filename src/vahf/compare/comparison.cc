@@ -16,15 +16,6 @@ namespace {
 
 constexpr double kAlpha = 0.05;  // of the equivalence test
 
-// The operators of the lab's trials in order of first appearance.
-std::vector<std::string> Operators(const data::LabDataset& lab) {
-  std::vector<std::string> out;
-  for (const data::LabTrial& t : lab.trials)
-    if (std::find(out.begin(), out.end(), t.operator_id) == out.end())
-      out.push_back(t.operator_id);
-  return out;
-}
-
 stats::Interval MeanInterval(const std::vector<double>& xs) {
   const stats::Summary s = stats::Summarize(xs);
   if (s.ci) return *s.ci;
@@ -133,8 +124,8 @@ ComparisonResult Compare(const scene::Scene& scene, const data::LabDataset& lab,
   };
   std::vector<Planned> planned;
   for (const scene::FitTarget& spec : design.quantities) {
-    std::vector<std::string> operators = {""};
-    if (spec.by_operator) operators = Operators(lab);
+    const std::vector<std::string> operators =
+        spec.by_operator ? calibrate::LabOperators(lab) : std::vector<std::string>{""};
     for (const std::string& op : operators) {
       calibrate::TargetSamples samples = calibrate::LabSamples(lab, spec, op);
       if (samples.attempts == 0)
@@ -142,11 +133,7 @@ ComparisonResult Compare(const scene::Scene& scene, const data::LabDataset& lab,
                          "the lab dataset " + lab.file +
                              (op.empty() ? "" : " (operator " + op + ")") +
                              " has no trials of this part");
-      calibrate::Target t;
-      t.spec = spec;
-      t.operator_id = op;
-      t.unit = spec.quantity == "assembly_time" ? "s" : "1";
-      t.label = spec.quantity + " of " + spec.part + (op.empty() ? "" : ", operator " + op);
+      calibrate::Target t = calibrate::MakeTarget(spec, op);
       t.lab = samples.Of(spec.quantity);
       planned.push_back({t, spec.margin, std::move(samples)});
     }
