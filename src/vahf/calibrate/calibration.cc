@@ -112,7 +112,7 @@ std::vector<double> Weights(const std::vector<Target>& targets, const std::vecto
                             const std::string& where) {
   std::vector<double> sigma;
   for (std::size_t i = 0; i < targets.size(); ++i) {
-    const double var = targets[i].lab.variance + v[i].variance;
+    const double var = LabVariance(targets[i].lab, v[i]) + v[i].variance;
     if (!std::isfinite(v[i].value) || !(std::isfinite(var) && var > 0))
       throw std::runtime_error(fmt::format(
           "calibration: the virtual design at {} gives no usable {} ({} samples): "

@@ -60,7 +60,8 @@ bool Matches(const std::string& wanted, const std::string& row) {
 // target's quantity, part ("all" matches a row for the whole assembly),
 // condition and segment. Its variance: sd^2 / n when the row gives both; for
 // a rate with n, that of a rate of n trials (the Laplace estimate, as for
-// trials); else the reading uncertainty's (a half-width taken as 1.96 sd).
+// trials); for a time with n = 1 and no sd, a single draw (Statistic::
+// single_draw); else the reading uncertainty's (a half-width taken as 1.96 sd).
 // Nothing found: nullopt. Found without any uncertainty: an InputError, since
 // a residual needs a weight.
 std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab, const TargetSpec& spec,
@@ -78,6 +79,9 @@ std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab, const Ta
     out.n = r.n;
     if (std::isfinite(r.sd) && r.n > 0) {
       out.variance = r.sd * r.sd / r.n;
+    } else if (spec.quantity == "assembly_time" && r.n == 1) {
+      out.single_draw = true;
+      out.variance = std::numeric_limits<double>::quiet_NaN();
     } else if (spec.quantity == "success_rate" && r.n > 0) {
       const double p = (r.value * r.n + 1.0) / (r.n + 2.0);
       out.variance = p * (1 - p) / r.n;
@@ -95,6 +99,10 @@ std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab, const Ta
 }
 
 }  // namespace
+
+double LabVariance(const Statistic& lab, const Statistic& virt) {
+  return lab.single_draw ? virt.variance * virt.n : lab.variance;
+}
 
 void TargetSamples::Add(bool success, double time, const std::string& op) {
   ++attempts;

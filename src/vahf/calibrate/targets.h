@@ -33,7 +33,16 @@ struct Statistic {
   double value = 0;
   double variance = 0;  // of `value` as an estimate, in its unit squared
   int n = 0;            // samples behind it
+  // A single observation the lab reports without a spread (n = 1, no sd): a
+  // draw from the population the virtual side samples, if the model is right,
+  // so its variance is the virtual side's per-sample one, n_v * var_v
+  // (LabVariance). `variance` is then NaN.
+  bool single_draw = false;
 };
+
+// The variance of a lab statistic `lab` beside the virtual `virt`: its own,
+// or for a single draw the virtual side's per-sample variance.
+double LabVariance(const Statistic& lab, const Statistic& virt);
 
 // The samples behind a target: the times of its successful trials (each also
 // filed under its operator) and its counts of attempts and successes.
