@@ -43,9 +43,21 @@ SyntheticLabSpec BlockLab(std::uint64_t seed) {
 
 CalibrationSpec KappaFromTime() {
   CalibrationSpec spec;
-  spec.parameters = {{"guidance/kappa", 400.0, 50.0, 2000.0, "/parameters/0"}};
-  spec.targets = {{"assembly_time", "block", false, "/targets/0", 0, 0, ""}};
+  spec.stages.emplace_back();
+  spec.stages[0].parameters = {{"guidance/kappa", 400.0, 50.0, 2000.0, "/parameters/0"}};
+  spec.stages[0].targets = {{"assembly_time", "block", false, "/targets/0", 0, 0, ""}};
   return spec;
+}
+
+// A calibration of one stage.
+CalibrationResult Fit(const scene::Scene& scene, const data::LabDataset& lab,
+                      const CalibrationSpec& spec, const std::string& file, std::uint64_t seed,
+                      int trials, const experiment::RunnerOptions& options,
+                      const CalibrationProgress& progress = {}) {
+  const std::vector<CalibrationResult> stages =
+      Calibrate(scene, lab, spec, file, seed, trials, options, progress);
+  EXPECT_EQ(stages.size(), 1u);
+  return stages.at(0);
 }
 
 experiment::RunnerOptions Quiet() {
@@ -59,7 +71,7 @@ TEST(Calibration, RecoversKappaFromASyntheticLabWithinItsInterval) {
   const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   const data::LabDataset lab = GenerateSyntheticLab(BlockLab(101), Quiet());
   ASSERT_EQ(lab.trials.size(), 24u);
-  const CalibrationResult r = Calibrate(scene, lab, KappaFromTime(), "test", 7, 24, Quiet(),
+  const CalibrationResult r = Fit(scene, lab, KappaFromTime(), "test", 7, 24, Quiet(),
                                         [](const std::string& l) { std::puts(l.c_str()); });
   ASSERT_TRUE(r.covariance_ok) << r.ceres_full;
   const FittedParameter& k = r.parameters[0];
@@ -82,8 +94,8 @@ TEST(Calibration, SameInputsGiveTheSameBitsOnAnyThreadCount) {
   for (std::size_t i = 0; i < lab.trials.size(); ++i)
     EXPECT_EQ(std::isnan(lab.trials[i].time) ? 0.0 : lab.trials[i].time,
               std::isnan(lab1.trials[i].time) ? 0.0 : lab1.trials[i].time);
-  const CalibrationResult a = Calibrate(scene, lab, KappaFromTime(), "test", 3, 12, Quiet());
-  const CalibrationResult b = Calibrate(scene, lab, KappaFromTime(), "test", 3, 12, one);
+  const CalibrationResult a = Fit(scene, lab, KappaFromTime(), "test", 3, 12, Quiet());
+  const CalibrationResult b = Fit(scene, lab, KappaFromTime(), "test", 3, 12, one);
   EXPECT_EQ(a.parameters[0].estimate, b.parameters[0].estimate);
   EXPECT_EQ(a.parameters[0].standard_error, b.parameters[0].standard_error);
 }
@@ -103,7 +115,7 @@ TEST(Calibration, NinetyFivePercentIntervalsCoverTheTruthAsOftenAsTheyClaim) {
   for (int d = 0; d < kDatasets; ++d) {
     const data::LabDataset lab = GenerateSyntheticLab(BlockLab(1000 + d), Quiet());
     const CalibrationResult r =
-        Calibrate(scene, lab, KappaFromTime(), "test", 2000 + d, 24, Quiet());
+        Fit(scene, lab, KappaFromTime(), "test", 2000 + d, 24, Quiet());
     ASSERT_TRUE(r.covariance_ok) << "dataset " << d << "\n" << r.ceres_full;
     const FittedParameter& k = r.parameters[0];
     const bool holds = k.ci.lower <= kKappaTrue && kKappaTrue <= k.ci.upper;
@@ -122,9 +134,10 @@ TEST(Calibration, BoundsThatAdmitABrokenSceneAreNamed) {
   const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   CalibrationSpec spec;
   // D1 = 3 arm lengths lies beyond D2 = 0.39 h: not a reach curve.
-  spec.parameters = {{"reach/d1_arm_fraction", 3.0, 2.0, 4.0, "/parameters/0"}};
+  const std::vector<ParameterSpec> parameters = {
+      {"reach/d1_arm_fraction", 3.0, 2.0, 4.0, "/parameters/0"}};
   try {
-    WithParameters(scene, spec.parameters, {3.0}, "calib.json");
+    WithParameters(scene, parameters, {3.0}, "calib.json");
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "calib.json");
@@ -137,7 +150,7 @@ TEST(Calibration, ATargetTheLabCannotSupplyIsAnInputError) {
   const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   const data::LabDataset lab = GenerateSyntheticLab(BlockLab(9), Quiet());
   CalibrationSpec spec = KappaFromTime();
-  spec.targets = {{"assembly_time", "piston_rod", false, "/targets/0", 0, 0, ""}};
+  spec.stages[0].targets = {{"assembly_time", "piston_rod", false, "/targets/0", 0, 0, ""}};
   EXPECT_THROW(Calibrate(scene, lab, spec, "calib.json", 1, 4, Quiet()), InputError);
 }
 

@@ -180,6 +180,7 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       {"precision_peg.json", "precision"},
       {"precision_cylinder.json", "precision"},
       {"calibrate_synthetic.json", "calibrate"},
+      {"calibrate_paper.json", "calibrate"},
       {"compare_synthetic.json", "compare"}};
   std::set<std::string> found;
   for (const auto& entry :
@@ -193,7 +194,7 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
     EXPECT_EQ(e.name, entry.path().stem().string()) << name;
     EXPECT_EQ(e.file, entry.path().string());
     EXPECT_FALSE(e.description.empty()) << name;
-    if (e.kind == "calibrate" || e.kind == "compare") {  // their own seeds and scene
+    if (name.find("_synthetic") != std::string::npos) {  // their own seeds and scene
       EXPECT_EQ(e.scene.name, "steel_block_move") << name;
       continue;
     }
@@ -991,26 +992,30 @@ TEST(CalibrateTest, ParametersTargetsLossAndStepsLoad) {
   EXPECT_TRUE(std::filesystem::equivalent(d.lab_path,
                                           SourcePath("data/synthetic_block/dataset.json")))
       << d.lab_path;
-  ASSERT_EQ(d.parameters.size(), 2u);
-  EXPECT_EQ(d.parameters[0].name, "guidance/kappa");
-  EXPECT_DOUBLE_EQ(d.parameters[0].start, 400);
-  EXPECT_DOUBLE_EQ(d.parameters[0].lower, 50);
-  EXPECT_DOUBLE_EQ(d.parameters[0].upper, 2000);
-  EXPECT_EQ(d.parameters[0].pointer, "/parameters/0");
-  EXPECT_EQ(d.parameters[1].name, "guidance/hand_mass");
-  EXPECT_DOUBLE_EQ(d.parameters[1].start, 1.0);
-  EXPECT_DOUBLE_EQ(d.parameters[1].lower, 0.5);
-  EXPECT_DOUBLE_EQ(d.parameters[1].upper, 2.0);
-  EXPECT_EQ(d.parameters[1].pointer, "/parameters/1");
-  ASSERT_EQ(d.targets.size(), 2u);
-  EXPECT_EQ(d.targets[0].quantity, "assembly_time");
-  EXPECT_EQ(d.targets[0].part, "block");
-  EXPECT_TRUE(d.targets[0].by_operator);
-  EXPECT_EQ(d.targets[0].pointer, "/targets/0");
-  EXPECT_EQ(d.targets[1].quantity, "success_rate");
-  EXPECT_EQ(d.targets[1].part, "all");
-  EXPECT_FALSE(d.targets[1].by_operator);  // "by" defaults to "all"
-  EXPECT_EQ(d.targets[1].pointer, "/targets/1");
+  ASSERT_EQ(d.stages.size(), 1u);
+  const CalibrationStage& st = d.stages[0];
+  EXPECT_EQ(st.name, "");
+  EXPECT_EQ(st.solver, "levenberg_marquardt");
+  ASSERT_EQ(st.parameters.size(), 2u);
+  EXPECT_EQ(st.parameters[0].name, "guidance/kappa");
+  EXPECT_DOUBLE_EQ(st.parameters[0].start, 400);
+  EXPECT_DOUBLE_EQ(st.parameters[0].lower, 50);
+  EXPECT_DOUBLE_EQ(st.parameters[0].upper, 2000);
+  EXPECT_EQ(st.parameters[0].pointer, "/parameters/0");
+  EXPECT_EQ(st.parameters[1].name, "guidance/hand_mass");
+  EXPECT_DOUBLE_EQ(st.parameters[1].start, 1.0);
+  EXPECT_DOUBLE_EQ(st.parameters[1].lower, 0.5);
+  EXPECT_DOUBLE_EQ(st.parameters[1].upper, 2.0);
+  EXPECT_EQ(st.parameters[1].pointer, "/parameters/1");
+  ASSERT_EQ(st.targets.size(), 2u);
+  EXPECT_EQ(st.targets[0].quantity, "assembly_time");
+  EXPECT_EQ(st.targets[0].part, "block");
+  EXPECT_TRUE(st.targets[0].by_operator);
+  EXPECT_EQ(st.targets[0].pointer, "/targets/0");
+  EXPECT_EQ(st.targets[1].quantity, "success_rate");
+  EXPECT_EQ(st.targets[1].part, "all");
+  EXPECT_FALSE(st.targets[1].by_operator);  // "by" defaults to "all"
+  EXPECT_EQ(st.targets[1].pointer, "/targets/1");
   EXPECT_EQ(d.loss, "cauchy");
   EXPECT_DOUBLE_EQ(d.loss_scale, 2.0);
   EXPECT_DOUBLE_EQ(d.relative_step, 0.1);
@@ -1030,7 +1035,7 @@ TEST(CalibrateTest, Defaults) {
   EXPECT_DOUBLE_EQ(e.calibration.relative_step, 0.05);
   EXPECT_EQ(e.calibration.max_iterations, 30);
   EXPECT_EQ(e.calibration.loss, defaults.loss);
-  EXPECT_FALSE(e.calibration.targets[0].by_operator);
+  EXPECT_FALSE(e.calibration.stages[0].targets[0].by_operator);
   // A loss without a scale keeps the default scale.
   doc["loss"] = {{"kind", "none"}};
   e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
@@ -1046,10 +1051,10 @@ TEST(CalibrateTest, ShippedExperimentResolvesItsLabRelativeToItself) {
       << e.calibration.lab_path;
   EXPECT_TRUE(std::filesystem::equivalent(
       e.scene_path, SourcePath("experiments/scenes/steel_block_move.json")));
-  ASSERT_EQ(e.calibration.parameters.size(), 1u);
-  EXPECT_EQ(e.calibration.parameters[0].name, "guidance/kappa");
-  ASSERT_EQ(e.calibration.targets.size(), 1u);
-  EXPECT_TRUE(e.calibration.targets[0].by_operator);
+  ASSERT_EQ(e.calibration.stages[0].parameters.size(), 1u);
+  EXPECT_EQ(e.calibration.stages[0].parameters[0].name, "guidance/kappa");
+  ASSERT_EQ(e.calibration.stages[0].targets.size(), 1u);
+  EXPECT_TRUE(e.calibration.stages[0].targets[0].by_operator);
   EXPECT_EQ(e.calibration.loss, "huber");
   EXPECT_EQ(e.trials, 20);
 }
@@ -1128,7 +1133,7 @@ TEST(CalibrateErrorsTest, WidenedBoundBreaksTheRule) {
   ExpectError(doc, "/parameters/1/upper", "breaks reach/value_at_d2's rule");
   doc["relative_step"] = 0.04;
   EXPECT_DOUBLE_EQ(LoadExperiment(WriteJson(TestDir() / "e.json", doc))
-                       .calibration.parameters[1]
+                       .calibration.stages[0].parameters[1]
                        .upper,
                    0.96);
   // A positive parameter's lower bound of 0 stays 0 when widened.
@@ -1208,6 +1213,84 @@ TEST(CalibrateErrorsTest, ErrorsNameTheExperimentFileNotTheScene) {
     EXPECT_EQ(std::string(e.what()), path + ": /parameters/0/name = \"visibility/grid\": "
                                             "a calibration fits real-valued parameters");
   }
+}
+
+// A calibration in stages: each stage its parameters, targets and solver.
+json Staged() {
+  json doc = Calibrate();
+  json first = {{"name", "kappa"},
+                {"solver", "golden_section"},
+                {"parameters", {FitParam("guidance/kappa", 400, 50, 2000)}},
+                {"targets", {{{"quantity", "assembly_time"}, {"part", "block"}}}}};
+  json second = {{"name", "hand"},
+                 {"parameters", {FitParam("guidance/hand_mass", 1.0, 0.5, 2.0)}},
+                 {"targets", {{{"quantity", "success_rate"}, {"part", "all"}}}}};
+  doc.erase("parameters");
+  doc.erase("targets");
+  doc["stages"] = {first, second};
+  doc["tolerance"] = 0.08;
+  return doc;
+}
+
+TEST(CalibrateTest, StagesLoadInOrderWithTheirSolvers) {
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Staged()));
+  const CalibrationDesign& d = e.calibration;
+  ASSERT_EQ(d.stages.size(), 2u);
+  EXPECT_EQ(d.stages[0].name, "kappa");
+  EXPECT_EQ(d.stages[0].pointer, "/stages/0");
+  EXPECT_EQ(d.stages[0].solver, "golden_section");
+  EXPECT_EQ(d.stages[0].parameters[0].pointer, "/stages/0/parameters/0");
+  EXPECT_EQ(d.stages[1].name, "hand");
+  EXPECT_EQ(d.stages[1].solver, "levenberg_marquardt");
+  EXPECT_EQ(d.stages[1].targets[0].quantity, "success_rate");
+  EXPECT_DOUBLE_EQ(d.tolerance, 0.08);
+  // The shipped paper calibration: kappa, then A_max on the fatigue design.
+  const ExperimentFile paper = LoadExperiment(SourcePath("experiments/calibrate_paper.json"));
+  ASSERT_EQ(paper.calibration.stages.size(), 2u);
+  EXPECT_EQ(paper.calibration.stages[0].parameters[0].name, "guidance/kappa");
+  EXPECT_EQ(paper.calibration.stages[1].parameters[0].name, "fatigue/a_max");
+  EXPECT_EQ(paper.calibration.stages[1].targets[1].segment, 4);
+}
+
+TEST(CalibrateErrorsTest, StagesAreWellFormed) {
+  json doc = Staged();
+  doc["parameters"] = {FitParam("guidance/kappa", 400, 50, 2000)};
+  ExpectError(doc, "/parameters", "states its parameters, targets and solver in each stage");
+  doc = Staged();
+  doc["stages"][1]["parameters"][0]["name"] = "guidance/kappa";
+  ExpectError(doc, "/stages/1/parameters/0/name", "fitted once only (also at "
+              "/stages/0/parameters/0)");
+  doc = Staged();
+  doc["stages"][1]["name"] = "kappa";
+  ExpectError(doc, "/stages/1/name", "a stage name is used once");
+  doc = Staged();
+  doc["stages"][0]["parameters"].push_back(FitParam("guidance/hand_mass", 1.0, 0.5, 2.0));
+  ExpectError(doc, "/stages/0/parameters", "the golden_section solver fits exactly one parameter");
+  doc = Staged();
+  doc["stages"][0]["solver"] = "newton";
+  ExpectError(doc, "/stages/0/solver", "must be one of", "newton");
+  doc = Staged();
+  doc["stages"][1].erase("name");
+  ExpectError(doc, "/stages/1/name", "required field 'name' is missing");
+  doc = Staged();
+  doc["tolerance"] = 0.9;
+  ExpectError(doc, "/tolerance", "", "0.9");
+  // Segment and non-segment targets may not share a stage, but may share a file.
+  doc = Staged();
+  doc["fatigue"] = {{"duration_min", 60}, {"segments", 4}};
+  doc["stages"][1]["targets"] = {
+      {{"quantity", "success_rate"}, {"part", "all"}, {"segment", 4}}};
+  EXPECT_NO_THROW(LoadExperiment(WriteJson(TestDir() / "e.json", doc)));
+  doc["stages"][1]["targets"].push_back({{"quantity", "success_rate"}, {"part", "all"}});
+  ExpectError(doc, "/stages/1/targets/1", "stages of their own");
+  // A stage's segment beyond the fatigue design's.
+  doc["stages"][1]["targets"] = {
+      {{"quantity", "success_rate"}, {"part", "all"}, {"segment", 5}}};
+  ExpectError(doc, "/stages/1/targets/0/segment", "the fatigue design has 4 segments", "5");
+  // "stages" belongs to calibrate only.
+  json table = Experiment("table1");
+  table["stages"] = json::array();
+  ExpectError(table, "/stages", "only an experiment of kind \"calibrate\"");
 }
 
 TEST(FormatOfTest, NamesEveryVahfFormat) {

@@ -55,12 +55,21 @@ void CheckCalibration(const vahf::scene::ExperimentFile& e) {
   const vahf::data::LabDataset lab = vahf::data::LoadLabDataset(e.calibration.lab_path);
   std::fputs(vahf::data::DescribeLabDataset(lab).c_str(), stdout);
   vahf::calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
-  for (const vahf::scene::FitParameter& p : e.calibration.parameters)
-    std::printf("  fits %s from %g within [%g, %g]\n", p.name.c_str(), p.start, p.lower,
-                p.upper);
-  for (const auto& t : vahf::calibrate::LabTargets(lab, e.calibration.targets, e.file))
-    std::printf("  target %s: lab %g (se %g, n %d)\n", t.label.c_str(), t.lab.value,
-                std::sqrt(t.lab.variance), t.lab.n);
+  for (const vahf::scene::CalibrationStage& stage : e.calibration.stages) {
+    if (!stage.name.empty())
+      std::printf("  stage '%s' (%s):\n", stage.name.c_str(), stage.solver.c_str());
+    for (const vahf::scene::FitParameter& p : stage.parameters)
+      std::printf("  fits %s from %g within [%g, %g]\n", p.name.c_str(), p.start, p.lower,
+                  p.upper);
+    for (const auto& t : vahf::calibrate::LabTargets(lab, stage.targets, e.file)) {
+      if (t.lab.single_draw)
+        std::printf("  target %s: lab %g (one draw: weighed by the virtual spread)\n",
+                    t.label.c_str(), t.lab.value);
+      else
+        std::printf("  target %s: lab %g (se %g, n %d)\n", t.label.c_str(), t.lab.value,
+                    std::sqrt(t.lab.variance), t.lab.n);
+    }
+  }
   std::fputs(vahf::scene::DescribeScene(e.scene).c_str(), stdout);
   CheckModels(e.scene);
 }
@@ -272,20 +281,24 @@ int RunCalibration(const vahf::scene::ExperimentFile& file,
   vahf::experiment::RunnerOptions options;
   options.threads = settings.threads;
   const auto start = std::chrono::steady_clock::now();
-  const vahf::calibrate::CalibrationResult result = vahf::calibrate::Calibrate(
+  const std::vector<vahf::calibrate::CalibrationResult> stages = vahf::calibrate::Calibrate(
       file.scene, lab, file.calibration, file.file, settings.seed, trials, options,
       [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
   const vahf::report::RunInfo info{a.threads, SecondsSince(start)};
   const vahf::report::RunOutput written = WriteLabRun(
       file, lab, settings.seed, trials, " per lab operator and parameter vector",
-      vahf::report::CalibrationSection(file, lab, result), directory, info);
-  for (const auto& p : result.parameters)
-    std::printf("%s = %.6g, standard error %.3g, 95 %% interval [%.6g, %.6g]\n",
-                p.name.c_str(), p.estimate, p.standard_error, p.ci.lower, p.ci.upper);
+      vahf::report::CalibrationSection(file, lab, stages), directory, info);
+  int evaluations = 0;
+  for (const auto& r : stages) {
+    evaluations += r.evaluations;
+    for (const auto& p : r.parameters)
+      std::printf("%s = %.6g, standard error %.3g, 95 %% interval [%.6g, %.6g]\n",
+                  p.name.c_str(), p.estimate, p.standard_error, p.ci.lower, p.ci.upper);
+  }
   std::printf("%s: calibrate, seed %llu, %.1f s on %d thread(s), %d evaluations\n"
               "results digest %s\nreport: %s/report.md\noverrides: %s/%s\n",
               file.name.c_str(), static_cast<unsigned long long>(settings.seed),
-              info.wall_seconds, a.threads, result.evaluations,
+              info.wall_seconds, a.threads, evaluations,
               written.results_digest.c_str(), directory.path().c_str(),
               directory.path().c_str(), vahf::report::kOverridesFile);
   return written.failed_plots.empty() ? 0 : 1;

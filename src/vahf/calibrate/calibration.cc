@@ -8,8 +8,10 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
+#include "vahf/calibrate/bracketed_search.h"
 #include "vahf/core/error.h"
 #include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
@@ -33,10 +35,11 @@ std::string VectorText(const std::vector<ParameterSpec>& params, const double* x
 class VirtualModel {
  public:
   VirtualModel(const scene::Scene& scene, const data::LabDataset& lab,
-               const CalibrationSpec& spec, const std::vector<Target>& targets,
+               const CalibrationSpec& spec, const StageSpec& stage,
+               const std::vector<Target>& targets,
                const std::string& experiment_file, std::uint64_t seed, int trials,
                const experiment::RunnerOptions& options, const CalibrationProgress& progress)
-      : scene_(scene), lab_(lab), spec_(spec), targets_(targets), file_(experiment_file),
+      : scene_(scene), lab_(lab), spec_(spec), stage_(stage), targets_(targets), file_(experiment_file),
         seed_(seed), trials_(trials), options_(options), progress_(progress) {
     options_.progress = false;  // one line per evaluation instead (progress_)
     for (const Target& t : targets_)
@@ -47,11 +50,11 @@ class VirtualModel {
   }
 
   const std::vector<Statistic>& At(const double* x) {
-    std::vector<double> key(x, x + spec_.parameters.size());
+    std::vector<double> key(x, x + stage_.parameters.size());
     auto found = cache_.find(key);
     if (found != cache_.end()) return found->second;
     const auto start = std::chrono::steady_clock::now();
-    const scene::Scene s = WithParameters(scene_, spec_.parameters, key, file_);
+    const scene::Scene s = WithParameters(scene_, stage_.parameters, key, file_);
     std::vector<Statistic> stats;
     if (segments_.empty()) {
       const experiment::DesignRun run = experiment::RunDesign(LabConditions(s, lab_, trials_),
@@ -69,7 +72,7 @@ class VirtualModel {
     if (progress_)
       progress_(fmt::format(
           "calibrate: evaluation {} at {} ({:.1f} s)", evaluations_,
-          VectorText(spec_.parameters, x),
+          VectorText(stage_.parameters, x),
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
     return cache_.emplace(std::move(key), std::move(stats)).first->second;
   }
@@ -80,6 +83,7 @@ class VirtualModel {
   const scene::Scene& scene_;
   const data::LabDataset& lab_;
   const CalibrationSpec& spec_;
+  const StageSpec& stage_;
   const std::vector<Target>& targets_;
   std::string file_;
   std::uint64_t seed_;
@@ -153,62 +157,115 @@ scene::Scene WithParameters(const scene::Scene& scene, const std::vector<Paramet
   return out;
 }
 
-CalibrationResult Calibrate(const scene::Scene& scene, const data::LabDataset& lab,
-                            const CalibrationSpec& spec, const std::string& experiment_file,
-                            std::uint64_t seed, int trials,
-                            const experiment::RunnerOptions& options,
-                            const CalibrationProgress& progress) {
-  const std::vector<Target> targets = LabTargets(lab, spec.targets, experiment_file);
-  const int p = static_cast<int>(spec.parameters.size());
+namespace {
+
+// The cost Ceres minimises, 1/2 sum rho(r_i^2), at the stage's one-parameter
+// vector x (the golden_section solver minimises the same).
+double Cost(VirtualModel& model, const std::vector<Target>& targets,
+            const std::vector<double>& sigma, const CalibrationSpec& spec, double x) {
+  const std::vector<Statistic>& v = model.At(&x);
+  const std::unique_ptr<ceres::LossFunction> loss(MakeLoss(spec));
+  double cost = 0;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    if (!std::isfinite(v[i].value)) return std::nan("");  // no sample
+    const double r = (v[i].value - targets[i].lab.value) / sigma[i];
+    double rho[3] = {r * r, 1, 0};
+    if (loss) loss->Evaluate(r * r, rho);
+    cost += 0.5 * rho[0];
+  }
+  return cost;
+}
+
+// The stage's problem at `x`: one residual block per target, bounds.
+void BuildProblem(ceres::Problem* problem, VirtualModel* model, const CalibrationSpec& spec,
+                  const StageSpec& stage, const std::vector<Target>& targets,
+                  const std::vector<double>& sigma, double* x) {
+  ceres::NumericDiffOptions diff;
+  diff.relative_step_size = spec.relative_step;
+  const int p = static_cast<int>(stage.parameters.size());
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    auto* cost = new ceres::DynamicNumericDiffCostFunction<Residual, ceres::CENTRAL>(
+        new Residual{model, &targets[i], i, sigma[i]}, ceres::TAKE_OWNERSHIP, diff);
+    cost->AddParameterBlock(p);
+    cost->SetNumResiduals(1);
+    problem->AddResidualBlock(cost, MakeLoss(spec), x);
+  }
+  for (int i = 0; i < p; ++i) {
+    problem->SetParameterLowerBound(x, i, stage.parameters[static_cast<std::size_t>(i)].lower);
+    problem->SetParameterUpperBound(x, i, stage.parameters[static_cast<std::size_t>(i)].upper);
+  }
+}
+
+}  // namespace
+
+CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDataset& lab,
+                                 const CalibrationSpec& spec, const StageSpec& stage,
+                                 const std::string& experiment_file, std::uint64_t seed,
+                                 int trials, const experiment::RunnerOptions& options,
+                                 const CalibrationProgress& progress) {
+  const auto started = std::chrono::steady_clock::now();
+  const std::vector<Target> targets = LabTargets(lab, stage.targets, experiment_file);
+  const int p = static_cast<int>(stage.parameters.size());
   const int m = static_cast<int>(targets.size());
   VAHF_CHECK(p >= 1 && m >= 1, "a calibration fits at least one parameter to one target");
-  VirtualModel model(scene, lab, spec, targets, experiment_file, seed, trials, options,
+  VAHF_CHECK(stage.solver != "golden_section" || p == 1, "the golden_section solver fits one parameter");
+  VirtualModel model(scene, lab, spec, stage, targets, experiment_file, seed, trials, options,
                      progress);
+  const std::string prefix = stage.name.empty() ? "calibrate" : "calibrate (" + stage.name + ")";
 
   std::vector<double> x;
-  for (const ParameterSpec& s : spec.parameters) x.push_back(s.start);
+  for (const ParameterSpec& s : stage.parameters) x.push_back(s.start);
   const std::vector<Statistic> at_start = model.At(x.data());
 
   CalibrationResult out;
-  std::vector<double> sigma = Weights(targets, at_start, VectorText(spec.parameters, x.data()));
+  out.stage = stage.name;
+  out.solver = stage.solver;
+  std::vector<double> sigma = Weights(targets, at_start, VectorText(stage.parameters, x.data()));
+  std::optional<std::array<double, 3>> bracket;
   for (int round = 1; round <= kMaxRounds; ++round) {
     out.rounds = round;
-    ceres::NumericDiffOptions diff;
-    diff.relative_step_size = spec.relative_step;
     ceres::Problem problem;
-    for (int i = 0; i < m; ++i) {
-      auto* cost = new ceres::DynamicNumericDiffCostFunction<Residual, ceres::CENTRAL>(
-          new Residual{&model, &targets[i], static_cast<std::size_t>(i), sigma[i]},
-          ceres::TAKE_OWNERSHIP, diff);
-      cost->AddParameterBlock(p);
-      cost->SetNumResiduals(1);
-      problem.AddResidualBlock(cost, MakeLoss(spec), x.data());
+    BuildProblem(&problem, &model, spec, stage, targets, sigma, x.data());
+    std::string brief;
+    if (stage.solver == "golden_section") {
+      const ParameterSpec& ps = stage.parameters[0];
+      const BracketedSearch search = MinimizeBracketed(
+          [&](double v) { return Cost(model, targets, sigma, spec, v); }, ps.lower, ps.upper,
+          x[0], spec.tolerance, spec.max_iterations, bracket);
+      x[0] = search.estimate;
+      bracket = search.bracket;
+      out.search_log += fmt::format("round {}:\n{}", round, search.log);
+      out.converged = search.converged;
+      out.final_cost = search.cost;
+      brief = fmt::format(
+          "golden section (GSL): {} iterations, cost {:.6g}, bracket [{:.6g}, {:.6g}]{}",
+          search.iterations, search.cost, search.bracket[0], search.bracket[2],
+          search.at_bound ? ", the cost still falls at a bound"
+                          : search.converged ? ", converged" : ", not converged");
+    } else {
+      ceres::Solver::Options solver;
+      solver.linear_solver_type = ceres::DENSE_QR;
+      solver.max_num_iterations = spec.max_iterations;
+      solver.num_threads = 1;  // parallel inside each evaluation instead
+      // A relative change of 1e-4 in the parameters is far below what the
+      // Monte Carlo noise of a design resolves.
+      solver.parameter_tolerance = 1e-4;
+      solver.logging_type = ceres::SILENT;
+      ceres::Solver::Summary summary;
+      ceres::Solve(solver, &problem, &summary);
+      brief = summary.BriefReport();
+      out.ceres_full = summary.FullReport();
+      out.converged = summary.termination_type == ceres::CONVERGENCE;
+      out.final_cost = summary.final_cost;
     }
-    for (int i = 0; i < p; ++i) {
-      problem.SetParameterLowerBound(x.data(), i, spec.parameters[i].lower);
-      problem.SetParameterUpperBound(x.data(), i, spec.parameters[i].upper);
-    }
-    ceres::Solver::Options solver;
-    solver.linear_solver_type = ceres::DENSE_QR;
-    solver.max_num_iterations = spec.max_iterations;
-    solver.num_threads = 1;  // parallel inside each evaluation instead
-    // A relative change of 1e-4 in the parameters is far below what the
-    // Monte Carlo noise of a design resolves.
-    solver.parameter_tolerance = 1e-4;
-    solver.logging_type = ceres::SILENT;
-    ceres::Solver::Summary summary;
-    ceres::Solve(solver, &problem, &summary);
-    out.ceres_brief += fmt::format("round {}: {}\n", round, summary.BriefReport());
-    out.ceres_full = summary.FullReport();
-    out.converged = summary.termination_type == ceres::CONVERGENCE;
-    out.final_cost = summary.final_cost;
+    out.ceres_brief += fmt::format("round {}: {}\n", round, brief);
     if (progress)
-      progress(fmt::format("calibrate: round {}: {} ({})", round,
-                           VectorText(spec.parameters, x.data()), summary.BriefReport()));
+      progress(fmt::format("{}: round {}: {} ({})", prefix, round,
+                           VectorText(stage.parameters, x.data()), brief));
 
     const std::vector<Statistic>& at_fit = model.At(x.data());
     const std::vector<double> refit =
-        Weights(targets, at_fit, VectorText(spec.parameters, x.data()));
+        Weights(targets, at_fit, VectorText(stage.parameters, x.data()));
     bool stable = true;
     for (int i = 0; i < m; ++i) stable = stable && std::abs(refit[i] / sigma[i] - 1) < 0.1;
     if (!stable && round < kMaxRounds) {
@@ -223,7 +280,8 @@ CalibrationResult Calibrate(const scene::Scene& scene, const data::LabDataset& l
     const std::vector<const double*> blocks = {x.data()};
     if (covariance.Compute(blocks, &problem)) {
       Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> c(p, p);
-      out.covariance_ok = covariance.GetCovarianceMatrix(blocks, c.data());
+      out.covariance_ok = covariance.GetCovarianceMatrix(blocks, c.data()) &&
+                          c.allFinite() && (c.diagonal().array() > 0).all();
       if (out.covariance_ok) out.covariance = c;
     }
     break;
@@ -231,23 +289,47 @@ CalibrationResult Calibrate(const scene::Scene& scene, const data::LabDataset& l
 
   for (int i = 0; i < p; ++i) {
     FittedParameter f;
-    f.name = spec.parameters[i].name;
-    f.start = spec.parameters[i].start;
-    f.estimate = x[i];
+    f.name = stage.parameters[static_cast<std::size_t>(i)].name;
+    f.start = stage.parameters[static_cast<std::size_t>(i)].start;
+    scene::Parameters before = scene.params;  // the table's accessor takes a mutable set
+    f.scene_value = scene::FindParam(f.name)->real(before);
+    f.estimate = x[static_cast<std::size_t>(i)];
     f.standard_error = out.covariance_ok ? std::sqrt(out.covariance(i, i)) : std::nan("");
     f.ci = {f.estimate - kZ95 * f.standard_error, f.estimate + kZ95 * f.standard_error};
     out.parameters.push_back(f);
   }
   const std::vector<Statistic>& fitted = model.At(x.data());
   for (int i = 0; i < m; ++i) {
+    const auto k = static_cast<std::size_t>(i);
     FittedTarget t;
-    t.target = targets[i];
-    t.start = at_start[i];
-    t.fitted = fitted[i];
-    t.residual = (fitted[i].value - targets[i].lab.value) / sigma[i];
+    t.target = targets[k];
+    t.start = at_start[k];
+    t.fitted = fitted[k];
+    t.residual = (fitted[k].value - targets[k].lab.value) / sigma[k];
     out.targets.push_back(t);
   }
   out.evaluations = model.evaluations();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return out;
+}
+
+scene::Scene WithEstimates(const scene::Scene& scene,
+                           const std::vector<CalibrationResult>& stages) {
+  scene::Scene out = scene;
+  for (const CalibrationResult& r : stages)
+    for (const FittedParameter& f : r.parameters) scene::FindParam(f.name)->real(out.params) = f.estimate;
+  return out;
+}
+
+std::vector<CalibrationResult> Calibrate(const scene::Scene& scene, const data::LabDataset& lab,
+                                         const CalibrationSpec& spec,
+                                         const std::string& experiment_file, std::uint64_t seed,
+                                         int trials, const experiment::RunnerOptions& options,
+                                         const CalibrationProgress& progress) {
+  std::vector<CalibrationResult> out;
+  for (const StageSpec& stage : spec.stages)
+    out.push_back(CalibrateStage(WithEstimates(scene, out), lab, spec, stage, experiment_file,
+                                 seed, trials, options, progress));
   return out;
 }
 

@@ -16,6 +16,16 @@
 // then re-evaluated at the fit and solved again from there until they change
 // by under 10 % (at most kMaxRounds): the covariance is that of the last
 // round, with sigma at the estimate.
+//
+// Solvers: Ceres' Levenberg-Marquardt, or for one parameter whose objective
+// is piecewise constant (a success rate over a few cycles) a bracketed
+// golden-section search on the same cost (bracketed_search.h), after which Ceres
+// computes the covariance at the estimate all the same.
+//
+// Stages: a calibration may fit in stages, each stage's parameters to its own
+// targets, on the scene with every earlier stage's estimates. The
+// covariance is then per stage: an earlier estimate's uncertainty is not
+// carried into a later stage's interval (the report says so).
 #pragma once
 
 #include <Eigen/Core>
@@ -35,6 +45,7 @@ namespace vahf::calibrate {
 
 using ParameterSpec = scene::FitParameter;
 using CalibrationSpec = scene::CalibrationDesign;
+using StageSpec = scene::CalibrationStage;
 // Rounds of re-weighting (see above).
 inline constexpr int kMaxRounds = 3;
 
@@ -47,6 +58,7 @@ scene::Scene WithParameters(const scene::Scene& scene, const std::vector<Paramet
 
 struct FittedParameter {
   std::string name;
+  double scene_value = 0;  // in the scene before this stage: what the fit replaces
   double start = 0, estimate = 0;
   double standard_error = 0;  // NaN when the covariance is rank deficient
   stats::Interval ci;         // estimate +- 1.96 standard errors (normal)
@@ -59,7 +71,10 @@ struct FittedTarget {
   double residual = 0;  // (fitted - lab) / sigma at the estimate
 };
 
+// The result of one stage.
 struct CalibrationResult {
+  std::string stage;   // its name ("" for a file of one stage)
+  std::string solver;  // "levenberg_marquardt" or "golden_section"
   std::vector<FittedParameter> parameters;
   Eigen::MatrixXd covariance;  // of the estimate, in the parameters' units
   bool covariance_ok = false;  // Ceres computed it (the problem is not rank deficient)
@@ -68,20 +83,34 @@ struct CalibrationResult {
   int rounds = 0;
   int evaluations = 0;     // virtual designs run (each `trials` cycles per condition)
   double final_cost = 0;   // 1/2 sum of robustified squared residuals
-  std::string ceres_brief;  // Summary::BriefReport of each round
-  std::string ceres_full;   // Summary::FullReport of the last round
+  std::string ceres_brief;  // Summary::BriefReport of each round (LM), or the search's
+  std::string ceres_full;   // Summary::FullReport of the last round (LM)
+  std::string search_log;   // golden_section: the walk and each iteration, every round
+  double seconds = 0;       // wall time of the stage
 };
 
 // Progress: one line per design evaluation and per Ceres iteration.
 using CalibrationProgress = std::function<void(const std::string& line)>;
 
-// Fits `spec` to `lab` on `scene`: each evaluation runs LabConditions with
-// `trials` cycles each from cycle 0 with `seed` on `options.threads`
-// threads. The same inputs give the same bits whatever the thread count.
-CalibrationResult Calibrate(const scene::Scene& scene, const data::LabDataset& lab,
-                            const CalibrationSpec& spec, const std::string& experiment_file,
-                            std::uint64_t seed, int trials,
-                            const experiment::RunnerOptions& options,
-                            const CalibrationProgress& progress = {});
+// Fits one stage of `spec` to `lab` on `scene`: each evaluation runs
+// LabConditions (or, for segment targets, the fatigue design) with `trials`
+// cycles each from cycle 0 with `seed` on `options.threads` threads. The same
+// inputs give the same bits whatever the thread count.
+CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDataset& lab,
+                                 const CalibrationSpec& spec, const StageSpec& stage,
+                                 const std::string& experiment_file, std::uint64_t seed,
+                                 int trials, const experiment::RunnerOptions& options,
+                                 const CalibrationProgress& progress = {});
+
+// Every stage in order, each on the scene with the earlier stages' estimates.
+std::vector<CalibrationResult> Calibrate(const scene::Scene& scene, const data::LabDataset& lab,
+                                         const CalibrationSpec& spec,
+                                         const std::string& experiment_file, std::uint64_t seed,
+                                         int trials, const experiment::RunnerOptions& options,
+                                         const CalibrationProgress& progress = {});
+
+// `scene` with every stage's estimates set.
+scene::Scene WithEstimates(const scene::Scene& scene,
+                           const std::vector<CalibrationResult>& stages);
 
 }  // namespace vahf::calibrate

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "vahf/calibrate/calibration.h"
 #include "vahf/data/lab_dataset.h"
@@ -19,9 +20,10 @@ inline constexpr const char* kOverridesFile = "calibrated.json";
 
 // {"format": "vahf-overrides/1", "source": ..., "parameters": {"group/key": value}}.
 nlohmann::json OverridesJson(const scene::ExperimentFile& file,
-                             const calibrate::CalibrationResult& result);
+                             const std::vector<calibrate::CalibrationResult>& stages);
 
+// One subsection per stage (a file of one stage: one).
 Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDataset& lab,
-                           const calibrate::CalibrationResult& result);
+                           const std::vector<calibrate::CalibrationResult>& stages);
 
 }  // namespace vahf::report

@@ -206,32 +206,34 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, boo
   return out;
 }
 
-void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFile* e) {
-  CalibrationDesign& d = e->calibration;
-  d.lab_path = ResolvePath(root.Required("lab"), path, "lab dataset");
-  if (auto step = root.Optional("relative_step")) d.relative_step = step->InRange(1e-4, 0.5);
-  if (auto it = root.Optional("max_iterations"))
-    d.max_iterations = static_cast<int>(it->Integer(1, 1000));
-  if (auto loss = root.Optional("loss")) {
-    loss->ExpectObject({"kind", "scale"});
-    d.loss = loss->Required("kind").Choice({"huber", "cauchy", "none"});
-    if (auto scale = loss->Optional("scale")) d.loss_scale = scale->InRange(0.1, 100);
-  }
-  const JsonNode params = root.Required("parameters");
+// A stage's parameters, targets and solver, from `node` (a stage of
+// "stages", or the file's root for a file of one stage).
+CalibrationStage ReadStage(const JsonNode& node, const CalibrationDesign& d, const Scene& scene,
+                           const std::string& path) {
+  CalibrationStage stage;
+  if (auto solver = node.Optional("solver"))
+    stage.solver = solver->Choice({"levenberg_marquardt", "golden_section"});
+  const JsonNode params = node.Required("parameters");
   const std::size_t n = params.ArraySize(1);
+  if (stage.solver == "golden_section" && n != 1)
+    params.Fail("the golden_section solver fits exactly one parameter; use levenberg_marquardt, or one "
+                "stage per parameter");
   for (std::size_t k = 0; k < n; ++k) {
-    const JsonNode node = params.At(k);
-    node.ExpectObject({"name", "start", "lower", "upper"});
+    const JsonNode p_node = params.At(k);
+    p_node.ExpectObject({"name", "start", "lower", "upper"});
     FitParameter p;
-    p.pointer = node.path();
-    const JsonNode name = node.Required("name");
+    p.pointer = p_node.path();
+    const JsonNode name = p_node.Required("name");
     p.name = name.Choice(ParamNames());
     const ParamSpec& spec = *FindParam(p.name);
     if (!spec.real) name.Fail("a calibration fits real-valued parameters");
-    for (const FitParameter& other : d.parameters)
+    for (const CalibrationStage& earlier : d.stages)
+      for (const FitParameter& other : earlier.parameters)
+        if (other.name == p.name) name.Fail("fitted once only (also at " + other.pointer + ")");
+    for (const FitParameter& other : stage.parameters)
       if (other.name == p.name) name.Fail("fitted once only (also at " + other.pointer + ")");
-    const JsonNode lower = node.Required("lower"), upper = node.Required("upper"),
-                   start = node.Required("start");
+    const JsonNode lower = p_node.Required("lower"), upper = p_node.Required("upper"),
+                   start = p_node.Required("start");
     p.lower = lower.Number();
     p.upper = upper.Number();
     p.start = start.Number();
@@ -241,16 +243,52 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
     // Numeric derivatives step a relative_step beyond the bounds.
     CheckFitValue(spec, lower, p.lower * (1 - d.relative_step), d.relative_step);
     CheckFitValue(spec, upper, p.upper * (1 + d.relative_step), d.relative_step);
-    d.parameters.push_back(p);
+    stage.parameters.push_back(p);
   }
-  d.targets = ReadTargets(root.Required("targets"), e->scene, false);
-  // One virtual design per calibration: the lab's operators, or the hour of
-  // work in segments.
-  for (const FitTarget& t : d.targets)
-    if ((t.segment > 0) != (d.targets[0].segment > 0))
+  stage.targets = ReadTargets(node.Required("targets"), scene, false);
+  // One virtual design per stage: the lab's operators, or the hour of work
+  // in segments.
+  for (const FitTarget& t : stage.targets)
+    if ((t.segment > 0) != (stage.targets[0].segment > 0))
       throw InputError(path, t.pointer, t.quantity,
                        "targets of segments and targets without a segment cannot be fitted "
-                       "together (one runs the fatigue design, the other the lab's operators)");
+                       "in one stage (one runs the fatigue design, the other the lab's "
+                       "operators): put them in stages of their own");
+  return stage;
+}
+
+void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+  CalibrationDesign& d = e->calibration;
+  d.lab_path = ResolvePath(root.Required("lab"), path, "lab dataset");
+  if (auto step = root.Optional("relative_step")) d.relative_step = step->InRange(1e-4, 0.5);
+  if (auto it = root.Optional("max_iterations"))
+    d.max_iterations = static_cast<int>(it->Integer(1, 1000));
+  if (auto tol = root.Optional("tolerance")) d.tolerance = tol->InRange(1e-4, 0.5);
+  if (auto loss = root.Optional("loss")) {
+    loss->ExpectObject({"kind", "scale"});
+    d.loss = loss->Required("kind").Choice({"huber", "cauchy", "none"});
+    if (auto scale = loss->Optional("scale")) d.loss_scale = scale->InRange(0.1, 100);
+  }
+  if (auto stages = root.Optional("stages")) {
+    for (const char* key : {"parameters", "targets", "solver"})
+      if (auto node = root.Optional(key))
+        node->Fail("a calibration in stages states its parameters, targets and solver in "
+                   "each stage");
+    const std::size_t n = stages->ArraySize(1);
+    for (std::size_t k = 0; k < n; ++k) {
+      const JsonNode node = stages->At(k);
+      node.ExpectObject({"name", "solver", "parameters", "targets"});
+      CalibrationStage stage = ReadStage(node, d, e->scene, path);
+      stage.pointer = node.path();
+      stage.name = node.Required("name").String();
+      for (const CalibrationStage& earlier : d.stages)
+        if (earlier.name == stage.name)
+          node.Required("name").Fail("a stage name is used once (also " + earlier.pointer + ")");
+      d.stages.push_back(std::move(stage));
+    }
+  } else {
+    d.stages.push_back(ReadStage(root, d, e->scene, path));
+  }
 }
 
 void ReadComparison(const JsonNode& root, const std::string& path, ExperimentFile* e) {
@@ -321,7 +359,7 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
                      "operators", "conditions", "instants_s", "paper_cycle_s", "fatigue",
                      "experiments", "paper_table", "scenes", "reference", "settings",
                      "noise_trials", "lab", "parameters", "targets", "loss", "relative_step",
-                     "max_iterations", "quantities"});
+                     "max_iterations", "tolerance", "solver", "stages", "quantities"});
   const JsonNode format = root.Required("format");
   if (format.String() != kExperimentFormat)
     format.Fail(std::string("an experiment file declares \"format\": \"") +
@@ -350,7 +388,8 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
   only_for("paper_table", "table1");
   for (const char* key : {"scenes", "reference", "settings", "noise_trials"})
     only_for(key, "precision");
-  for (const char* key : {"parameters", "targets", "loss", "relative_step", "max_iterations"})
+  for (const char* key : {"parameters", "targets", "loss", "relative_step", "max_iterations",
+                          "tolerance", "solver", "stages"})
     only_for(key, "calibrate");
   only_for("quantities", "compare");
   if (auto lab = root.Optional("lab"); lab && e.kind != "calibrate" && e.kind != "compare")
@@ -422,10 +461,11 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
   }
   e.calibration.fatigue = e.fatigue;
   // A calibration's segment targets lie within its fatigue design's hour.
-  for (const FitTarget& t : e.calibration.targets)
-    if (t.segment > e.fatigue.segments)
-      throw InputError(path, t.pointer + "/segment", std::to_string(t.segment),
-                       fmt::format("the fatigue design has {} segments", e.fatigue.segments));
+  for (const CalibrationStage& stage : e.calibration.stages)
+    for (const FitTarget& t : stage.targets)
+      if (t.segment > e.fatigue.segments)
+        throw InputError(path, t.pointer + "/segment", std::to_string(t.segment),
+                         fmt::format("the fatigue design has {} segments", e.fatigue.segments));
   return e;
 }
 

@@ -116,18 +116,33 @@ struct ComparisonDesign {
   std::vector<FitTarget> quantities;
 };
 
-// Ceres least squares of parameters to a lab dataset's summaries
-// (calibrate/calibration.h).
-struct CalibrationDesign {
-  std::string lab_path;  // the lab dataset's manifest
+// One stage of a calibration: parameters fitted to targets by a solver.
+struct CalibrationStage {
+  std::string name;     // the file's stage name; "" for a file of one stage
+  std::string pointer;  // where the file states it ("" for a file of one stage)
+  // "levenberg_marquardt" (Ceres) or "golden_section" (one parameter: GSL's bracketed
+  // golden-section minimisation of the same cost, for objectives that are piecewise
+  // constant in the parameter; Ceres then gives the covariance).
+  std::string solver = "levenberg_marquardt";
   std::vector<FitParameter> parameters;
   std::vector<FitTarget> targets;
+};
+
+// Ceres least squares of parameters to a lab dataset's summaries
+// (calibrate/calibration.h), in stages: each stage starts from the scene with
+// every earlier stage's estimates (a sequential calibration).
+struct CalibrationDesign {
+  std::string lab_path;  // the lab dataset's manifest
+  std::vector<CalibrationStage> stages;  // at least one
   // Robust loss on the whitened residuals: "huber", "cauchy" or "none"; its
   // scale in standard deviations (residuals beyond it are down-weighted).
   std::string loss = "huber";
   double loss_scale = 3.0;
   double relative_step = 0.05;  // of each parameter's value, central differences
-  int max_iterations = 30;      // Levenberg-Marquardt iterations per round
+  int max_iterations = 30;      // Levenberg-Marquardt (or golden-section) iterations per round
+  // golden_section: the search stops when the bracket is narrower than this fraction
+  // of the estimate.
+  double tolerance = 0.02;
   // The hour of work that segment targets are read from (the file's
   // "fatigue", as the fatigue kind reads it).
   FatigueDesign fatigue;

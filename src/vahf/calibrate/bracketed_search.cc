@@ -1,0 +1,223 @@
+#include "vahf/calibrate/bracketed_search.h"
+
+#include <fmt/format.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+namespace vahf::calibrate {
+namespace {
+
+// The golden ratio: each step of the walk is this many times the last
+// (Numerical Recipes' mnbrak).
+constexpr double kGrow = 1.618034;
+// Higher than any cost a calibration computes (a sum of squared whitened
+// residuals): what a non-finite cost counts as, since GSL refuses one.
+constexpr double kNoCost = 1e100;
+// Points closer than this fraction of the tolerance are one point.
+constexpr double kSame = 1e-3;
+
+// The search variable u: log(x) for a positive range, else x.
+struct Scale {
+  bool logs;
+  double ToU(double x) const { return logs ? std::log(x) : x; }
+  double ToX(double u) const { return logs ? std::exp(u) : u; }
+};
+
+// Restores GSL's error handler on scope exit: the search reads GSL's status
+// codes instead of letting its default handler abort.
+struct GslHandlerOff {
+  gsl_error_handler_t* old = gsl_set_error_handler_off();
+  ~GslHandlerOff() { gsl_set_error_handler(old); }
+};
+
+}  // namespace
+
+BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, double lower,
+                                  double upper, double start, double tolerance,
+                                  int max_iterations,
+                                  const std::optional<std::array<double, 3>>& hint) {
+  if (!(lower < upper && lower <= start && start <= upper && tolerance > 0))
+    throw std::invalid_argument("MinimizeBracketed: needs lower <= start <= upper, tolerance > 0");
+  const Scale scale{lower > 0};
+  const double lo = scale.ToU(lower), hi = scale.ToU(upper);
+  BracketedSearch out;
+  std::map<double, double> seen;  // u -> cost
+  // Points given as x (the start, the bounds, a hint) are evaluated at that x
+  // exactly, not at exp(log(x)): the caller's cache knows them by their bits.
+  std::map<double, double> given = {{scale.ToU(start), start}, {lo, lower}, {hi, upper}};
+  if (hint)
+    for (double x : *hint)
+      if (lower <= x && x <= upper) given.emplace(scale.ToU(x), x);
+  // GSL's golden section computes each new interior point afresh, so a point
+  // it has evaluated comes back some ulps off: a point within kSame of the
+  // tolerance from one seen is that point (each evaluation is a whole design).
+  auto f = [&](double u) {
+    u = std::clamp(u, lo, hi);
+    const double same =
+        kSame * (scale.logs ? std::log1p(tolerance) : tolerance * std::fabs(u));
+    auto it = seen.lower_bound(u - same);
+    if (it != seen.end() && it->first <= u + same) return it->second;
+    const auto exact = given.find(u);
+    const double x =
+        exact != given.end() ? exact->second : std::clamp(scale.ToX(u), lower, upper);
+    double c = cost(x);
+    if (!std::isfinite(c)) c = kNoCost;
+    seen.emplace(u, c);
+    return c;
+  };
+  // The lowest cost seen (ties: the one nearest the start) and its strictly
+  // higher neighbours, if any.
+  const double u0 = scale.ToU(start);
+  struct Bracket {
+    std::map<double, double>::iterator a, m, c;
+    bool has_a = false, has_c = false;
+  };
+  auto bracket_of_seen = [&] {
+    Bracket b;
+    b.m = seen.begin();
+    for (auto it = seen.begin(); it != seen.end(); ++it)
+      if (it->second < b.m->second ||
+          (it->second == b.m->second && std::fabs(it->first - u0) < std::fabs(b.m->first - u0)))
+        b.m = it;
+    for (auto it = b.m; it != seen.begin();) {
+      --it;
+      if (it->second > b.m->second) {
+        b.a = it;
+        b.has_a = true;
+        break;
+      }
+    }
+    for (auto it = std::next(b.m); it != seen.end(); ++it)
+      if (it->second > b.m->second) {
+        b.c = it;
+        b.has_c = true;
+        break;
+      }
+    return b;
+  };
+
+  const auto x_of = [&](double u) {
+    const auto exact = given.find(u);
+    return exact != given.end() ? exact->second : std::clamp(scale.ToX(u), lower, upper);
+  };
+  bool hinted = false;
+  if (hint) {
+    const double a = scale.ToU((*hint)[0]), m = scale.ToU((*hint)[1]), c = scale.ToU((*hint)[2]);
+    const double fm = f(m);
+    hinted = a < m && m < c && fm < f(a) && fm < f(c);
+    if (hinted) out.log += fmt::format("bracket from the last round: [{:.6g}, {:.6g}, {:.6g}]\n",
+                                       (*hint)[0], (*hint)[1], (*hint)[2]);
+  }
+  // How narrow a bracket must get, in u, around `u`.
+  const auto narrow_enough = [&](double a, double c, double u) {
+    return c - a < (scale.logs ? std::log1p(tolerance)
+                               : tolerance * std::max(std::fabs(u), 1e-300));
+  };
+  Bracket b;
+  if (!hinted) {
+    double step = scale.logs ? std::log(2.0) : (hi - lo) / 8;
+    f(u0);
+    f(u0 < hi ? u0 + step : u0 - step);
+    for (;;) {
+      b = bracket_of_seen();
+      out.log += fmt::format("walk: lowest cost {:.6g} at {:.6g}\n", b.m->second,
+                             x_of(b.m->first));
+      if (b.has_a && b.has_c) break;
+      const double left = seen.begin()->first, right = std::prev(seen.end())->first;
+      int dir = 0;
+      if (!b.has_a && left > lo) {
+        dir = -1;
+      } else if (!b.has_c && right < hi) {
+        dir = 1;
+      }
+      if (dir == 0) break;  // each side without a higher cost has reached its bound
+      step *= kGrow;
+      f(dir > 0 ? right + step : left - step);
+    }
+    // One side is flat (or falling) up to its bound, the other has a higher
+    // cost. A step function may hide its minimum in the gap between that
+    // higher point and the flat run, which the growing steps jumped: bisect
+    // the gap until a lower cost appears or the run's edge is found.
+    if (b.has_a != b.has_c) {
+      const double low = b.m->second;
+      double high_u = b.has_a ? b.a->first : b.c->first;
+      double run_u = b.has_a ? std::next(b.a)->first : std::prev(b.c)->first;
+      while (!narrow_enough(std::min(high_u, run_u), std::max(high_u, run_u), run_u)) {
+        const double q = 0.5 * (high_u + run_u);
+        const double fq = f(q);
+        out.log += fmt::format("gap: cost {:.6g} at {:.6g}\n", fq, x_of(q));
+        if (fq < low) break;  // bracketed: (the higher point, q, the run)
+        (fq > low ? high_u : run_u) = q;
+      }
+      b = bracket_of_seen();
+    }
+    out.at_bound = !(b.has_a && b.has_c);
+  }
+  b = bracket_of_seen();
+  out.estimate = x_of(b.m->first);
+  out.cost = b.m->second;
+  if (!(b.has_a && b.has_c)) {
+    out.at_bound = true;
+    out.bracket = {out.estimate, out.estimate, out.estimate};
+    return out;
+  }
+
+  // Golden section inside the bracket, on the cached values of its three
+  // points.
+  const GslHandlerOff handler;
+  std::unique_ptr<gsl_min_fminimizer, decltype(&gsl_min_fminimizer_free)> s(
+      gsl_min_fminimizer_alloc(gsl_min_fminimizer_goldensection), &gsl_min_fminimizer_free);
+  // An exception (an interrupt, an input error at a new point) must not
+  // unwind through GSL's C frames: it is kept and rethrown here.
+  using Cost = decltype(f);
+  struct Call {
+    Cost* cost;
+    std::exception_ptr error;
+  } call{&f, nullptr};
+  gsl_function fn;
+  fn.function = [](double u, void* p) {
+    Call* c = static_cast<Call*>(p);
+    try {
+      return (*c->cost)(u);
+    } catch (...) {
+      c->error = std::current_exception();
+      return std::nan("");  // GSL stops with GSL_EBADFUNC
+    }
+  };
+  fn.params = &call;
+  if (gsl_min_fminimizer_set_with_values(s.get(), &fn, b.m->first, b.m->second, b.a->first,
+                                         b.a->second, b.c->first, b.c->second) != GSL_SUCCESS)
+    throw std::logic_error("MinimizeBracketed: GSL refused a strict bracket");
+  auto narrow = [&] {
+    return narrow_enough(gsl_min_fminimizer_x_lower(s.get()),
+                         gsl_min_fminimizer_x_upper(s.get()),
+                         gsl_min_fminimizer_x_minimum(s.get()));
+  };
+  while (!narrow() && out.iterations < max_iterations) {
+    const int status = gsl_min_fminimizer_iterate(s.get());
+    if (call.error) std::rethrow_exception(call.error);
+    if (status != GSL_SUCCESS) break;
+    ++out.iterations;
+    out.log += fmt::format("golden {}: [{:.6g}, {:.6g}], lowest cost {:.6g} at {:.6g}\n",
+                           out.iterations, scale.ToX(gsl_min_fminimizer_x_lower(s.get())),
+                           scale.ToX(gsl_min_fminimizer_x_upper(s.get())),
+                           gsl_min_fminimizer_f_minimum(s.get()),
+                           scale.ToX(gsl_min_fminimizer_x_minimum(s.get())));
+  }
+  out.converged = narrow();
+  out.estimate = x_of(gsl_min_fminimizer_x_minimum(s.get()));
+  out.cost = gsl_min_fminimizer_f_minimum(s.get());
+  out.bracket = {x_of(gsl_min_fminimizer_x_lower(s.get())), out.estimate,
+                 x_of(gsl_min_fminimizer_x_upper(s.get()))};
+  return out;
+}
+
+}  // namespace vahf::calibrate
