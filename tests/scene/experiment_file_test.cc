@@ -181,7 +181,8 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       {"precision_cylinder.json", "precision"},
       {"calibrate_synthetic.json", "calibrate"},
       {"calibrate_paper.json", "calibrate"},
-      {"compare_synthetic.json", "compare"}};
+      {"compare_synthetic.json", "compare"},
+      {"compare_paper.json", "compare"}};
   std::set<std::string> found;
   for (const auto& entry :
        std::filesystem::directory_iterator(SourcePath("experiments"))) {
@@ -1293,6 +1294,91 @@ TEST(CalibrateErrorsTest, StagesAreWellFormed) {
   ExpectError(table, "/stages", "only an experiment of kind \"calibrate\"");
 }
 
+// ---------------------------------------------------------------------------
+// Comparisons (compare).
+
+// A comparison against the paper's numbers: quantities of segments and
+// conditions beside one without, and the hour of work they read.
+json ComparePaper() {
+  json e = Experiment("compare");
+  e["lab"] = SourcePath("data/paper/dataset.json");
+  e["fatigue"] = {{"duration_min", 60}, {"segments", 4}, {"pilot_cycles", 3}};
+  e["quantities"] = {
+      {{"quantity", "assembly_time"}, {"part", "all"}, {"margin", 1}},
+      {{"quantity", "assembly_time"}, {"part", "all"}, {"condition", "virtual"}, {"margin", 1.5}},
+      {{"quantity", "success_rate"},
+       {"part", "all"},
+       {"segment", 4},
+       {"condition", "real"},
+       {"margin", 0.1}}};
+  return e;
+}
+
+TEST(CompareTest, SegmentsAndConditionsLoadWithTheFatigueDesign) {
+  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", ComparePaper()));
+  EXPECT_EQ(e.kind, "compare");
+  const ComparisonDesign& d = e.comparison;
+  EXPECT_TRUE(std::filesystem::equivalent(d.lab_path, SourcePath("data/paper/dataset.json")));
+  ASSERT_EQ(d.quantities.size(), 3u);
+  EXPECT_EQ(d.quantities[0].segment, 0);
+  EXPECT_EQ(d.quantities[0].condition, "");  // any
+  EXPECT_DOUBLE_EQ(d.quantities[0].margin, 1.0);
+  EXPECT_EQ(d.quantities[1].condition, "virtual");
+  EXPECT_DOUBLE_EQ(d.quantities[1].margin, 1.5);
+  EXPECT_EQ(d.quantities[2].quantity, "success_rate");
+  EXPECT_EQ(d.quantities[2].segment, 4);
+  EXPECT_EQ(d.quantities[2].condition, "real");
+  EXPECT_EQ(d.quantities[2].pointer, "/quantities/2");
+  EXPECT_DOUBLE_EQ(d.fatigue.duration_min, 60);
+  EXPECT_EQ(d.fatigue.segments, 4);
+  EXPECT_EQ(d.fatigue.pilot_cycles, 3);
+}
+
+TEST(CompareTest, ShippedPaperComparison) {
+  const ExperimentFile e = LoadExperiment(SourcePath("experiments/compare_paper.json"));
+  EXPECT_EQ(e.scene.name, "hydraulic_cylinder");
+  const ComparisonDesign& d = e.comparison;
+  ASSERT_EQ(d.quantities.size(), 6u);
+  EXPECT_EQ(d.quantities[0].condition, "virtual");
+  EXPECT_EQ(d.quantities[1].condition, "");
+  EXPECT_EQ(d.quantities[5].segment, 4);
+  EXPECT_EQ(d.quantities[5].condition, "virtual");
+  EXPECT_EQ(d.fatigue.segments, 4);
+  EXPECT_EQ(d.fatigue.pilot_cycles, 4);
+}
+
+TEST(CompareErrorsTest, BadSegmentsAndConditions) {
+  json doc = ComparePaper();
+  doc["quantities"][2]["segment"] = 5;  // the hour has 4
+  ExpectError(doc, "/quantities/2/segment", "the fatigue design has 4 segments", "5");
+  doc = ComparePaper();
+  doc.erase("fatigue");  // the default hour has 4 segments too
+  doc["quantities"][2]["segment"] = 7;
+  ExpectError(doc, "/quantities/2/segment", "the fatigue design has 4 segments", "7");
+  doc = ComparePaper();
+  doc["quantities"][2]["segment"] = 0;
+  ExpectError(doc, "/quantities/2/segment", "must lie in [1, 1000]", "0");
+  doc["quantities"][2]["segment"] = 1.5;
+  ExpectError(doc, "/quantities/2/segment", "must be an integer", "1.5");
+  doc = ComparePaper();
+  doc["quantities"][2]["by"] = "operator";
+  ExpectError(doc, "/quantities/2/by", "a segment's value is the lab's over all operators");
+  doc = ComparePaper();
+  doc["quantities"][1]["condition"] = "";
+  ExpectError(doc, "/quantities/1/condition", "leave the key out to read any");
+  doc["quantities"][1]["condition"] = 3;
+  ExpectError(doc, "/quantities/1/condition", "must be a string");
+  doc = ComparePaper();
+  doc["quantities"][2]["segmnt"] = 1;
+  ExpectError(doc, "/quantities/2/segmnt", "did you mean 'segment'?");
+  doc = ComparePaper();
+  doc["quantities"][2].erase("margin");
+  ExpectError(doc, "/quantities/2/margin", "required field 'margin' is missing");
+  doc = ComparePaper();
+  doc["fatigue"]["segments"] = 0;
+  ExpectError(doc, "/fatigue/segments", "must lie in [1, 1000]", "0");
+}
+
 TEST(FormatOfTest, NamesEveryVahfFormat) {
   const std::vector<std::pair<std::string, std::string>> files = {
       {"experiments/scenes/steel_block_move.json", "scene"},
@@ -1398,8 +1484,8 @@ TEST(WrongKindTest, WhatReadsFileWhereValueRule) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               path +
-                  ": /fatigue = {\"segments\":4}: only an experiment of kind \"fatigue\" or \"calibrate\" "
-                  "reads \"fatigue\"");
+                  ": /fatigue = {\"segments\":4}: only an experiment of kind \"fatigue\", "
+                  "\"calibrate\" or \"compare\" reads \"fatigue\"");
   }
 }
 

@@ -256,6 +256,35 @@ run check "$synthetic_dataset"
 expect_status "check synthetic dataset" 0
 expect_in "check synthetic dataset" "$out" "$synthetic_dataset: valid lab dataset"
 
+# --- check: the comparison against the paper's numbers reads what the paper
+# reports (no trials) for each quantity; one that names no condition where the
+# paper reports two is refused before any simulation (one line, exit 2).
+compare_paper=$root/experiments/compare_paper.json
+run check "$compare_paper"
+expect_status "check compare_paper" 0
+for text in "compares assembly_time of all, virtual within +-1 s: lab 9.2 s from reported once, no spread (a single draw)" \
+    "compares assembly_time of all within +-1 s: lab 16 s from reported, no spread" \
+    "compares success_rate of all, segment 4, real within +-0.1: lab 0.68 from reported" \
+    "segments from the fatigue design: 60 min in 4 segments, 4 pilot cycles" \
+    "$compare_paper: valid experiment"; do
+  expect_in "check compare_paper" "$out" "$text"
+done
+expect_lines "check compare_paper" "$err" 0
+ambiguous=$tmp/compare_ambiguous.json
+python3 - "$compare_paper" "$ambiguous" "$root" <<'PY'
+import json, sys
+e = json.load(open(sys.argv[1]))
+e["scene"] = sys.argv[3] + "/experiments/scenes/hydraulic_cylinder.json"
+e["lab"] = sys.argv[3] + "/data/paper/dataset.json"
+del e["quantities"][2]["condition"]
+json.dump(e, open(sys.argv[2], "w"))
+PY
+run check "$ambiguous"
+expect_status "check compare with an ambiguous condition" 2
+expect_lines "check compare with an ambiguous condition" "$err" 1
+expect_in "check compare with an ambiguous condition" "$err" \
+  "$ambiguous: /quantities/2/condition = (missing): the lab reports success_rate of all, segment 1 for condition 'virtual'"
+
 # --- check: a parameter override file is valid and listed.
 overrides=$tmp/overrides.json
 cat >"$overrides" <<'EOF'

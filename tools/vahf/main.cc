@@ -116,14 +116,20 @@ int Check(const std::string& path) {
       const vahf::data::LabDataset lab = vahf::data::LoadLabDataset(e.comparison.lab_path);
       std::fputs(vahf::data::DescribeLabDataset(lab).c_str(), stdout);
       vahf::calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
-      for (const vahf::scene::FitTarget& q : e.comparison.quantities) {
-        // The lab must hold trials of each quantity's part, as a run checks.
-        if (vahf::calibrate::LabSamples(lab, q, "").attempts == 0)
-          throw vahf::InputError(e.file, q.pointer, q.part,
-                                 "the lab dataset " + lab.file + " has no trials of this part");
-        std::printf("  compares %s of %s%s within +-%g\n", q.quantity.c_str(), q.part.c_str(),
-                    q.by_operator ? " per operator" : "", q.margin);
+      // The lab's side of every quantity, as a run reads it before simulating.
+      bool segments = false;
+      for (const auto& q : vahf::compare::LabSide(lab, e.comparison, e.file)) {
+        const char* unit = q.target.unit == "s" ? " s" : "";
+        std::printf("  compares %s within +-%g%s: lab %g%s from %s\n", q.target.label.c_str(),
+                    q.margin, unit, q.target.lab.value, unit,
+                    vahf::compare::LabBasis(q.target, q.reported).c_str());
+        segments = segments || q.target.spec.segment > 0;
       }
+      const vahf::scene::FatigueDesign& f = e.comparison.fatigue;
+      if (segments)
+        std::printf("  segments from the fatigue design: %g min in %d segments, %d pilot "
+                    "cycles\n",
+                    f.duration_min, f.segments, f.pilot_cycles > 0 ? f.pilot_cycles : e.trials);
       std::fputs(vahf::scene::DescribeScene(e.scene).c_str(), stdout);
       CheckModels(e.scene);
     } else if (e.kind == "paper") {
@@ -254,13 +260,19 @@ int RunComparison(const vahf::scene::ExperimentFile& file,
   options.threads = settings.threads;
   options.label = file.name + " (compare)";
   options.unit = "cycles";
+  vahf::experiment::RunnerOptions pilot_options = options;
+  pilot_options.label = file.name + " (compare, fatigue pilot)";
   const auto start = std::chrono::steady_clock::now();
   const vahf::compare::ComparisonResult result = vahf::compare::Compare(
-      file.scene, lab, file.comparison, file.file, settings.seed, trials, options);
+      file.scene, lab, file.comparison, file.file, settings.seed, trials, options,
+      pilot_options);
   const vahf::report::RunInfo info{a.threads, SecondsSince(start)};
-  const vahf::report::RunOutput written =
-      WriteLabRun(file, lab, settings.seed, trials, " per lab operator",
-                  vahf::report::ComparisonSection(file, lab, result), directory, info);
+  const vahf::report::RunOutput written = WriteLabRun(
+      file, lab, settings.seed, trials,
+      result.fatigue.run.conditions.empty() ? " per lab operator"
+      : result.run.conditions.empty()       ? " per segment"
+                                            : " per lab operator and per segment",
+      vahf::report::ComparisonSection(file, lab, result, trials), directory, info);
   for (const auto& q : result.quantities)
     std::printf("%s: %s\n", q.target.label.c_str(), q.verdict.c_str());
   std::printf("%s: compare, seed %llu, %.1f s on %d thread(s)\nresults digest %s\n"

@@ -55,47 +55,81 @@ bool Matches(const std::string& wanted, const std::string& row) {
   return wanted.empty() || wanted == row;
 }
 
+// The row of `rows` (segments.csv or summaries.csv, the file `file`) that
+// answers `spec` among those `fits` accepts: the first whose condition is the
+// spec's; for a spec without a condition and no row without one, the rows of
+// the one condition they share (rows of several conditions: an InputError,
+// the spec must name one). None: nullptr.
+template <typename Row, typename Fits>
+const Row* ReportedRow(const std::vector<Row>& rows, const Fits& fits, const TargetSpec& spec,
+                       const std::string& file, const std::string& experiment_file) {
+  const Row* any = nullptr;
+  for (const Row& r : rows)
+    if (fits(r) && r.condition == spec.condition) return &r;
+  if (!spec.condition.empty()) return nullptr;
+  for (const Row& r : rows) {
+    if (!fits(r)) continue;
+    if (any && any->condition != r.condition)
+      throw InputError(experiment_file, spec.pointer + "/condition", "(missing)",
+                       fmt::format("the lab reports {} of {}{} for condition '{}' ({}, line "
+                                   "{}) and '{}' (line {}): name the one to read",
+                                   spec.quantity, spec.part,
+                                   spec.segment > 0 ? fmt::format(", segment {}", spec.segment)
+                                                    : "",
+                                   any->condition, file, any->line, r.condition, r.line));
+    if (!any) any = &r;
+  }
+  return any;
+}
+
 // A statistic the lab reports without its trials, for a target: a segment's
 // attempts and successes (segments.csv), or a row of summaries.csv with the
 // target's quantity, part ("all" matches a row for the whole assembly),
-// condition and segment. Its variance: sd^2 / n when the row gives both; for
-// a rate with n, that of a rate of n trials (the Laplace estimate, as for
-// trials); for a time with n = 1 and no sd, a single draw (Statistic::
-// single_draw); else the reading uncertainty's (a half-width taken as 1.96 sd).
-// Nothing found: nullopt. Found without any uncertainty: an InputError, since
-// a residual needs a weight.
+// segment and condition (ReportedRow). Its variance: sd^2 / n when the row
+// gives both; for a rate with n, that of a rate of n trials (the Laplace
+// estimate, as for trials); for a time with n = 1 and no sd, a single draw
+// (Statistic::single_draw); else the reading uncertainty's (a half-width
+// taken as 1.96 sd). Nothing found: nullopt. Found without any uncertainty:
+// an InputError, since a residual needs a weight, or with Unweighted::kPoint
+// the value with a NaN variance.
 std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab, const TargetSpec& spec,
-                                           const std::string& experiment_file) {
+                                           const std::string& experiment_file,
+                                           Unweighted unweighted) {
   if (spec.quantity == "success_rate" && spec.segment > 0)
-    for (const data::LabSegment& g : lab.segments)
-      if (g.segment == spec.segment && Matches(spec.condition, g.condition))
-        return RateStatistic(g.successes, g.attempts);
-  for (const data::LabSummary& r : lab.summaries) {
-    if (r.quantity != spec.quantity || r.part != spec.part || r.segment != spec.segment ||
-        !Matches(spec.condition, r.condition))
-      continue;
-    Statistic out;
-    out.value = r.value;
-    out.n = r.n;
-    if (std::isfinite(r.sd) && r.n > 0) {
-      out.variance = r.sd * r.sd / r.n;
-    } else if (spec.quantity == "assembly_time" && r.n == 1) {
-      out.single_draw = true;
-      out.variance = std::numeric_limits<double>::quiet_NaN();
-    } else if (spec.quantity == "success_rate" && r.n > 0) {
-      const double p = (r.value * r.n + 1.0) / (r.n + 2.0);
-      out.variance = p * (1 - p) / r.n;
-    } else if (std::isfinite(r.uncertainty) && r.uncertainty > 0) {
-      out.variance = (r.uncertainty / 1.96) * (r.uncertainty / 1.96);
-    } else {
-      throw InputError(experiment_file, spec.pointer, spec.quantity,
-                       fmt::format("the lab reports {} = {} ({}, line {}) without sd and n or "
-                                   "an uncertainty: a calibration cannot weigh it",
-                                   r.quantity, r.value, lab.summaries_file, r.line));
-    }
-    return out;
+    if (const data::LabSegment* g = ReportedRow(
+            lab.segments, [&](const data::LabSegment& s) { return s.segment == spec.segment; },
+            spec, lab.segments_file, experiment_file))
+      return RateStatistic(g->successes, g->attempts);
+  const data::LabSummary* found = ReportedRow(
+      lab.summaries,
+      [&](const data::LabSummary& r) {
+        return r.quantity == spec.quantity && r.part == spec.part && r.segment == spec.segment;
+      },
+      spec, lab.summaries_file, experiment_file);
+  if (!found) return std::nullopt;
+  const data::LabSummary& r = *found;
+  Statistic out;
+  out.value = r.value;
+  out.n = r.n;
+  if (std::isfinite(r.sd) && r.n > 0) {
+    out.variance = r.sd * r.sd / r.n;
+  } else if (spec.quantity == "assembly_time" && r.n == 1) {
+    out.single_draw = true;
+    out.variance = std::numeric_limits<double>::quiet_NaN();
+  } else if (spec.quantity == "success_rate" && r.n > 0) {
+    const double p = (r.value * r.n + 1.0) / (r.n + 2.0);
+    out.variance = p * (1 - p) / r.n;
+  } else if (std::isfinite(r.uncertainty) && r.uncertainty > 0) {
+    out.variance = (r.uncertainty / 1.96) * (r.uncertainty / 1.96);
+  } else if (unweighted == Unweighted::kPoint) {
+    out.variance = std::numeric_limits<double>::quiet_NaN();
+  } else {
+    throw InputError(experiment_file, spec.pointer, spec.quantity,
+                     fmt::format("the lab reports {} = {} ({}, line {}) without sd and n or "
+                                 "an uncertainty: a calibration cannot weigh it",
+                                 r.quantity, r.value, lab.summaries_file, r.line));
   }
-  return std::nullopt;
+  return out;
 }
 
 }  // namespace
@@ -164,7 +198,7 @@ const std::vector<std::string>& TargetQuantities() {
 }
 
 std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<TargetSpec>& specs,
-                               const std::string& experiment_file) {
+                               const std::string& experiment_file, Unweighted unweighted) {
   std::vector<Target> out;
   for (const TargetSpec& spec : specs) {
     const std::vector<std::string> operators =
@@ -175,15 +209,24 @@ std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<Ta
       const std::string where = lab.file + (op.empty() ? "" : " (operator " + op + ")");
       // Without trials, what the lab reports: a segment's counts or a summary.
       if (samples.attempts == 0 && !spec.by_operator) {
-        if (std::optional<Statistic> reported = ReportedStatistic(lab, spec, experiment_file)) {
+        if (std::optional<Statistic> reported =
+                ReportedStatistic(lab, spec, experiment_file, unweighted)) {
           target.lab = *reported;
           out.push_back(std::move(target));
           continue;
         }
       }
       if (samples.attempts == 0)
-        throw InputError(experiment_file, spec.pointer, spec.part,
-                         "the lab dataset " + where + " has no trials of this part");
+        throw InputError(
+            experiment_file, spec.pointer, spec.part,
+            "the lab dataset " + where + " has no trials of this part" +
+                (spec.condition.empty() ? "" : " in condition '" + spec.condition + "'") +
+                (spec.by_operator ? ""
+                                  : " and reports no " + spec.quantity +
+                                        (spec.segment > 0
+                                             ? fmt::format(" of segment {}", spec.segment)
+                                             : "") +
+                                        " for it"));
       if (spec.quantity == "assembly_time" && samples.times.size() < 2)
         throw InputError(experiment_file, spec.pointer, spec.part,
                          fmt::format("the lab dataset {} has {} successful trial(s) of this "

@@ -82,16 +82,26 @@ std::vector<std::string> LabOperators(const data::LabDataset& lab);
 // lab statistic is left for the caller.
 Target MakeTarget(const TargetSpec& spec, const std::string& operator_id);
 
+// What a reported value without sd and n or an uncertainty gives: an
+// InputError (a calibration cannot weigh it), or its point alone with a NaN
+// variance (a comparison shows it and calls it untestable).
+enum class Unweighted { kRefuse, kPoint };
+
 // The lab's targets, in spec order and, by operator, in the order operators
 // first appear in the lab's trials. A target's lab statistic comes from the
-// lab's trials of its part (and condition); without any, from what the lab
-// reports: a segment's counts (segments.csv) or a summary (summaries.csv),
-// weighted by its sd and n or its reading uncertainty (an InputError when it
-// has neither). An InputError naming `experiment_file` and
-// the target's pointer when the lab has no trials for it (or, for
+// lab's trials of its part (and condition; a target without one pools every
+// condition's trials); without any, from what the lab reports: a segment's
+// counts (segments.csv) or a summary (summaries.csv), weighted by its sd and
+// n or its reading uncertainty (without either: see Unweighted). A reported
+// row answers a target of its quantity, part and segment whose condition is
+// the row's; a target without a condition takes the row without one, else
+// the only condition the lab reports it for (an InputError when there are
+// several: the target must name one). An InputError naming `experiment_file`
+// and the target's pointer when the lab has no trials for it (or, for
 // assembly_time, fewer than two successful ones: no variance).
 std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<TargetSpec>& specs,
-                               const std::string& experiment_file);
+                               const std::string& experiment_file,
+                               Unweighted unweighted = Unweighted::kRefuse);
 
 // The virtual design that mirrors the lab: one condition per lab operator (by
 // first appearance in its trials), the scene with the operator's sex, stature

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "vahf/core/error.h"
@@ -54,6 +56,18 @@ void CompareTimes(QuantityComparison* q) {
   q->ks = stats::KolmogorovSmirnovTest(a, b);
 }
 
+// The normal approximation of a difference d with standard error se: its 95 %
+// and 90 % intervals and the TOST p against the margin (Schuirmann 1987's two
+// one-sided tests on the normal statistic).
+void NormalTest(QuantityComparison* q, double d, double se) {
+  const double z95 = gsl_cdf_ugaussian_Pinv(0.975), z90 = gsl_cdf_ugaussian_Pinv(0.95);
+  q->testable = true;
+  q->ci95 = {d - z95 * se, d + z95 * se};
+  q->ci90 = {d - z90 * se, d + z90 * se};
+  q->tost_p = std::max(gsl_cdf_ugaussian_Q((d + q->margin) / se),
+                       gsl_cdf_ugaussian_P((d - q->margin) / se));
+}
+
 // Proportions: the difference of Laplace-smoothed rates (successes + 1) /
 // (n + 2) has a normal interval that stays defined at 0 and 1 (Agresti and
 // Caffo, Am. Stat. 54(4) 280, 2000: add one success and one failure to each
@@ -68,16 +82,44 @@ void CompareRates(QuantityComparison* q) {
   const double kl = static_cast<double>(l.successes), nl = static_cast<double>(l.trials);
   const double pv = kv / nv, pl = kl / nl;
   const double sv = (kv + 1) / (nv + 2), sl = (kl + 1) / (nl + 2);
-  const double se = std::sqrt(sv * (1 - sv) / (nv + 2) + sl * (1 - sl) / (nl + 2));
-  const double d = sv - sl;
-  q->testable = true;
+  NormalTest(q, sv - sl, std::sqrt(sv * (1 - sv) / (nv + 2) + sl * (1 - sl) / (nl + 2)));
   q->difference = pv - pl;
-  const double z95 = gsl_cdf_ugaussian_Pinv(0.975), z90 = gsl_cdf_ugaussian_Pinv(0.95);
-  q->ci95 = {d - z95 * se, d + z95 * se};
-  q->ci90 = {d - z90 * se, d + z90 * se};
-  q->tost_p = std::max(gsl_cdf_ugaussian_Q((d + q->margin) / se),
-                       gsl_cdf_ugaussian_P((d - q->margin) / se));
   q->area_metric = std::fabs(pv - pl);
+}
+
+// Whether the quantity agrees, and the verdict in a sentence: why untestable,
+// or the difference, its 90 % interval against the margin and the TOST p, and
+// for a reported statistic what it was weighed by.
+void SetVerdict(QuantityComparison* q) {
+  const std::string& u = q->target.unit;
+  q->agree = q->testable && q->tost_p < kAlpha;
+  if (!q->testable) {
+    q->verdict = "untestable: " + q->untestable_reason;
+    return;
+  }
+  std::string basis;
+  if (q->reported)
+    basis = q->target.lab.single_draw
+                ? "; normal approximation against the one value the lab reports, weighed "
+                  "as a single draw with the virtual per-sample spread"
+                : "; normal approximation against the value the lab reports";
+  q->verdict = fmt::format(
+      "{}: the difference (virtual - lab) is {} with 90 % interval [{}, {}], {} the "
+      "+-{} margin (TOST p = {:.3g}){}",
+      q->agree ? "agree" : "not shown to agree", Value(q->difference, u),
+      Value(q->ci90.lower, u), Value(q->ci90.upper, u), q->agree ? "inside" : "not inside",
+      Value(q->margin, u), q->tost_p, basis);
+}
+
+// A comparison of `target` with its virtual side filled in.
+QuantityComparison WithVirtual(const calibrate::Target& target, double margin,
+                         const calibrate::TargetSamples& virt) {
+  QuantityComparison q;
+  q.target = target;
+  q.margin = margin;
+  q.virt = virt;
+  q.virtual_stat = virt.Of(target.spec.quantity);
+  return q;
 }
 
 }  // namespace
@@ -85,65 +127,143 @@ void CompareRates(QuantityComparison* q) {
 QuantityComparison CompareSamples(const calibrate::Target& target, double margin,
                                   const calibrate::TargetSamples& lab,
                                   const calibrate::TargetSamples& virt) {
-  QuantityComparison q;
-  q.target = target;
-  q.margin = margin;
+  QuantityComparison q = WithVirtual(target, margin, virt);
   q.lab = lab;
-  q.virt = virt;
-  q.virtual_stat = virt.Of(target.spec.quantity);
+  q.lab_variance = target.lab.variance;
+  const bool time = target.spec.quantity == "assembly_time";
   if (virt.attempts == 0) {
     q.untestable_reason = "the virtual design attempted this part in no cycle";
-  } else if (target.spec.quantity == "assembly_time") {
+  } else if (time) {
     CompareTimes(&q);
   } else {
     CompareRates(&q);
   }
-  const std::string& u = target.unit;
-  if (!q.testable) {
-    q.verdict = "untestable: " + q.untestable_reason;
-  } else {
-    q.agree = q.tost_p < kAlpha;
-    q.verdict = fmt::format(
-        "{}: the difference (virtual - lab) is {} with 90 % interval [{}, {}], {} the "
-        "+-{} margin (TOST p = {:.3g})",
-        q.agree ? "agree" : "not shown to agree", Value(q.difference, u), Value(q.ci90.lower, u),
-        Value(q.ci90.upper, u), q.agree ? "inside" : "not inside", Value(margin, u), q.tost_p);
-  }
+  if (!q.ks)
+    q.ks_unavailable = time ? q.untestable_reason : "a rate is not a distribution of times";
+  SetVerdict(&q);
   return q;
+}
+
+QuantityComparison CompareReported(const calibrate::Target& target, double margin,
+                                   const calibrate::TargetSamples& virt) {
+  QuantityComparison q = WithVirtual(target, margin, virt);
+  q.reported = true;
+  q.ks_unavailable = "the lab reports a summary, not samples";
+  const calibrate::Statistic& l = target.lab;
+  const bool time = target.spec.quantity == "assembly_time";
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  q.virtual_ci = time                ? MeanInterval(virt.times)
+                 : virt.attempts > 0 ? stats::WilsonInterval({virt.successes, virt.attempts})
+                                     : stats::Interval{nan, nan};
+  q.lab_variance = calibrate::LabVariance(l, q.virtual_stat);
+  q.lab_ci = {nan, nan};
+  if (std::isfinite(q.lab_variance)) {
+    const double h = gsl_cdf_ugaussian_Pinv(0.975) * std::sqrt(q.lab_variance);
+    q.lab_ci = {l.value - h, l.value + h};
+    if (!time) q.lab_ci = {std::max(0.0, q.lab_ci.lower), std::min(1.0, q.lab_ci.upper)};
+  }
+  const double var = q.virtual_stat.variance + q.lab_variance;
+  if (virt.attempts == 0) {
+    q.untestable_reason = "the virtual design attempted this part in no cycle";
+  } else if (time && virt.times.size() < 2) {
+    q.untestable_reason = fmt::format(
+        "{} virtual successful trial(s); the virtual mean's variance needs 2", virt.times.size());
+  } else if (!l.single_draw && !std::isfinite(l.variance)) {
+    q.untestable_reason = fmt::format(
+        "the lab reports {} without sd and n or an uncertainty: with no spread on the lab's "
+        "side the difference has no interval",
+        Value(l.value, target.unit));
+  } else if (!(var > 0)) {
+    q.untestable_reason = "both sides have zero variance: no normal statistic";
+  } else {
+    q.difference = q.virtual_stat.value - l.value;
+    NormalTest(&q, q.difference, std::sqrt(var));
+    // Against a point value x the lab's distribution is a step at x: for a
+    // time the area is the mean |v_i - x|, for a rate |p_v - p_l|.
+    q.area_metric = time ? stats::AreaValidationMetric(virt.times, {l.value})
+                         : std::fabs(q.difference);
+  }
+  SetVerdict(&q);
+  return q;
+}
+
+std::vector<LabQuantity> LabSide(const data::LabDataset& lab,
+                                 const scene::ComparisonDesign& design,
+                                 const std::string& experiment_file) {
+  std::vector<LabQuantity> out;
+  for (const scene::FitTarget& spec : design.quantities) {
+    const std::vector<std::string> operators =
+        spec.by_operator ? calibrate::LabOperators(lab) : std::vector<std::string>{""};
+    if (operators.empty())
+      throw InputError(experiment_file, spec.pointer + "/by", "operator",
+                       "the lab dataset " + lab.file + " has no trials, hence no operators");
+    for (const std::string& op : operators) {
+      LabQuantity q;
+      q.margin = spec.margin;
+      q.samples = calibrate::LabSamples(lab, spec, op);
+      if (q.samples.attempts > 0) {
+        q.target = calibrate::MakeTarget(spec, op);
+        q.target.lab = q.samples.Of(spec.quantity);
+      } else if (!op.empty()) {
+        // What a lab reports is never an operator's.
+        throw InputError(experiment_file, spec.pointer, spec.part,
+                         "the lab dataset " + lab.file + " (operator " + op +
+                             ") has no trials of this part");
+      } else {
+        // No trials: what the lab reports (an InputError when it reports
+        // nothing either).
+        q.target = calibrate::LabTargets(lab, {spec}, experiment_file,
+                                         calibrate::Unweighted::kPoint)
+                       .front();
+        q.reported = true;
+      }
+      out.push_back(std::move(q));
+    }
+  }
+  return out;
+}
+
+std::string LabBasis(const calibrate::Target& target, bool reported) {
+  if (!reported) return "trials";
+  if (target.lab.single_draw) return "reported once, no spread (a single draw)";
+  return std::isfinite(target.lab.variance) ? "reported" : "reported, no spread";
 }
 
 ComparisonResult Compare(const scene::Scene& scene, const data::LabDataset& lab,
                          const scene::ComparisonDesign& design,
                          const std::string& experiment_file, std::uint64_t seed, int trials,
-                         const experiment::RunnerOptions& options) {
+                         const experiment::RunnerOptions& options,
+                         const experiment::RunnerOptions& pilot_options) {
   // The lab's side first: a quantity it cannot supply costs no simulation.
-  struct Planned {
-    calibrate::Target target;
-    double margin;
-    calibrate::TargetSamples lab;
-  };
-  std::vector<Planned> planned;
-  for (const scene::FitTarget& spec : design.quantities) {
-    const std::vector<std::string> operators =
-        spec.by_operator ? calibrate::LabOperators(lab) : std::vector<std::string>{""};
-    for (const std::string& op : operators) {
-      calibrate::TargetSamples samples = calibrate::LabSamples(lab, spec, op);
-      if (samples.attempts == 0)
-        throw InputError(experiment_file, spec.pointer, spec.part,
-                         "the lab dataset " + lab.file +
-                             (op.empty() ? "" : " (operator " + op + ")") +
-                             " has no trials of this part");
-      calibrate::Target t = calibrate::MakeTarget(spec, op);
-      t.lab = samples.Of(spec.quantity);
-      planned.push_back({t, spec.margin, std::move(samples)});
-    }
+  const std::vector<LabQuantity> planned = LabSide(lab, design, experiment_file);
+  bool operators = false;
+  std::vector<int> segments;  // 0-based, increasing
+  for (const LabQuantity& p : planned) {
+    const int s = p.target.spec.segment;
+    if (s == 0) operators = true;
+    if (s > 0 && std::find(segments.begin(), segments.end(), s - 1) == segments.end())
+      segments.push_back(s - 1);
   }
+  std::sort(segments.begin(), segments.end());
   ComparisonResult out;
-  out.run = experiment::RunDesign(calibrate::LabConditions(scene, lab, trials), trials, seed,
-                                  false, options);
-  for (const Planned& p : planned)
-    out.quantities.push_back(
-        CompareSamples(p.target, p.margin, p.lab, calibrate::VirtualSamples(p.target, out.run)));
+  if (operators)
+    out.run = experiment::RunDesign(calibrate::LabConditions(scene, lab, trials), trials, seed,
+                                    false, options);
+  // The scene's operator works the hour; only the segments the quantities
+  // name are run (the pilot, which measures the work rate, always is), as a
+  // calibration runs them.
+  if (!segments.empty())
+    out.fatigue = experiment::RunFatigue(std::make_shared<const scene::Scene>(scene),
+                                         design.fatigue, trials, seed, options, pilot_options,
+                                         segments);
+  for (const LabQuantity& p : planned) {
+    const calibrate::TargetSamples virt =
+        p.target.spec.segment > 0
+            ? calibrate::VirtualSamples(p.target, out.fatigue.run, out.fatigue.segments)
+            : calibrate::VirtualSamples(p.target, out.run);
+    out.quantities.push_back(p.reported ? CompareReported(p.target, p.margin, virt)
+                                        : CompareSamples(p.target, p.margin, p.samples, virt));
+  }
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <utility>
 
 #include "vahf/report/cost.h"
 #include "vahf/report/health.h"
@@ -12,82 +13,234 @@ namespace {
 
 std::string N(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x) : "-"; }
 
+bool Finite(const stats::Interval& i) { return std::isfinite(i.lower) && std::isfinite(i.upper); }
+
+// "9.2 [8.1, 10.3] (n 12)"; a point without an interval says so; n 0 is a
+// count the lab did not state.
+std::string Side(double value, const stats::Interval& ci, int n) {
+  if (!std::isfinite(value)) return "-";
+  return N(value) +
+         (Finite(ci) ? fmt::format(" [{}, {}]", N(ci.lower), N(ci.upper)) : " (no interval)") +
+         (n > 0 ? fmt::format(" (n {})", n) : " (n not stated)");
+}
+
+// The samples behind a side's value: successful trials for a time, attempts
+// for a rate; for a reported statistic the n the lab states (0: none).
+int SideN(const compare::QuantityComparison& q, bool lab) {
+  const bool time = q.target.spec.quantity == "assembly_time";
+  if (lab && q.reported) return q.target.lab.n;
+  const calibrate::TargetSamples& s = lab ? q.lab : q.virt;
+  return time ? static_cast<int>(s.times.size()) : s.attempts;
+}
+
+std::string Verdict(const compare::QuantityComparison& q) {
+  return !q.testable ? "untestable" : q.agree ? "agree" : "not shown to agree";
+}
+
+// What a unit's rows are, on a plot's axis and a table's heading.
+struct UnitText {
+  const char* heading;  // "Mean assembly times"
+  const char* axis;     // "mean assembly time (s)"
+  const char* plot;     // "plots/compare_times.png"
+};
+UnitText TextOf(const std::string& unit) {
+  if (unit == "s")
+    return {"Mean assembly times (s)", "mean assembly time (s)", "plots/compare_times.png"};
+  return {"Success rates (1: a share of attempts)", "success rate (1)",
+          "plots/compare_rates.png"};
+}
+
+// A gnuplot double-quoted string; with `lines`, each ", " starts a new line.
+std::string Quoted(const std::string& s, bool lines = false) {
+  std::string out = "\"";
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (lines && s.compare(i, 2, ", ") == 0) {
+      out += "\\n";
+      ++i;
+      continue;
+    }
+    if (s[i] == '"' || s[i] == '\\') out += '\\';
+    out += s[i];
+  }
+  return out + "\"";
+}
+
+// Lab beside virtual for the rows of one unit, each with its 95 % interval;
+// a value without an interval as a point of its own style.
+Plot UnitPlot(const std::vector<const compare::QuantityComparison*>& rows,
+              const std::string& unit) {
+  const UnitText text = TextOf(unit);
+  std::string data, tics;
+  bool lab_point = false, virt_point = false;
+  // Columns: x, lab value, its interval, 1 when it has one; the same for
+  // the virtual side (0: a point; -1: no value).
+  const auto side = [](double v, const stats::Interval& ci, bool* point) {
+    if (!std::isfinite(v)) return std::string("0 0 0 -1");
+    if (!Finite(ci)) {
+      *point = true;
+      return fmt::format("{} {} {} 0", v, v, v);
+    }
+    return fmt::format("{} {} {} 1", v, ci.lower, ci.upper);
+  };
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const compare::QuantityComparison& q = *rows[i];
+    data += fmt::format("{} {} {}\n", i, side(q.target.lab.value, q.lab_ci, &lab_point),
+                        side(q.virtual_stat.value, q.virtual_ci, &virt_point));
+    // The plot names the quantity; a tic the rest of the label, a line each
+    // ("all / segment 4 / real", "block / male P5").
+    const std::string prefix = q.target.spec.quantity + " of ";
+    std::string tic = q.target.label;
+    if (tic.rfind(prefix, 0) == 0) tic.erase(0, prefix.size());
+    if (const std::size_t op = tic.find(", operator "); op != std::string::npos)
+      tic.erase(op + 2, 9);  // "operator "
+    tics += fmt::format("{}{} {}", i ? ", " : "", Quoted(tic, true), i);
+  }
+  std::string plot =
+      "plot $d using ($1-0.12):($5==1?$2:1/0):3:4 with yerrorbars pt 7 lc 1 "
+      "title 'lab (95 %)', '' using ($1+0.12):($9==1?$6:1/0):7:8 with yerrorbars pt 5 lc 2 "
+      "title 'virtual (95 %)'";
+  if (lab_point)
+    plot += ", '' using ($1-0.12):($5==0?$2:1/0) with points pt 6 ps 1.5 lc 1 "
+            "title 'lab, no interval'";
+  if (virt_point)
+    plot += ", '' using ($1+0.12):($9==0?$6:1/0) with points pt 4 ps 1.5 lc 2 "
+            "title 'virtual, no interval'";
+  return {text.plot,
+          std::string(text.heading) + ": lab and virtual side by side (95 % intervals)",
+          "$d << EOD\n" + data + "EOD\nset title " +
+              Quoted(std::string("Virtual against the lab: ") + text.heading) +
+              "\nset ylabel " + Quoted(text.axis) + "\n" +
+              (unit == "s" ? "set yrange [0:*]\nset offsets 0, 0, graph 0.08, 0\n"
+                           : "set yrange [0:1.05]\n") +
+              "set xrange [-0.5:" + std::to_string(rows.size()) + "-0.5]\nset xtics (" + tics +
+              ")\nset grid y\n"
+              "set key outside top center horizontal\nset bmargin 5\n" +
+              plot + "\n"};
+}
+
+// Every cycle the comparison ran as one design, for the cycles table, health
+// and cost: the lab's operators, the fatigue pilot and its segments.
+experiment::DesignRun AllCycles(const compare::ComparisonResult& r) {
+  experiment::DesignRun out;
+  for (const experiment::DesignRun* d : {&r.run, &r.fatigue.pilot, &r.fatigue.run}) {
+    const std::size_t offset = out.conditions.size();
+    out.conditions.insert(out.conditions.end(), d->conditions.begin(), d->conditions.end());
+    for (experiment::CycleRecord c : d->records) {
+      c.condition += offset;
+      out.records.push_back(std::move(c));
+    }
+  }
+  return out;
+}
+
+// What the virtual side ran, in a sentence or two.
+std::string Designs(const scene::ExperimentFile& file, const compare::ComparisonResult& r,
+                    int trials) {
+  std::string out;
+  if (!r.run.conditions.empty())
+    out += fmt::format(
+        "For the quantities without a segment the virtual design runs {} cycles per lab "
+        "operator ({} condition(s): {}), each operator on its own streams. ",
+        trials, r.run.conditions.size(),
+        r.run.conditions.size() == 1 ? r.run.conditions[0].name : "the lab's operators");
+  if (!r.fatigue.run.conditions.empty()) {
+    std::string segments;
+    for (int s : r.fatigue.segments)
+      segments += fmt::format("{}{}", segments.empty() ? "" : ", ", s + 1);
+    out += fmt::format(
+        "For the segment quantities the scene's operator works {:g} min in {} segments "
+        "(the fatigue design): a pilot of {} cycles from A = 0 measured the work rate, "
+        "{:.4g} J per second of assembly, and segment(s) {} ran {} cycles each, every "
+        "cycle starting with the work done by its minute. ",
+        file.comparison.fatigue.duration_min, file.comparison.fatigue.segments,
+        r.fatigue.pilot.records.size(), r.fatigue.work_rate, segments, trials);
+  }
+  return out;
+}
+
 }  // namespace
 
 Section ComparisonSection(const scene::ExperimentFile& file, const data::LabDataset& lab,
-                          const compare::ComparisonResult& r) {
+                          const compare::ComparisonResult& r, int trials) {
   Section out;
   out.kind = "compare";
-  Table t({"quantity", "unit", "margin", "lab_n", "lab_value", "lab_ci_lower", "lab_ci_upper",
-           "virtual_n", "virtual_value", "virtual_ci_lower", "virtual_ci_upper", "difference",
-           "ci95_lower", "ci95_upper", "ci90_lower", "ci90_upper", "tost_p", "verdict",
-           "area_metric", "ks_distance", "ks_p", "reason"});
+  Table t({"quantity", "unit", "segment", "condition", "lab_basis", "margin", "lab_n",
+           "lab_value", "lab_ci_lower", "lab_ci_upper", "virtual_n", "virtual_value",
+           "virtual_ci_lower", "virtual_ci_upper", "difference", "ci95_lower", "ci95_upper",
+           "ci90_lower", "ci90_upper", "tost_p", "verdict", "area_metric", "ks_distance",
+           "ks_p", "ks_note", "reason"});
   nlohmann::json quantities = nlohmann::json::array();
   std::string md = fmt::format(
-      "## Virtual against the lab: {}\n\n{}\n\nLab dataset `{}`: {} (provenance: {}). "
-      "The virtual design runs {} cycles per lab operator, each operator on its own "
-      "streams. \"agree\" means the equivalence test (TOST, 5 %) shows the difference "
-      "within the stated margin; \"not shown to agree\" does not mean shown to differ.\n\n"
-      "| quantity | margin | lab (95 %) | virtual (95 %) | difference (95 %) | area metric | "
-      "KS D (p) | verdict |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n",
-      lab.name, file.description, file.comparison.lab_path, lab.description,
-      lab.provenance.value("source", ""), file.trials);
-  std::string data;
-  int index = 0;
+      "## Virtual against the lab: {}\n\nLab dataset `{}`: {} (provenance: {}). {}"
+      "\"agree\" means the equivalence test (TOST, 5 %) shows the difference within the "
+      "stated margin; \"not shown to agree\" does not mean shown to differ. Against a value "
+      "the lab reports without its trials the test is the normal approximation, the area "
+      "metric is the distance to that value, and there is no KS test.\n\n",
+      lab.name, file.comparison.lab_path, lab.description,
+      lab.provenance.value("source", ""), Designs(file, r, trials));
+  // One table and one plot per unit, in the order units first appear.
+  std::vector<std::pair<std::string, std::vector<const compare::QuantityComparison*>>> units;
   for (const compare::QuantityComparison& q : r.quantities) {
-    const bool time = q.target.spec.quantity == "assembly_time";
-    const double lab_value = q.target.lab.value, virt_value = q.virtual_stat.value;
-    const int lab_n = time ? static_cast<int>(q.lab.times.size()) : q.lab.attempts;
-    const int virt_n = time ? static_cast<int>(q.virt.times.size()) : q.virt.attempts;
-    const std::string verdict = !q.testable ? "untestable" : q.agree ? "agree" : "not shown to agree";
-    const double nan = std::nan("");
-    t.AddRow({q.target.label, q.target.unit, q.margin, std::int64_t{lab_n}, lab_value,
-              q.lab_ci.lower, q.lab_ci.upper, std::int64_t{virt_n}, virt_value,
-              q.virtual_ci.lower, q.virtual_ci.upper, q.testable ? q.difference : nan,
-              q.testable ? q.ci95.lower : nan, q.testable ? q.ci95.upper : nan,
-              q.testable ? q.ci90.lower : nan, q.testable ? q.ci90.upper : nan,
-              q.testable ? q.tost_p : nan, verdict, q.testable ? q.area_metric : nan,
-              q.ks ? q.ks->distance : nan, q.ks ? q.ks->p_value : nan, q.verdict});
-    quantities.push_back({{"quantity", q.target.label},
-                          {"unit", q.target.unit},
-                          {"verdict", verdict},
-                          {"reason", q.verdict},
-                          {"difference", q.testable ? q.difference : nan},
-                          {"tost_p", q.testable ? q.tost_p : nan}});
-    md += fmt::format("| {} ({}) | +-{} | {} [{}, {}] (n {}) | {} [{}, {}] (n {}) | {} [{}, {}] | "
-                      "{} | {} | {} |\n",
-                      q.target.label, q.target.unit, N(q.margin), N(lab_value), N(q.lab_ci.lower),
-                      N(q.lab_ci.upper), lab_n, N(virt_value), N(q.virtual_ci.lower),
-                      N(q.virtual_ci.upper), virt_n, q.testable ? N(q.difference) : "-",
-                      q.testable ? N(q.ci95.lower) : "-", q.testable ? N(q.ci95.upper) : "-",
-                      q.testable ? N(q.area_metric) : "-",
-                      q.ks ? fmt::format("{:.3f} ({:.3g})", q.ks->distance, q.ks->p_value) : "-",
-                      q.verdict);
-    // x, label, lab, its interval, virtual, its interval
-    data += fmt::format("{} \"{}\" {} {} {} {} {} {}\n", index++, q.target.label, lab_value,
-                        q.lab_ci.lower, q.lab_ci.upper, virt_value, q.virtual_ci.lower,
-                        q.virtual_ci.upper);
+    auto it = units.begin();
+    while (it != units.end() && it->first != q.target.unit) ++it;
+    if (it == units.end()) it = units.insert(units.end(), {q.target.unit, {}});
+    it->second.push_back(&q);
   }
-  md += "\n";
+  for (const auto& [unit, rows] : units) {
+    const std::string u = unit == "s" ? "s" : "rate";
+    md += fmt::format(
+        "### {}\n\n| quantity | lab from | margin ({}) | lab ({}, 95 %) | virtual ({}, 95 %) | "
+        "difference ({}, 95 %) | area metric ({}) | KS D (p) | verdict |\n"
+        "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n",
+        TextOf(unit).heading, unit, u, u, u, unit);
+    for (const compare::QuantityComparison* p : rows) {
+      const compare::QuantityComparison& q = *p;
+      const std::string basis = compare::LabBasis(q.target, q.reported);
+      const double nan = std::nan("");
+      const double lab_value = q.target.lab.value, virt_value = q.virtual_stat.value;
+      const int lab_n = SideN(q, true), virt_n = SideN(q, false);
+      t.AddRow({q.target.label, q.target.unit, std::int64_t{q.target.spec.segment},
+                q.target.spec.condition, basis, q.margin, std::int64_t{lab_n}, lab_value,
+                q.lab_ci.lower, q.lab_ci.upper, std::int64_t{virt_n}, virt_value,
+                q.virtual_ci.lower, q.virtual_ci.upper, q.testable ? q.difference : nan,
+                q.testable ? q.ci95.lower : nan, q.testable ? q.ci95.upper : nan,
+                q.testable ? q.ci90.lower : nan, q.testable ? q.ci90.upper : nan,
+                q.testable ? q.tost_p : nan, Verdict(q), q.testable ? q.area_metric : nan,
+                q.ks ? q.ks->distance : nan, q.ks ? q.ks->p_value : nan, q.ks_unavailable,
+                q.verdict});
+      quantities.push_back({{"quantity", q.target.label},
+                            {"unit", q.target.unit},
+                            {"lab_basis", basis},
+                            {"lab_value", lab_value},
+                            {"virtual_value", virt_value},
+                            {"verdict", Verdict(q)},
+                            {"reason", q.verdict},
+                            {"difference", q.testable ? q.difference : nan},
+                            {"tost_p", q.testable ? q.tost_p : nan}});
+      md += fmt::format(
+          "| {} | {} | +-{} | {} | {} | {} | {} | {} | {} |\n", q.target.label, basis,
+          N(q.margin), Side(lab_value, q.lab_ci, lab_n), Side(virt_value, q.virtual_ci, virt_n),
+          q.testable ? fmt::format("{} [{}, {}]", N(q.difference), N(q.ci95.lower),
+                                   N(q.ci95.upper))
+                     : "-",
+          q.testable ? N(q.area_metric) : "-",
+          q.ks ? fmt::format("{:.3f} ({:.3g})", q.ks->distance, q.ks->p_value)
+               : "n/a: " + q.ks_unavailable,
+          q.verdict);
+    }
+    md += "\n";
+    out.plots.push_back(UnitPlot(rows, unit));
+  }
+  const experiment::DesignRun cycles = AllCycles(r);
   out.tables.emplace_back("compare_quantities.csv", std::move(t));
-  out.tables.emplace_back("compare_cycles.csv", CyclesTable(r.run));
+  out.tables.emplace_back("compare_cycles.csv", CyclesTable(cycles));
   out.summary = {{"quantities", quantities}, {"claims", nlohmann::json::array()},
-                 {"health", HealthJson(r.run)}};
-  out.markdown = md + HealthMarkdown(r.run);
-  Table cost = CostTable(r.run);
+                 {"health", HealthJson(cycles)}};
+  out.markdown = md + HealthMarkdown(cycles);
+  Table cost = CostTable(cycles);
   out.markdown += CostMarkdown(cost);
   out.measured = {{"cost", CostJson(cost)}};
   out.measured_tables.emplace_back("compare_cost.csv", std::move(cost));
-  out.plots.push_back(
-      {"plots/compare_quantities.png",
-       "Lab and virtual, quantity by quantity (mean or rate, 95 % interval)",
-       "$d << EOD\n" + data +
-           "EOD\nset title 'Virtual against the lab'\n"
-           "set ylabel 'value (s for times, 1 for rates)'\n"
-           "set xrange [-0.5:" + std::to_string(r.quantities.size()) + "-0.5]\n"
-           "set xtics rotate by -30\nset grid y\nset key outside bottom center horizontal\n"
-           "plot $d using ($1-0.12):3:4:5:xtic(2) with yerrorbars pt 7 title 'lab', "
-           "'' using ($1+0.12):6:7:8 with yerrorbars pt 5 title 'virtual'\n"});
   return out;
 }
 

@@ -174,14 +174,15 @@ void CheckFitValue(const ParamSpec& spec, const JsonNode& node, double value, do
 
 // Lab summaries as a calibration's targets or a comparison's quantities name
 // them: quantity, part (of the scene's sequence, or "all"), by ("operator" or
-// "all"), and for a comparison the equivalence margin.
+// "all"), segment (1-based) and condition (the lab's, not empty: without it,
+// any), and for a comparison the equivalence margin.
 std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, bool margin) {
   std::vector<FitTarget> out;
   const std::size_t m = list.ArraySize(1);
   for (std::size_t k = 0; k < m; ++k) {
     const JsonNode node = list.At(k);
     if (margin) {
-      node.ExpectObject({"quantity", "part", "by", "margin"});
+      node.ExpectObject({"quantity", "part", "by", "segment", "condition", "margin"});
     } else {
       node.ExpectObject({"quantity", "part", "by", "segment", "condition"});
     }
@@ -194,7 +195,11 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, boo
     if (auto by = node.Optional("by")) t.by_operator = by->Choice({"operator", "all"}) == "operator";
     if (auto segment = node.Optional("segment"))
       t.segment = static_cast<int>(segment->Integer(1, 1000));
-    if (auto condition = node.Optional("condition")) t.condition = condition->String();
+    if (auto condition = node.Optional("condition")) {
+      t.condition = condition->String();
+      if (t.condition.empty())
+        condition->Fail("names the lab's condition; leave the key out to read any");
+    }
     if (t.segment > 0 && t.by_operator)
       node.Required("by").Fail("a segment's value is the lab's over all operators");
     // A margin is in the quantity's unit: at most an hour for a time, 1 for a rate.
@@ -291,9 +296,18 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
   }
 }
 
-void ReadComparison(const JsonNode& root, const std::string& path, ExperimentFile* e) {
-  e->comparison.lab_path = ResolvePath(root.Required("lab"), path, "lab dataset");
-  e->comparison.quantities = ReadTargets(root.Required("quantities"), e->scene, true);
+// A comparison's lab and quantities; a segment quantity lies within the
+// fatigue design's hour (`fatigue`, read before).
+void ReadComparison(const JsonNode& root, const std::string& path, const FatigueDesign& fatigue,
+                    ExperimentFile* e) {
+  ComparisonDesign& d = e->comparison;
+  d.lab_path = ResolvePath(root.Required("lab"), path, "lab dataset");
+  d.quantities = ReadTargets(root.Required("quantities"), e->scene, true);
+  d.fatigue = fatigue;
+  for (const FitTarget& t : d.quantities)
+    if (t.segment > fatigue.segments)
+      throw InputError(path, t.pointer + "/segment", std::to_string(t.segment),
+                       fmt::format("the fatigue design has {} segments", fatigue.segments));
 }
 
 }  // namespace
@@ -382,8 +396,10 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
   only_for("conditions", "human_factors_groups");
   only_for("instants_s", "human_factors_groups");
   only_for("paper_cycle_s", "human_factors_groups");
-  if (auto node = root.Optional("fatigue"); node && e.kind != "fatigue" && e.kind != "calibrate")
-    node->Fail("only an experiment of kind \"fatigue\" or \"calibrate\" reads \"fatigue\"");
+  if (auto node = root.Optional("fatigue");
+      node && e.kind != "fatigue" && e.kind != "calibrate" && e.kind != "compare")
+    node->Fail(
+        "only an experiment of kind \"fatigue\", \"calibrate\" or \"compare\" reads \"fatigue\"");
   only_for("experiments", "paper");
   only_for("paper_table", "table1");
   for (const char* key : {"scenes", "reference", "settings", "noise_trials"})
@@ -450,7 +466,6 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
     }
   }
   if (e.kind == "calibrate") ReadCalibration(root, path, &e);
-  if (e.kind == "compare") ReadComparison(root, path, &e);
   if (auto f = root.Optional("fatigue")) {
     f->ExpectObject({"duration_min", "segments", "pilot_cycles"});
     if (auto d = f->Optional("duration_min")) e.fatigue.duration_min = d->Positive();
@@ -466,6 +481,7 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
       if (t.segment > e.fatigue.segments)
         throw InputError(path, t.pointer + "/segment", std::to_string(t.segment),
                          fmt::format("the fatigue design has {} segments", e.fatigue.segments));
+  if (e.kind == "compare") ReadComparison(root, path, e.fatigue, &e);
   return e;
 }
 

@@ -114,6 +114,9 @@ struct FitTarget {
 struct ComparisonDesign {
   std::string lab_path;  // the lab dataset's manifest
   std::vector<FitTarget> quantities;
+  // The hour of work that segment quantities are read from (the file's
+  // "fatigue", as the fatigue kind reads it).
+  FatigueDesign fatigue;
 };
 
 // One stage of a calibration: parameters fitted to targets by a solver.
