@@ -30,6 +30,24 @@ function(vahf_configure_build_info output)
   string(STRIP "${VAHF_CXX_FLAGS}" VAHF_CXX_FLAGS)
   string(REGEX REPLACE "  +" " " VAHF_CXX_FLAGS "${VAHF_CXX_FLAGS}")
 
+  # The libraries vahf links, with the version find_package found (the
+  # Debian package's upstream version); "unknown" where a package states none
+  # (Random123 ships no CMake config and no version macro).
+  set(VAHF_LIBRARIES "")
+  foreach(entry "Simbody:Simbody_VERSION" "SUNDIALS:SUNDIALS_VERSION" "GSL:GSL_VERSION"
+                "Ceres:Ceres_VERSION" "Embree:embree_VERSION" "Eigen:Eigen3_VERSION"
+                "nlohmann_json:nlohmann_json_VERSION" "fmt:fmt_VERSION" "CLI11:CLI11_VERSION"
+                "OpenSSL:OPENSSL_VERSION" "Random123:Random123_VERSION")
+    string(REPLACE ":" ";" entry "${entry}")
+    list(GET entry 0 name)
+    list(GET entry 1 variable)
+    set(version "${${variable}}")
+    if(version STREQUAL "")
+      set(version "unknown")
+    endif()
+    string(APPEND VAHF_LIBRARIES "${name}=${version};")
+  endforeach()
+
   configure_file("${PROJECT_SOURCE_DIR}/src/vahf/report/build_info_values.h.in" "${output}"
                  @ONLY)
 endfunction()

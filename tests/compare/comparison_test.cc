@@ -3,6 +3,7 @@
 // metrics): the verdicts and the sentences that carry them. The lab's side of
 // a comparison file's quantities (LabSide), and which virtual designs a
 // comparison runs.
+#include "vahf/kinds/kind.h"
 #include "vahf/compare/comparison.h"
 
 #include <gtest/gtest.h>
@@ -219,7 +220,7 @@ scene::FitTarget Spec(const std::string& quantity, int segment, const std::strin
 TEST(LabSide, ReadsWhatThePaperReports) {
   const data::LabDataset lab = data::LoadLabDataset(Path("data/paper/dataset.json"));
   const scene::ExperimentFile file =
-      scene::LoadExperiment(Path("experiments/compare_paper.json"));
+      kinds::LoadExperiment(Path("experiments/compare_paper.json"));
   const std::vector<LabQuantity> side = LabSide(lab, file.comparison, file.file);
   ASSERT_EQ(side.size(), 6u);
   for (const LabQuantity& q : side) EXPECT_TRUE(q.reported) << q.target.label;

@@ -17,7 +17,7 @@
 #include <sstream>
 #include <string>
 
-#include "scene/test_files.h"
+#include "support/test_files.h"
 #include "vahf/core/error.h"
 
 namespace vahf::data {

@@ -79,6 +79,9 @@ TEST(ManifestJson, HoldsEveryField) {
   EXPECT_EQ(m["parameters"]["guidance"]["kappa"], scene::Parameters{}.guidance.kappa);
   EXPECT_EQ(m["build"]["version"], GetBuildInfo().version);
   EXPECT_EQ(m["build"]["cxx_flags"], GetBuildInfo().cxx_flags);
+  EXPECT_EQ(m["build"]["libraries"].size(), GetBuildInfo().libraries.size());
+  for (const auto& [name, version] : GetBuildInfo().libraries)
+    EXPECT_EQ(m["build"]["libraries"][name], version) << name;
   EXPECT_EQ(m["result_files"], (nlohmann::json{"a.csv", "summary.json"}));
   EXPECT_EQ(m["results_digest"], ResultsDigest(kResults));
   EXPECT_EQ(nlohmann::json::parse(m.dump(2)), m);

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "vahf/kinds/kind.h"
 #include "vahf/experiment/design.h"
 #include "vahf/report/output_directory.h"
 #include "vahf/report/run_output.h"
@@ -34,13 +35,13 @@ struct Ran {
 // lives as long as the run that points at it.
 std::unique_ptr<Ran> RunShipped(const std::string& name, int trials) {
   auto r = std::make_unique<Ran>();
-  r->file = scene::LoadExperiment(Source("experiments/" + name + ".json"));
+  r->file = kinds::LoadExperiment(Source("experiments/" + name + ".json"));
   experiment::RunSettings s;
   s.seed = r->file.seed;
   s.trials = trials;
   s.progress = false;
-  r->run = experiment::RunExperiment(r->file, s);
-  r->section = SectionFor(r->run);
+  r->run = kinds::RunDesign(r->file, s);
+  r->section = kinds::Sections(r->run).front();
   return r;
 }
 
@@ -100,7 +101,8 @@ TEST(PaperClaims, Table1RunHasOnlyTheExpectedWarnings) {
 // reproduced since the guidance became continuous in the state (issue 10):
 // the piston rod (3.6 kg) is significantly slower than the guide sleeve
 // (0.8 kg), but the seal ring (25 g) is not faster than the sleeve (measured
-// at this size: sleeve - seal = -0.059 s, p(heavier slower) = 0.99).
+// at this size with Welch's test: sleeve - seal = -0.059 s, p(heavier slower)
+// = 0.99; the paired tests that replaced it, issue 12, give the same verdicts).
 TEST(PaperClaims, AssemblyTimeSexNotReproducedMassHalfReproduced) {
   const auto r = RunShipped("assembly_time", 4);
   const nlohmann::json& claim = ClaimContaining(r->section, "male operators");
@@ -137,16 +139,21 @@ TEST(PaperClaims, WorkingConditionsWorstReproducedBestNot) {
 }
 
 // Sec. 5.4: over an hour the mean time rises and the success rate falls
-// (paper: 0.96 to 0.75). NOT reproduced: Eq. 4's work over an hour of cycles
-// is some hundreds of kJ against A_max = 1600 kcal = 6.69 MJ (Eq. 6), so
-// Psi_c stays near 0.95 and the operator's force barely weakens. What the
-// model does instead: every cycle of the first and last segments succeeds and
-// the mean time does not rise significantly.
-TEST(PaperClaims, FatigueOverAnHourIsNotReproduced) {
+// (paper: 0.96 to 0.75). Half reproduced. Eq. 4's work over an hour of
+// cycles is some hundreds of kJ against A_max = 1600 kcal = 6.69 MJ (Eq. 6),
+// so Psi_c stays near 0.95: every cycle of the first and last segments still
+// succeeds (the rate does not fall), but the operator's force is 5 % weaker
+// at the end of the hour and the same cycles, paired by their streams, take
+// longer: the paired t test finds the rise at this size (measured: p =
+// 0.019), where Welch's unpaired test, before issue 12, did not (p > 0.05).
+TEST(PaperClaims, FatigueTimeRisesButTheSuccessRateDoesNotFall) {
   const auto r = RunShipped("fatigue", 4);
   const nlohmann::json& s = r->section.summary;
-  EXPECT_FALSE(ClaimContaining(r->section, "success rate falls").at("reproduced").get<bool>());
-  EXPECT_FALSE(ClaimContaining(r->section, "mean assembly time rises").at("reproduced").get<bool>());
+  const nlohmann::json& rate = ClaimContaining(r->section, "success rate falls");
+  EXPECT_EQ(rate.at("verdict"), "no") << rate.dump();
+  const nlohmann::json& time = ClaimContaining(r->section, "mean assembly time rises");
+  std::printf("%s\n", time.at("evidence").get<std::string>().c_str());
+  EXPECT_EQ(time.at("verdict"), "yes") << time.dump();
   // Measured: 0.949 here (4-cycle pilot, 95 J/s), 0.958 in the paper run
   // (77.5 J/s). Bound: an hour at up to 185 J/s, twice the measured rate,
   // keeps Psi_c above 0.9.
@@ -154,7 +161,11 @@ TEST(PaperClaims, FatigueOverAnHourIsNotReproduced) {
   EXPECT_LT(s.at("psi_end_of_hour").get<double>(), 1.0) << s.dump();
   const nlohmann::json& t = s.at("tests");
   EXPECT_EQ(t.at("success_last").at("successes"), t.at("success_last").at("cycles"));
-  EXPECT_GT(t.at("time_last_minus_first").at("p_greater").get<double>(), 0.05);
+  EXPECT_EQ(t.at("pairs_succeeded_then_failed"), 0) << t.dump();
+  const nlohmann::json& rise = t.at("time_last_minus_first");
+  EXPECT_EQ(rise.at("pairs"), 4) << rise.dump();
+  EXPECT_GT(rise.at("mean_difference_s").get<double>(), 0.0) << rise.dump();
+  EXPECT_LT(rise.at("p_greater").get<double>(), 0.05) << rise.dump();
 }
 
 // Every kind's report renders: tables, summary, and each gnuplot figure; and
@@ -167,7 +178,7 @@ TEST(PaperClaims, EveryKindWritesItsReportWithAllPlots) {
   for (const char* name : {"table1", "assembly_time", "human_factors_groups", "fatigue"}) {
     const auto r = RunShipped(name, 1);
     OutputDirectory out((dir / name).string());
-    const RunOutput written = WriteRunOutput(r->run, out, RunInfo{});
+    const RunOutput written = WriteRunOutput(r->run, {r->section}, out, RunInfo{});
     EXPECT_TRUE(written.failed_plots.empty()) << name << ": " << written.failed_plots[0];
     for (const Plot& p : r->section.plots)
       EXPECT_TRUE(std::filesystem::exists(dir / name / p.file)) << p.file;

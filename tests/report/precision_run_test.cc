@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "vahf/kinds/kind.h"
 #include "vahf/experiment/design.h"
 #include "vahf/report/output_directory.h"
 #include "vahf/report/run_output.h"
@@ -82,12 +83,12 @@ Output RunAndWrite(const scene::ExperimentFile& file, int threads) {
   s.seed = file.seed;
   s.threads = threads;
   s.progress = false;
-  const experiment::ExperimentRun run = experiment::RunExperiment(file, s);
+  const experiment::ExperimentRun run = kinds::RunDesign(file, s);
   const std::string dir = (TestDir() / ("threads" + std::to_string(threads))).string();
   OutputDirectory out(dir);
   RunInfo info;
   info.threads = threads;
-  const RunOutput written = WriteRunOutput(run, out, info);
+  const RunOutput written = WriteRunOutput(run, kinds::Sections(run), out, info);
   EXPECT_TRUE(written.failed_plots.empty()) << written.failed_plots.front();
   return {dir, written.results_digest};
 }
@@ -203,7 +204,7 @@ void OneAndTwoThreadsGiveTheSameResults(const Output& one, const Output& two) {
 // One run on each thread count serves every check (ctest runs each TEST in a
 // process of its own).
 TEST(PrecisionRun, EndToEndOnThePegScene) {
-  const scene::ExperimentFile file = scene::LoadExperiment(WriteExperiment());
+  const scene::ExperimentFile file = kinds::LoadExperiment(WriteExperiment());
   const Output one = RunAndWrite(file, 1);
   const Output two = RunAndWrite(file, 2);
   {

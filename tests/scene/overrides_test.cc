@@ -8,6 +8,7 @@
 // values it sets itself), each experiment a paper run lists, and the
 // operators an assembly_time experiment lists; it records the file in
 // overrides_path.
+#include "vahf/kinds/kind.h"
 #include "vahf/scene/overrides.h"
 
 #include <gmock/gmock.h>
@@ -17,12 +18,15 @@
 #include <string>
 #include <utility>
 
-#include "test_files.h"
+#include "support/test_files.h"
 #include "vahf/core/error.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/scene_loader.h"
 
 namespace vahf::scene {
+
+using kinds::LoadExperiment;
+using kinds::ParseExperiment;
 namespace {
 
 using ::nlohmann::json;

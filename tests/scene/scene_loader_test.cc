@@ -3,6 +3,7 @@
 // closed-form volume of its profiles and parameter overrides in scene.params;
 // every malformed variant of it (one mutation each) throws vahf::InputError
 // naming the file, the exact JSON pointer, the value and the rule broken.
+#include "vahf/kinds/kind.h"
 #include "vahf/scene/scene_loader.h"
 
 #include <gmock/gmock.h>
@@ -19,13 +20,16 @@
 #include <string>
 #include <utility>
 
-#include "test_files.h"
+#include "support/test_files.h"
 #include "vahf/core/error.h"
 #include "vahf/human/factor_curves.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/parameter_table.h"
 
 namespace vahf::scene {
+
+using kinds::LoadExperiment;
+using kinds::ParseExperiment;
 namespace {
 
 using ::nlohmann::json;

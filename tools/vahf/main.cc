@@ -4,24 +4,19 @@
 // Exit status: 0 success, 2 bad input (a file, a value or an option), 1 other.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <string>
 
-#include "vahf/calibrate/calibration.h"
 #include "vahf/calibrate/synthetic_lab.h"
-#include "vahf/compare/comparison.h"
 #include "vahf/core/atomic_file.h"
 #include "vahf/core/error.h"
 #include "vahf/data/lab_dataset.h"
-#include "vahf/experiment/design.h"
 #include "vahf/experiment/interrupt.h"
+#include "vahf/kinds/kind.h"
+#include "vahf/kinds/run_support.h"
+#include "vahf/report/output_directory.h"
 #include "vahf/experiment/table1_reference.h"
-#include "vahf/report/calibration_section.h"
-#include "vahf/report/compare_section.h"
-#include "vahf/report/run_output.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/json_reader.h"
 #include "vahf/scene/overrides.h"
@@ -31,48 +26,6 @@
 #include "vahf/sim/trial.h"
 
 namespace {
-
-// Builds the scene's trial models, as a run would before its first trial
-// (what only building can reject is rejected now), and says what each holds.
-void CheckModels(const vahf::scene::Scene& scene) {
-  for (const auto& m : vahf::sim::BuildSequenceModels(scene)) {
-    std::printf("  trial model '%s': ", m->part->name.c_str());
-    if (!m->contact.model)
-      std::printf("nothing to touch");
-    else
-      std::printf("contact %s, %lld shell points", scene.params.contact.model.c_str(),
-                  static_cast<long long>(m->contact.shell_points));
-    if (m->clearance > 0)
-      std::printf(", radial clearance %.3g um, penetration bound %.3g um",
-                  m->clearance * 1e6, m->penetration_bound * 1e6);
-    std::printf("%s\n", m->visibility ? ", V by ray casting" : "");
-  }
-}
-
-// A calibration's lab dataset and the targets it must supply, as a run
-// would read them before its first trial.
-void CheckCalibration(const vahf::scene::ExperimentFile& e) {
-  const vahf::data::LabDataset lab = vahf::data::LoadLabDataset(e.calibration.lab_path);
-  std::fputs(vahf::data::DescribeLabDataset(lab).c_str(), stdout);
-  vahf::calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
-  for (const vahf::scene::CalibrationStage& stage : e.calibration.stages) {
-    if (!stage.name.empty())
-      std::printf("  stage '%s' (%s):\n", stage.name.c_str(), stage.solver.c_str());
-    for (const vahf::scene::FitParameter& p : stage.parameters)
-      std::printf("  fits %s from %g within [%g, %g]\n", p.name.c_str(), p.start, p.lower,
-                  p.upper);
-    for (const auto& t : vahf::calibrate::LabTargets(lab, stage.targets, e.file)) {
-      if (t.lab.single_draw)
-        std::printf("  target %s: lab %g (one draw: weighed by the virtual spread)\n",
-                    t.label.c_str(), t.lab.value);
-      else
-        std::printf("  target %s: lab %g (se %g, n %d)\n", t.label.c_str(), t.lab.value,
-                    std::sqrt(t.lab.variance), t.lab.n);
-    }
-  }
-  std::fputs(vahf::scene::DescribeScene(e.scene).c_str(), stdout);
-  CheckModels(e.scene);
-}
 
 int Check(const std::string& path) {
   const nlohmann::json document = vahf::scene::ReadJsonFile(path);  // read once
@@ -96,51 +49,13 @@ int Check(const std::string& path) {
                 spec.time_resolution);
     for (const auto& [name, value] : spec.truth)
       std::printf("  %s = %g (stated)\n", name.c_str(), value);
-    CheckModels(spec.scene);
+    std::fputs(vahf::kinds::DescribeSceneModels(spec.scene).c_str(), stdout);
   } else if (format == "scene") {
     const vahf::scene::Scene scene = vahf::scene::ParseScene(document, path);
-    std::fputs(vahf::scene::DescribeScene(scene).c_str(), stdout);
-    CheckModels(scene);
+    std::fputs(vahf::kinds::DescribeSceneModels(scene).c_str(), stdout);
   } else {
-    const vahf::scene::ExperimentFile e = vahf::scene::ParseExperiment(document, path);
-    std::printf("experiment '%s' (%s): kind %s, seed %llu%s\n", e.name.c_str(),
-                e.file.c_str(), e.kind.c_str(), static_cast<unsigned long long>(e.seed),
-                e.kind == "paper"
-                    ? ""
-                    : (", " + std::to_string(e.trials) + " cycles per condition").c_str());
-    if (e.kind == "precision") {
-      std::fputs(vahf::scene::DescribePrecision(e).c_str(), stdout);
-    } else if (e.kind == "calibrate") {
-      CheckCalibration(e);
-    } else if (e.kind == "compare") {
-      const vahf::data::LabDataset lab = vahf::data::LoadLabDataset(e.comparison.lab_path);
-      std::fputs(vahf::data::DescribeLabDataset(lab).c_str(), stdout);
-      vahf::calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
-      // The lab's side of every quantity, as a run reads it before simulating.
-      bool segments = false;
-      for (const auto& q : vahf::compare::LabSide(lab, e.comparison, e.file)) {
-        const char* unit = q.target.unit == "s" ? " s" : "";
-        std::printf("  compares %s within +-%g%s: lab %g%s from %s\n", q.target.label.c_str(),
-                    q.margin, unit, q.target.lab.value, unit,
-                    vahf::compare::LabBasis(q.target, q.reported).c_str());
-        segments = segments || q.target.spec.segment > 0;
-      }
-      const vahf::scene::FatigueDesign& f = e.comparison.fatigue;
-      if (segments)
-        std::printf("  segments from the fatigue design: %g min in %d segments, %d pilot "
-                    "cycles\n",
-                    f.duration_min, f.segments, f.pilot_cycles > 0 ? f.pilot_cycles : e.trials);
-      std::fputs(vahf::scene::DescribeScene(e.scene).c_str(), stdout);
-      CheckModels(e.scene);
-    } else if (e.kind == "paper") {
-      for (const vahf::scene::ExperimentFile& x : e.experiments)
-        std::printf("  %s (%s): kind %s, %d cycles per condition, scene %s\n",
-                    x.name.c_str(), x.file.c_str(), x.kind.c_str(), x.trials,
-                    x.scene_path.c_str());
-    } else {
-      std::fputs(vahf::scene::DescribeScene(e.scene).c_str(), stdout);
-      CheckModels(e.scene);
-    }
+    const vahf::scene::ExperimentFile e = vahf::kinds::ParseExperiment(document, path);
+    std::fputs(vahf::kinds::CheckExperiment(e).c_str(), stdout);
   }
   std::printf("%s: valid %s\n", path.c_str(),
               format == "lab"         ? "lab dataset"
@@ -209,144 +124,22 @@ struct RunArgs {
   std::string out;
 };
 
-// The files a run against a lab dataset read besides the experiment file:
-// the scene, the dataset's manifest and files, the override file.
-std::vector<std::string> LabRunInputs(const vahf::scene::ExperimentFile& file,
-                                      const vahf::data::LabDataset& lab) {
-  std::vector<std::string> inputs = {file.scene_path, lab.file};
-  for (const std::string& f : {lab.trials_file, lab.segments_file, lab.summaries_file})
-    if (!f.empty()) inputs.push_back(lab.folder + "/" + f);
-  for (const auto& t : lab.tracks) inputs.push_back(t.file);
-  if (!file.overrides_path.empty()) inputs.push_back(file.overrides_path);
-  return inputs;
-}
-
-// Writes the output directory of a run against a lab dataset (calibrate,
-// compare): the header from the experiment file and the dataset, the one
-// section; says on stderr which plots failed.
-vahf::report::RunOutput WriteLabRun(const vahf::scene::ExperimentFile& file,
-                                    const vahf::data::LabDataset& lab, std::uint64_t seed,
-                                    int trials, const std::string& cycles,
-                                    const vahf::report::Section& section,
-                                    vahf::report::OutputDirectory& directory,
-                                    const vahf::report::RunInfo& info) {
-  vahf::report::RunHeader h;
-  h.file = &file;
-  h.first = &file;
-  h.seed = seed;
-  h.trials = trials;
-  h.cycles_per_condition = std::to_string(trials) + cycles;
-  h.integration = vahf::report::IntegrationText(file.scene.params);
-  h.inputs = LabRunInputs(file, lab);
-  const vahf::report::RunOutput written =
-      vahf::report::WriteSections(h, {section}, directory, info);
-  for (const std::string& failure : written.failed_plots)
-    std::fprintf(stderr, "vahf: error: plot not rendered (results kept): %s\n",
-                 failure.c_str());
-  return written;
-}
-
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// A comparison: the lab dataset, the virtual design, its output directory.
-int RunComparison(const vahf::scene::ExperimentFile& file,
-                  const vahf::experiment::RunSettings& settings, const RunArgs& a,
-                  vahf::report::OutputDirectory& directory) {
-  const vahf::data::LabDataset lab = vahf::data::LoadLabDataset(file.comparison.lab_path);
-  const int trials = settings.trials > 0 ? settings.trials : file.trials;
-  vahf::experiment::RunnerOptions options;
-  options.threads = settings.threads;
-  options.label = file.name + " (compare)";
-  options.unit = "cycles";
-  vahf::experiment::RunnerOptions pilot_options = options;
-  pilot_options.label = file.name + " (compare, fatigue pilot)";
-  const auto start = std::chrono::steady_clock::now();
-  const vahf::compare::ComparisonResult result = vahf::compare::Compare(
-      file.scene, lab, file.comparison, file.file, settings.seed, trials, options,
-      pilot_options);
-  const vahf::report::RunInfo info{a.threads, SecondsSince(start)};
-  const vahf::report::RunOutput written = WriteLabRun(
-      file, lab, settings.seed, trials,
-      result.fatigue.run.conditions.empty() ? " per lab operator"
-      : result.run.conditions.empty()       ? " per segment"
-                                            : " per lab operator and per segment",
-      vahf::report::ComparisonSection(file, lab, result, trials), directory, info);
-  for (const auto& q : result.quantities)
-    std::printf("%s: %s\n", q.target.label.c_str(), q.verdict.c_str());
-  std::printf("%s: compare, seed %llu, %.1f s on %d thread(s)\nresults digest %s\n"
-              "report: %s/report.md\n",
-              file.name.c_str(), static_cast<unsigned long long>(settings.seed),
-              info.wall_seconds, a.threads, written.results_digest.c_str(),
-              directory.path().c_str());
-  return written.failed_plots.empty() ? 0 : 1;
-}
-
-// A calibration: the lab dataset, Ceres' fit with a line per design
-// evaluation, and its output directory with calibrated.json.
-int RunCalibration(const vahf::scene::ExperimentFile& file,
-                   const vahf::experiment::RunSettings& settings, const RunArgs& a,
-                   vahf::report::OutputDirectory& directory) {
-  const vahf::data::LabDataset lab = vahf::data::LoadLabDataset(file.calibration.lab_path);
-  const int trials = settings.trials > 0 ? settings.trials : file.trials;
-  vahf::experiment::RunnerOptions options;
-  options.threads = settings.threads;
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<vahf::calibrate::CalibrationResult> stages = vahf::calibrate::Calibrate(
-      file.scene, lab, file.calibration, file.file, settings.seed, trials, options,
-      [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
-  const vahf::report::RunInfo info{a.threads, SecondsSince(start)};
-  const vahf::report::RunOutput written = WriteLabRun(
-      file, lab, settings.seed, trials, " per lab operator and parameter vector",
-      vahf::report::CalibrationSection(file, lab, stages), directory, info);
-  int evaluations = 0;
-  for (const auto& r : stages) {
-    evaluations += r.evaluations;
-    for (const auto& p : r.parameters)
-      std::printf("%s = %.6g, standard error %.3g, 95 %% interval [%.6g, %.6g]\n",
-                  p.name.c_str(), p.estimate, p.standard_error, p.ci.lower, p.ci.upper);
-  }
-  std::printf("%s: calibrate, seed %llu, %.1f s on %d thread(s), %d evaluations\n"
-              "results digest %s\nreport: %s/report.md\noverrides: %s/%s\n",
-              file.name.c_str(), static_cast<unsigned long long>(settings.seed),
-              info.wall_seconds, a.threads, evaluations,
-              written.results_digest.c_str(), directory.path().c_str(),
-              directory.path().c_str(), vahf::report::kOverridesFile);
-  return written.failed_plots.empty() ? 0 : 1;
-}
-
 int Run(const RunArgs& a) {
-  vahf::scene::ExperimentFile file = vahf::scene::LoadExperiment(a.experiment);
+  vahf::scene::ExperimentFile file = vahf::kinds::LoadExperiment(a.experiment);
   if (!a.overrides.empty())
     vahf::scene::ApplyOverrides(vahf::scene::LoadOverrides(a.overrides), &file);
-  vahf::experiment::RunSettings settings;
-  settings.seed = a.seed_given ? a.seed : file.seed;
-  settings.trials = a.trials;
-  settings.threads = a.threads;
-  const std::string out =
-      a.out.empty() ? "runs/" + file.name + "-seed" + std::to_string(settings.seed) : a.out;
+  vahf::kinds::RunContext context;
+  context.settings.seed = a.seed_given ? a.seed : file.seed;
+  context.settings.trials = a.trials;
+  context.settings.threads = a.threads;
+  const std::string out = a.out.empty() ? "runs/" + file.name + "-seed" +
+                                              std::to_string(context.settings.seed)
+                                        : a.out;
   // Checked and staged before any simulation: a refused path costs nothing.
   vahf::report::OutputDirectory directory(out);
+  context.directory = &directory;
   vahf::experiment::InstallInterruptHandler();
-  if (file.kind == "calibrate") return RunCalibration(file, settings, a, directory);
-  if (file.kind == "compare") return RunComparison(file, settings, a, directory);
-  const auto start = std::chrono::steady_clock::now();
-  const vahf::experiment::ExperimentRun run = vahf::experiment::RunExperiment(file, settings);
-  vahf::report::RunInfo info;
-  info.threads = a.threads;
-  info.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const vahf::report::RunOutput written = vahf::report::WriteRunOutput(run, directory, info);
-  const std::string& digest = written.results_digest;
-  std::printf("%s: %s, seed %llu, %.1f s on %d thread(s)\nresults digest %s\nreport: %s/report.md\n",
-              file.name.c_str(), file.kind.c_str(),
-              static_cast<unsigned long long>(settings.seed), info.wall_seconds, a.threads,
-              digest.c_str(), out.c_str());
-  for (const std::string& failure : written.failed_plots)
-    std::fprintf(stderr, "vahf: error: plot not rendered (results kept): %s\n",
-                 failure.c_str());
-  return written.failed_plots.empty() ? 0 : 1;
+  return vahf::kinds::RunExperiment(file, context);
 }
 
 struct SynthesizeArgs {

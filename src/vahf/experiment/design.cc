@@ -107,49 +107,67 @@ FatigueRun RunFatigue(const std::shared_ptr<const scene::Scene>& scene,
   return out;
 }
 
-ExperimentRun RunExperiment(const scene::ExperimentFile& file, const RunSettings& settings) {
+namespace {
+
+// A run of `file` with the settings' seed and cycles, before its design runs.
+ExperimentRun Begin(const scene::ExperimentFile& file, const RunSettings& settings) {
   ExperimentRun out;
   out.file = &file;
   out.seed = settings.seed;
   out.trials = settings.trials > 0 ? settings.trials : file.trials;
-  const std::string& kind = file.kind;
-  const RunnerOptions options = Options(settings, file.name + " (" + kind + ")");
-  if (kind == "paper") {
-    out.trials = settings.trials;  // 0: each experiment its own
-    // Each part takes its own file's trials unless the settings override them.
-    for (const scene::ExperimentFile& sub : file.experiments)
-      out.parts.push_back(RunExperiment(sub, settings));
-    return out;
-  }
+  return out;
+}
+
+RunnerOptions Options(const scene::ExperimentFile& file, const RunSettings& settings) {
+  return Options(settings, file.name + " (" + file.kind + ")");
+}
+
+}  // namespace
+
+ExperimentRun Table1Run(const scene::ExperimentFile& file, const RunSettings& settings) {
+  ExperimentRun out = Begin(file, settings);
+  out.run = RunDesign({{file.scene.name, "", Share(file.scene)}}, out.trials, out.seed, true,
+                      Options(file, settings));
+  return out;
+}
+
+ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file, const RunSettings& settings) {
+  ExperimentRun out = Begin(file, settings);
   std::vector<Condition> conditions;
-  if (kind == "table1") {
-    conditions.push_back({file.scene.name, "", Share(file.scene)});
-    out.run = RunDesign(conditions, out.trials, out.seed, true, options);
-  } else if (kind == "assembly_time") {
-    if (file.operators.empty()) {
-      conditions.push_back({"scene operator", file.scene.op.sex, Share(file.scene)});
-    }
-    for (const scene::OperatorEntry& o : file.operators)
-      conditions.push_back(OperatorCondition(file.scene, o));
-    out.run = RunDesign(conditions, out.trials, out.seed, false, options);
-  } else if (kind == "human_factors_groups") {
-    for (const scene::ConditionEntry& c : file.conditions)
-      conditions.push_back({c.name, "", Share(c.scene)});
-    out.run = RunDesign(conditions, out.trials, out.seed, true, options);
-  } else if (kind == "fatigue") {
-    FatigueRun f = RunFatigue(Share(file.scene), file.fatigue, out.trials, out.seed, options,
-                              Options(settings, file.name + " (fatigue pilot)"));
-    out.pilot = std::move(f.pilot);
-    out.work_rate = f.work_rate;
-    out.run = std::move(f.run);
-  } else if (kind == "precision") {
-    out.run = RunDesign(PrecisionConditions(file, settings.trials), out.trials, out.seed,
-                        false, options);
-  } else {
-    throw InputError(file.file, "/kind", kind,
-                     "vahf run runs table1, assembly_time, human_factors_groups, fatigue, "
-                     "precision and paper");
-  }
+  if (file.operators.empty())
+    conditions.push_back({"scene operator", file.scene.op.sex, Share(file.scene)});
+  for (const scene::OperatorEntry& o : file.operators)
+    conditions.push_back(OperatorCondition(file.scene, o));
+  out.run = RunDesign(conditions, out.trials, out.seed, false, Options(file, settings));
+  return out;
+}
+
+ExperimentRun HumanFactorsGroupsRun(const scene::ExperimentFile& file,
+                                    const RunSettings& settings) {
+  ExperimentRun out = Begin(file, settings);
+  std::vector<Condition> conditions;
+  for (const scene::ConditionEntry& c : file.conditions)
+    conditions.push_back({c.name, "", Share(c.scene)});
+  out.run = RunDesign(conditions, out.trials, out.seed, true, Options(file, settings));
+  return out;
+}
+
+ExperimentRun FatigueExperimentRun(const scene::ExperimentFile& file,
+                                   const RunSettings& settings) {
+  ExperimentRun out = Begin(file, settings);
+  FatigueRun f = RunFatigue(Share(file.scene), file.fatigue, out.trials, out.seed,
+                            Options(file, settings),
+                            Options(settings, file.name + " (fatigue pilot)"));
+  out.pilot = std::move(f.pilot);
+  out.work_rate = f.work_rate;
+  out.run = std::move(f.run);
+  return out;
+}
+
+ExperimentRun PrecisionRun(const scene::ExperimentFile& file, const RunSettings& settings) {
+  ExperimentRun out = Begin(file, settings);
+  out.run = RunDesign(PrecisionConditions(file, settings.trials), out.trials, out.seed, false,
+                      Options(file, settings));
   return out;
 }
 

@@ -11,7 +11,7 @@
 //                         (Sec. 5.4), see RunExperiment;
 //   precision             per scene, the reference and one condition per
 //                         setting of the integrator or model (precision_design.h);
-//   paper                 each experiment it lists.
+//   paper                 each experiment it lists (kinds/design_kinds.cc).
 #pragma once
 
 #include <cstdint>
@@ -100,14 +100,21 @@ struct ExperimentRun {
   std::vector<ExperimentRun> parts;  // paper: one run per listed experiment
 };
 
-// Runs the experiment `file` describes (InputError for a kind vahf cannot run
-// yet). Fatigue: the operator works cycles back to back for duration_min;
-// segment s of S covers minutes [s, s + 1) * duration / S. Simulating every
-// cycle of an hour one after another would take hours, so the design is
-// stratified: a pilot of cycles started at A = 0 measures the mean work rate
-// w (J/s of cycle time), and each segment's `trials` cycles are spread evenly
-// over its minutes, cycle j starting with the work A = w * 60 * minute that
-// back-to-back cycles would have accumulated by then.
-ExperimentRun RunExperiment(const scene::ExperimentFile& file, const RunSettings& settings);
+// The design of each kind of experiment that is a design of cycles (the kind
+// registry, kinds/kind.h, names them; a paper run is its experiments' runs).
+// Fatigue: the operator works cycles back to back for duration_min; segment s
+// of S covers minutes [s, s + 1) * duration / S. Simulating every cycle of an
+// hour one after another would take hours, so the design is stratified: a
+// pilot of cycles started at A = 0 measures the mean work rate w (J/s of
+// cycle time), and each segment's `trials` cycles are spread evenly over its
+// minutes, cycle j starting with the work A = w * 60 * minute that
+// back-to-back cycles would have accumulated by then (RunFatigue).
+ExperimentRun Table1Run(const scene::ExperimentFile& file, const RunSettings& settings);
+ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file, const RunSettings& settings);
+ExperimentRun HumanFactorsGroupsRun(const scene::ExperimentFile& file,
+                                    const RunSettings& settings);
+ExperimentRun FatigueExperimentRun(const scene::ExperimentFile& file,
+                                   const RunSettings& settings);
+ExperimentRun PrecisionRun(const scene::ExperimentFile& file, const RunSettings& settings);
 
 }  // namespace vahf::experiment

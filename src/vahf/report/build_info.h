@@ -5,6 +5,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace vahf::report {
 
@@ -15,6 +17,9 @@ struct BuildInfo {
   std::string compiler_version;  // e.g. "12.2.0"
   std::string build_type;        // CMAKE_BUILD_TYPE
   std::string cxx_flags;         // the C++ flags every vahf source is compiled with
+  // The libraries linked, name -> version as CMake's find_package found it
+  // ("Simbody" -> "3.7"; "unknown" where the package states none).
+  std::vector<std::pair<std::string, std::string>> libraries;
 };
 
 const BuildInfo& GetBuildInfo();

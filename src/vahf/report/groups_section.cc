@@ -2,9 +2,10 @@
 // assembly under the general, best and worst working conditions.
 #include <fmt/format.h>
 
+#include <map>
+
 #include "vahf/report/section.h"
 #include "vahf/stats/summary.h"
-#include "vahf/stats/welch.h"
 
 namespace vahf::report {
 namespace {
@@ -35,11 +36,16 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
   // [condition][instant] samples of eta and lambda_c, and pooled per condition.
   std::vector<std::vector<std::vector<double>>> eta(nc, std::vector<std::vector<double>>(ni)),
       lam = eta;
-  std::vector<std::vector<double>> eta_all(nc), lam_all(nc);
+  // Per condition, cycle -> the mean over the instants of eta and lambda_c
+  // (cycles with every instant only): one value per cycle, paired across
+  // conditions by the cycle's streams (common random numbers).
+  std::vector<std::map<std::uint64_t, std::pair<double, double>>> per_cycle(nc);
   Table samples({"condition", "cycle", "paper_instant_s", "fraction", "cycle_time_s",
                  "virtual_time_s", "eta", "lambda_c"});
   for (const experiment::CycleRecord& r : d.records) {
     if (!r.result.completed) continue;
+    double eta_sum = 0, lam_sum = 0;
+    std::size_t found = 0;
     for (std::size_t i = 0; i < ni; ++i) {
       const double fraction = file.instants_s[i] / file.paper_cycle_s;
       const double t = fraction * r.result.time;
@@ -49,9 +55,13 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
                       file.instants_s[i], fraction, r.result.time, t, f->eta, f->lambda_c});
       eta[r.condition][i].push_back(f->eta);
       lam[r.condition][i].push_back(f->lambda_c);
-      eta_all[r.condition].push_back(f->eta);
-      lam_all[r.condition].push_back(f->lambda_c);
+      eta_sum += f->eta;
+      lam_sum += f->lambda_c;
+      ++found;
     }
+    if (found == ni && ni > 0)
+      per_cycle[r.condition][r.cycle] = {eta_sum / static_cast<double>(ni),
+                                         lam_sum / static_cast<double>(ni)};
   }
   out.tables.emplace_back("human_factors_groups_samples.csv", samples);
 
@@ -71,9 +81,17 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
   for (std::size_t i = 0; i < ni; ++i) {
     fig_eta += fmt::format("{:g}", file.instants_s[i]);
     fig_lam += fmt::format("{:g}", file.instants_s[i]);
+    // Each condition's mean with its 95 % interval (the mean alone when one
+    // sample gives no interval; NaN, not drawn, when none).
+    const auto point = [](const std::vector<double>& xs) {
+      const stats::Summary m = stats::Summarize(xs);
+      const double mean = m.mean.value_or(NAN);
+      return fmt::format(" {} {} {}", mean, m.ci ? m.ci->lower : mean,
+                         m.ci ? m.ci->upper : mean);
+    };
     for (std::size_t c = 0; c < nc; ++c) {
-      fig_eta += fmt::format(" {}", stats::Summarize(eta[c][i]).mean.value_or(NAN));
-      fig_lam += fmt::format(" {}", stats::Summarize(lam[c][i]).mean.value_or(NAN));
+      fig_eta += point(eta[c][i]);
+      fig_lam += point(lam[c][i]);
     }
     fig_eta += "\n";
     fig_lam += "\n";
@@ -104,41 +122,65 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
     return std::nullopt;
   };
   const auto general = index("general"), best = index("best"), worst = index("worst");
-  if (general && best && worst) {
-    for (const auto& [quantity, all] :
-         {std::pair{"eta", &eta_all}, std::pair{"lambda_c", &lam_all}}) {
-      const auto& g = (*all)[*general];
-      const auto& b = (*all)[*best];
-      const auto& w = (*all)[*worst];
-      bool ok = g.size() >= 2 && b.size() >= 2 && w.size() >= 2;
-      std::string evidence = "too few samples";
-      if (ok) {
-        const stats::WelchResult lo = stats::WelchTTest(b, g);
-        const stats::WelchResult hi = stats::WelchTTest(g, w);
-        ok = lo.mean_difference < 0 && lo.p_less < 0.05 && hi.mean_difference < 0 &&
-             hi.p_less < 0.05;
-        tests[quantity] = {{"mean_best", stats::Mean(b)},
-                           {"mean_general", stats::Mean(g)},
-                           {"mean_worst", stats::Mean(w)},
-                           {"p_best_below_general", lo.p_less},
-                           {"p_general_below_worst", hi.p_less}};
-        evidence = fmt::format(
-            "means best {:.3f}, general {:.3f}, worst {:.3f}; p(best < general) = {:.4f}, "
-            "p(general < worst) = {:.4f}",
-            stats::Mean(b), stats::Mean(g), stats::Mean(w), lo.p_less, hi.p_less);
-      }
-      claims.push_back(Claim(std::string(quantity) +
-                                 " of the general condition lies between the best and "
-                                 "the worst condition's",
-                             ok, "two one-sided Welch t tests, 5 %", evidence));
+  // a's and b's values of `quantity` (0: eta, 1: lambda_c) over the cycles
+  // both have, in cycle order.
+  const auto pairs = [&](std::size_t a, std::size_t b, int quantity) {
+    std::pair<std::vector<double>, std::vector<double>> paired;
+    for (const auto& [cycle, values] : per_cycle[a]) {
+      const auto it = per_cycle[b].find(cycle);
+      if (it == per_cycle[b].end()) continue;
+      paired.first.push_back(quantity == 0 ? values.first : values.second);
+      paired.second.push_back(quantity == 0 ? it->second.first : it->second.second);
     }
+    return paired;
+  };
+  int q = 0;
+  for (const char* quantity : {"eta", "lambda_c"}) {
+    const int index_q = q++;
+    const std::string claim = std::string(quantity) +
+                              " of the general condition lies between the best and the "
+                              "worst condition's";
+    const char* test =
+        "two paired t tests over the cycles' means across the instants, one-sided, 5 %";
+    if (!general || !best || !worst) {
+      claims.push_back(UntestableClaim(
+          claim, test, "the experiment needs conditions named general, best and worst"));
+      continue;
+    }
+    const auto [b, g] = pairs(*best, *general, index_q);
+    const auto [g2, w] = pairs(*general, *worst, index_q);
+    std::string why;
+    const auto lo = PairedIfDefined(b, g, "cycles completed under best and general", &why);
+    const auto hi =
+        lo ? PairedIfDefined(g2, w, "cycles completed under general and worst", &why)
+           : std::nullopt;
+    if (!lo || !hi) {
+      claims.push_back(UntestableClaim(claim, test, why));
+      continue;
+    }
+    const bool ok = lo->mean_difference < 0 && lo->p_less < 0.05 && hi->mean_difference < 0 &&
+                    hi->p_less < 0.05;
+    tests[quantity] = {{"best_minus_general", lo->mean_difference},
+                       {"general_minus_worst", hi->mean_difference},
+                       {"pairs_best_general", lo->n},
+                       {"pairs_general_worst", hi->n},
+                       {"p_best_below_general", lo->p_less},
+                       {"p_general_below_worst", hi->p_less}};
+    claims.push_back(Claim(
+        claim, ok, test,
+        fmt::format("best - general = {:.3f} [{:.3f}, {:.3f}] (p(best < general) = {:.4f}, "
+                    "{} pairs), general - worst = {:.3f} [{:.3f}, {:.3f}] (p(general < "
+                    "worst) = {:.4f}, {} pairs)",
+                    lo->mean_difference, lo->ci.lower, lo->ci.upper, lo->p_less, lo->n,
+                    hi->mean_difference, hi->ci.lower, hi->ci.upper, hi->p_less, hi->n)));
   }
   out.summary = {{"tests", tests}, {"claims", claims}};
   out.markdown = md;
   std::string plot_cols;
   for (std::size_t c = 0; c < nc; ++c)
-    plot_cols += fmt::format("{}$d using 1:{} with linespoints title '{}'",
-                             c ? ", " : "", c + 2, d.conditions[c].name);
+    plot_cols += fmt::format("{}$d using 1:{}:{}:{} with yerrorlines title '{}'",
+                             c ? ", " : "", 3 * c + 2, 3 * c + 3, 3 * c + 4,
+                             d.conditions[c].name);
   const auto figure = [&](const std::string& data, const char* what, const char* fig) {
     return "$d << EOD\n" + data + "EOD\nset title '" + fig + ": " + what +
            " at the paper instants'\nset xlabel 'paper instant (s of 16)'\nset ylabel '" +

@@ -69,6 +69,8 @@ nlohmann::json ManifestJson(const ManifestFields& f) {
     return nlohmann::json{{"path", file.path}, {"sha256", file.sha256}};
   };
   const BuildInfo& b = f.build;
+  nlohmann::json libraries = nlohmann::json::object();
+  for (const auto& [name, version] : b.libraries) libraries[name] = version;
   return {
       {"format", kManifestFormat},
       {"experiment", input(f.experiment)},
@@ -83,7 +85,8 @@ nlohmann::json ManifestJson(const ManifestFields& f) {
         {"compiler", b.compiler_id},
         {"compiler_version", b.compiler_version},
         {"build_type", b.build_type},
-        {"cxx_flags", b.cxx_flags}}},
+        {"cxx_flags", b.cxx_flags},
+        {"libraries", libraries}}},
       {"result_files", f.result_files},
       {"results_digest", f.results_digest},
   };

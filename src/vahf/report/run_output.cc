@@ -39,9 +39,10 @@ void AddInputs(const scene::ExperimentFile& f, std::vector<std::string>* paths) 
 }
 
 // "10", or for a paper run each experiment's: "table1 8, fatigue 12", or for
-// a precision run each scene's: "hydraulic_cylinder 3, peg_in_hole 8".
+// a design whose conditions carry their own cycles, each group's (a precision
+// run's scenes): "hydraulic_cylinder 3, peg_in_hole 8".
 std::string CyclesPerCondition(const experiment::ExperimentRun& run) {
-  if (run.file->kind == "precision") {
+  if (!run.run.conditions.empty() && run.run.conditions.front().trials > 0) {
     std::string out;
     std::string last;
     for (const experiment::Condition& c : run.run.conditions) {
@@ -64,12 +65,15 @@ std::string ClaimsMarkdown(const std::vector<Section>& sections) {
   for (const Section& s : sections) any = any || !s.summary.at("claims").empty();
   if (!any) return "";
   std::string md =
-      "## The paper's claims\n\n| claim | reproduced | test | evidence |\n"
+      "## The paper's claims\n\nEach claim is tested on the run: yes, no, or untestable "
+      "(the run cannot test it; the evidence says why).\n\n"
+      "| claim | reproduced | test | evidence |\n"
       "| --- | --- | --- | --- |\n";
   for (const Section& s : sections)
     for (const auto& c : s.summary.at("claims"))
       md += fmt::format("| {} | {} | {} | {} |\n", c.at("claim").get<std::string>(),
-                        c.at("reproduced").get<bool>() ? "yes" : "**no**",
+                        c.at("verdict") == "no" ? std::string("**no**")
+                                                : c.at("verdict").get<std::string>(),
                         c.at("test").get<std::string>(),
                         c.at("evidence").get<std::string>());
   return md + "\n";
@@ -82,11 +86,10 @@ std::string IntegrationText(const scene::Parameters& p) {
                      p.simulation.accuracy, p.contact.model);
 }
 
-RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& out,
+RunOutput WriteRunOutput(const experiment::ExperimentRun& run,
+                         const std::vector<Section>& sections, OutputDirectory& out,
                          const RunInfo& info) {
-  std::vector<Section> sections;
-  for (const experiment::ExperimentRun* leaf : Leaves(run))
-    sections.push_back(SectionFor(*leaf));
+  VAHF_CHECK(sections.size() == Leaves(run).size(), "a section per experiment run");
   RunHeader h;
   h.file = run.file;
   h.first = run.parts.empty() ? run.file : run.parts[0].file;

@@ -25,9 +25,11 @@ struct RunOutput {
   std::vector<std::string> failed_plots;
 };
 
-// Writes into `out` (created before the run, so that a refused path costs no
-// simulation) and commits it.
-RunOutput WriteRunOutput(const experiment::ExperimentRun& run, OutputDirectory& out,
+// Writes a design's run with its sections (one per experiment run: the run
+// itself, or each part of a paper run, in order) into `out` (created before
+// the run, so that a refused path costs no simulation) and commits it.
+RunOutput WriteRunOutput(const experiment::ExperimentRun& run,
+                         const std::vector<Section>& sections, OutputDirectory& out,
                          const RunInfo& info);
 
 // What an output directory says about a run besides its sections: the

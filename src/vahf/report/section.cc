@@ -10,8 +10,56 @@ namespace vahf::report {
 
 nlohmann::json Claim(const std::string& claim, bool reproduced, const std::string& test,
                      const std::string& evidence) {
-  return {{"claim", claim}, {"reproduced", reproduced}, {"test", test},
+  return {{"claim", claim},
+          {"verdict", reproduced ? "yes" : "no"},
+          {"reproduced", reproduced},
+          {"test", test},
           {"evidence", evidence}};
+}
+
+nlohmann::json UntestableClaim(const std::string& claim, const std::string& test,
+                               const std::string& why) {
+  return {{"claim", claim},
+          {"verdict", "untestable"},
+          {"reproduced", false},
+          {"test", test},
+          {"evidence", why}};
+}
+
+std::optional<stats::WelchResult> WelchIfDefined(const std::vector<double>& a,
+                                                 const std::vector<double>& b,
+                                                 const std::string& a_name,
+                                                 const std::string& b_name, std::string* why) {
+  if (a.size() < 2 || b.size() < 2) {
+    *why = fmt::format("{} has {} value(s) and {} {}: the test needs two each", a_name,
+                       a.size(), b_name, b.size());
+    return std::nullopt;
+  }
+  if (stats::SampleStandardDeviation(a) == 0 && stats::SampleStandardDeviation(b) == 0) {
+    *why = fmt::format("neither {} ({:.6g} every time) nor {} ({:.6g} every time) varies: "
+                       "the t statistic is undefined",
+                       a_name, a.front(), b_name, b.front());
+    return std::nullopt;
+  }
+  return stats::WelchTTest(a, b);
+}
+
+std::optional<stats::PairedTResult> PairedIfDefined(const std::vector<double>& a,
+                                                    const std::vector<double>& b,
+                                                    const std::string& pairs,
+                                                    std::string* why) {
+  if (a.size() < 2) {
+    *why = fmt::format("{} pair(s) of {}: the test needs two", a.size(), pairs);
+    return std::nullopt;
+  }
+  std::vector<double> d(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) d[i] = a[i] - b[i];
+  if (stats::SampleStandardDeviation(d) == 0) {
+    *why = fmt::format("the {} {} differ by {:.6g} every time: the t statistic is undefined",
+                       a.size(), pairs, d.front());
+    return std::nullopt;
+  }
+  return stats::PairedTTest(a, b);
 }
 
 std::string MeanCi(const stats::Summary& s) {
@@ -38,24 +86,8 @@ Table CyclesTable(const experiment::DesignRun& run) {
   return t;
 }
 
-namespace {
-
-// The analysis of the run's kind.
-Section KindSection(const experiment::ExperimentRun& run) {
-  const std::string& kind = run.file->kind;
-  if (kind == "table1") return Table1Section(run);
-  if (kind == "assembly_time") return AssemblyTimeSection(run);
-  if (kind == "human_factors_groups") return HumanFactorsGroupsSection(run);
-  if (kind == "fatigue") return FatigueSection(run);
-  if (kind == "precision") return PrecisionSection(run);
-  VAHF_CHECK(false, "no section for this kind");
-  return {};
-}
-
-}  // namespace
-
-Section SectionFor(const experiment::ExperimentRun& run) {
-  Section out = KindSection(run);
+Section SectionFor(const experiment::ExperimentRun& run, Section analysis) {
+  Section out = std::move(analysis);
   out.summary["health"] = HealthJson(run.run);
   out.markdown += HealthMarkdown(run.run);
   // A kind that measures its own cost (precision: per setting, whose trials

@@ -1,10 +1,11 @@
 // What one experiment contributes to a run's output (docs/outputs.md): tidy
 // tables, its part of summary.json (statistics and the paper's claims, each
-// marked reproduced or not), a Markdown section of report.md and its plots.
+// with its verdict: yes, no or untestable), a Markdown section of report.md and its plots.
 // The analysis of each kind lives in its own file; this header declares them.
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +13,8 @@
 #include "vahf/experiment/design.h"
 #include "vahf/report/table.h"
 #include "vahf/stats/summary.h"
+#include "vahf/stats/paired.h"
+#include "vahf/stats/welch.h"
 
 namespace vahf::report {
 
@@ -37,11 +40,34 @@ struct Section {
   nlohmann::json measured;
 };
 
-// A claim of the paper tested on the run: `reproduced` when the statistical
-// test named in `test` supports it at the 5 % level; `evidence` says what the
-// model gave instead when it does not.
+// A claim of the paper tested on the run, with its verdict: "yes" when the
+// statistical test named in `test` supports it at the 5 % level, else "no";
+// `evidence` gives the test's figures (and, for "no", what the model gave
+// instead). JSON: claim, verdict, reproduced (verdict == "yes"), test,
+// evidence.
 nlohmann::json Claim(const std::string& claim, bool reproduced, const std::string& test,
                      const std::string& evidence);
+// A claim the run cannot test (too few completions, no spread, a condition
+// missing): verdict "untestable", `why` in a sentence. It stays in the table.
+nlohmann::json UntestableClaim(const std::string& claim, const std::string& test,
+                               const std::string& why);
+
+// Welch's t test of a against b (stats/welch.h) when it is defined: each has
+// at least two values and not both lack spread; otherwise nothing, and `why`
+// says which (naming the samples `a_name` and `b_name`).
+std::optional<stats::WelchResult> WelchIfDefined(const std::vector<double>& a,
+                                                 const std::vector<double>& b,
+                                                 const std::string& a_name,
+                                                 const std::string& b_name, std::string* why);
+
+// Student's paired t test of a against b, pair by pair (stats/paired.h): the
+// outcomes of one cycle under two conditions on the same streams. Defined
+// when there are two pairs and the differences vary; otherwise nothing, and
+// `why` says which (`pairs` names the pairs: "cycles completed in both").
+std::optional<stats::PairedTResult> PairedIfDefined(const std::vector<double>& a,
+                                                    const std::vector<double>& b,
+                                                    const std::string& pairs,
+                                                    std::string* why);
 
 // "mean [lower, upper]" of a summary for report.md, 3 decimals; the mean
 // alone without an interval (one sample), "-" without a mean.
@@ -58,11 +84,12 @@ Section FatigueSection(const experiment::ExperimentRun& run);
 // Error against run time of each setting (report/precision.h).
 Section PrecisionSection(const experiment::ExperimentRun& run);
 
-// The section of a run of any kind but "paper", with its numerical health
-// (health.h) in summary["health"] and at the end of its markdown, and, but for
-// a kind that measures its cost itself (precision, per setting: its
+// The section of a design of cycles: its kind's analysis (one of the above,
+// as the kind registry, kinds/kind.h, pairs them) with the run's numerical
+// health (health.h) in summary["health"] and at the end of its markdown, and,
+// but for a kind that measures its cost itself (precision, per setting: its
 // `measured` is set), what its trials cost (cost.h) as a measured table
 // KIND_cost.csv, measured.json and markdown.
-Section SectionFor(const experiment::ExperimentRun& run);
+Section SectionFor(const experiment::ExperimentRun& run, Section analysis);
 
 }  // namespace vahf::report

@@ -12,17 +12,6 @@
 
 namespace vahf::scene {
 
-const std::vector<std::string>& ExperimentKinds() {
-  static const std::vector<std::string> kinds = {
-      "table1",  "assembly_time", "human_factors_groups", "fatigue", "paper",
-      "compare", "calibrate",     "precision",            "stability"};
-  return kinds;
-}
-
-ExperimentFile LoadExperiment(const std::string& path) {
-  return ParseExperiment(ReadJsonFile(path), path);
-}
-
 std::string ResolvePath(const JsonNode& node, const std::string& experiment_path,
                         const char* what) {
   const std::filesystem::path relative = node.String();
@@ -111,10 +100,10 @@ Scene Apply(const Scene& scene, const PrecisionSetting& setting, const JsonNode&
   return out;
 }
 
+}  // namespace
+
 void ReadPrecision(const JsonNode& root, const std::string& path, ExperimentFile* e) {
   PrecisionDesign& d = e->precision;
-  if (auto scene = root.Optional("scene"))
-    scene->Fail("a precision experiment names its scenes in \"scenes\"");
   const JsonNode reference = root.Required("reference");
   d.reference = ReadSetting(reference);
   d.reference.label = "reference: " + d.reference.label;
@@ -158,6 +147,8 @@ void ReadPrecision(const JsonNode& root, const std::string& path, ExperimentFile
   e->scene_path = d.scenes[0].path;
   e->scene = d.scenes[0].scene;
 }
+
+namespace {
 
 // A fitted parameter's value must obey the parameter table's rule, and so
 // must the points a central difference visits around it.
@@ -262,8 +253,21 @@ CalibrationStage ReadStage(const JsonNode& node, const CalibrationDesign& d, con
   return stage;
 }
 
+// Segment targets or quantities lie within the fatigue design's hour.
+void CheckSegments(const std::vector<FitTarget>& targets, const FatigueDesign& fatigue,
+                   const std::string& path) {
+  for (const FitTarget& t : targets)
+    if (t.segment > fatigue.segments)
+      throw InputError(path, t.pointer + "/segment", std::to_string(t.segment),
+                       fmt::format("the fatigue design has {} segments", fatigue.segments));
+}
+
+}  // namespace
+
 void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+  ReadFatigue(root, path, e);
   CalibrationDesign& d = e->calibration;
+  d.fatigue = e->fatigue;
   d.lab_path = ResolvePath(root.Required("lab"), path, "lab dataset");
   if (auto step = root.Optional("relative_step")) d.relative_step = step->InRange(1e-4, 0.5);
   if (auto it = root.Optional("max_iterations"))
@@ -294,23 +298,17 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
   } else {
     d.stages.push_back(ReadStage(root, d, e->scene, path));
   }
+  for (const CalibrationStage& stage : d.stages) CheckSegments(stage.targets, d.fatigue, path);
 }
 
-// A comparison's lab and quantities; a segment quantity lies within the
-// fatigue design's hour (`fatigue`, read before).
-void ReadComparison(const JsonNode& root, const std::string& path, const FatigueDesign& fatigue,
-                    ExperimentFile* e) {
+void ReadComparison(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+  ReadFatigue(root, path, e);
   ComparisonDesign& d = e->comparison;
   d.lab_path = ResolvePath(root.Required("lab"), path, "lab dataset");
   d.quantities = ReadTargets(root.Required("quantities"), e->scene, true);
-  d.fatigue = fatigue;
-  for (const FitTarget& t : d.quantities)
-    if (t.segment > fatigue.segments)
-      throw InputError(path, t.pointer + "/segment", std::to_string(t.segment),
-                       fmt::format("the fatigue design has {} segments", fatigue.segments));
+  d.fatigue = e->fatigue;
+  CheckSegments(d.quantities, d.fatigue, path);
 }
-
-}  // namespace
 
 bool PrecisionSetting::AccuracyOnly() const {
   bool accuracy = false;
@@ -367,13 +365,8 @@ std::string DescribePrecision(const ExperimentFile& e) {
   return out;
 }
 
-ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string& path) {
-  const JsonNode root(document, path);
-  root.ExpectObject({"format", "name", "description", "kind", "scene", "seed", "trials",
-                     "operators", "conditions", "instants_s", "paper_cycle_s", "fatigue",
-                     "experiments", "paper_table", "scenes", "reference", "settings",
-                     "noise_trials", "lab", "parameters", "targets", "loss", "relative_step",
-                     "max_iterations", "tolerance", "solver", "stages", "quantities"});
+ExperimentFile ReadExperimentHeader(const JsonNode& root, const std::string& path,
+                                    const std::vector<std::string>& kinds) {
   const JsonNode format = root.Required("format");
   if (format.String() != kExperimentFormat)
     format.Fail(std::string("an experiment file declares \"format\": \"") +
@@ -382,107 +375,62 @@ ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string
   e.file = path;
   e.name = root.Required("name").String();
   if (auto d = root.Optional("description")) e.description = d->String();
-  e.kind = root.Required("kind").Choice(ExperimentKinds());
+  e.kind = root.Required("kind").Choice(kinds);
   if (auto seed = root.Optional("seed")) e.seed = seed->Unsigned();
   if (auto trials = root.Optional("trials"))
     e.trials = static_cast<int>(trials->Integer(1, 10'000'000));
-  // A key that only another kind reads is a mistake worth naming.
-  const auto only_for = [&](const char* key, const char* kind) {
-    if (auto node = root.Optional(key); node && e.kind != kind)
-      node->Fail(std::string("only an experiment of kind \"") + kind + "\" reads \"" +
-                 key + "\"");
-  };
-  only_for("operators", "assembly_time");
-  only_for("conditions", "human_factors_groups");
-  only_for("instants_s", "human_factors_groups");
-  only_for("paper_cycle_s", "human_factors_groups");
-  if (auto node = root.Optional("fatigue");
-      node && e.kind != "fatigue" && e.kind != "calibrate" && e.kind != "compare")
-    node->Fail(
-        "only an experiment of kind \"fatigue\", \"calibrate\" or \"compare\" reads \"fatigue\"");
-  only_for("experiments", "paper");
-  only_for("paper_table", "table1");
-  for (const char* key : {"scenes", "reference", "settings", "noise_trials"})
-    only_for(key, "precision");
-  for (const char* key : {"parameters", "targets", "loss", "relative_step", "max_iterations",
-                          "tolerance", "solver", "stages"})
-    only_for(key, "calibrate");
-  only_for("quantities", "compare");
-  if (auto lab = root.Optional("lab"); lab && e.kind != "calibrate" && e.kind != "compare")
-    lab->Fail("only an experiment of kind \"calibrate\" or \"compare\" reads \"lab\"");
-  if (auto t = root.Optional("paper_table"))
-    e.paper_table_path = ResolvePath(*t, path, "paper table");
-
-  if (e.kind == "paper") {
-    // The paper's experiments, each from its own file; they name their scenes.
-    if (auto scene = root.Optional("scene"))
-      scene->Fail("a paper experiment takes its scenes from the experiments it lists");
-    const JsonNode list = root.Required("experiments");
-    const std::size_t n = list.ArraySize(1);
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::string sub = ResolvePath(list.At(k), path, "experiment");
-      // Checked before parsing, so a file listing itself cannot recurse.
-      const nlohmann::json doc = ReadJsonFile(sub);
-      if (doc.is_object() && doc.contains("kind") && doc["kind"] == "paper")
-        list.At(k).Fail("a paper experiment cannot list another paper experiment");
-      e.experiments.push_back(ParseExperiment(doc, sub));
-    }
-    return e;
-  }
-
-  if (e.kind == "precision") {
-    ReadPrecision(root, path, &e);
-    return e;
-  }
-
-  e.scene_path = ResolvePath(root.Required("scene"), path, "scene");
-  e.scene = LoadScene(e.scene_path);
-  if (auto ops = root.Optional("operators")) e.operators = ReadOperators(*ops, e.scene);
-  if (e.kind == "human_factors_groups") {
-    const JsonNode list = root.Required("conditions");
-    const std::size_t n = list.ArraySize(1);
-    for (std::size_t k = 0; k < n; ++k) {
-      const JsonNode c = list.At(k);
-      c.ExpectObject({"name", "scene"});
-      ConditionEntry entry;
-      entry.name = c.Required("name").String();
-      entry.scene_path = ResolvePath(c.Required("scene"), path, "scene");
-      entry.scene = LoadScene(entry.scene_path);
-      for (const ConditionEntry& other : e.conditions)
-        if (other.name == entry.name)
-          c.Required("name").Fail("condition names must be unique");
-      e.conditions.push_back(std::move(entry));
-    }
-    if (auto cycle = root.Optional("paper_cycle_s")) e.paper_cycle_s = cycle->Positive();
-    const JsonNode instants = root.Required("instants_s");
-    const std::size_t m = instants.ArraySize(1);
-    for (std::size_t k = 0; k < m; ++k) {
-      const double t = instants.At(k).Positive();
-      if (t > e.paper_cycle_s)
-        instants.At(k).Fail(fmt::format(
-            "an instant lies within the paper's cycle, paper_cycle_s = {} s",
-            e.paper_cycle_s));
-      e.instants_s.push_back(t);
-    }
-  }
-  if (e.kind == "calibrate") ReadCalibration(root, path, &e);
-  if (auto f = root.Optional("fatigue")) {
-    f->ExpectObject({"duration_min", "segments", "pilot_cycles"});
-    if (auto d = f->Optional("duration_min")) e.fatigue.duration_min = d->Positive();
-    if (auto s = f->Optional("segments"))
-      e.fatigue.segments = static_cast<int>(s->Integer(1, 1000));
-    if (auto p = f->Optional("pilot_cycles"))
-      e.fatigue.pilot_cycles = static_cast<int>(p->Integer(0, 10'000'000));
-  }
-  e.calibration.fatigue = e.fatigue;
-  // A calibration's segment targets lie within its fatigue design's hour.
-  for (const CalibrationStage& stage : e.calibration.stages)
-    for (const FitTarget& t : stage.targets)
-      if (t.segment > e.fatigue.segments)
-        throw InputError(path, t.pointer + "/segment", std::to_string(t.segment),
-                         fmt::format("the fatigue design has {} segments", e.fatigue.segments));
-  if (e.kind == "compare") ReadComparison(root, path, e.fatigue, &e);
   return e;
+}
+
+void ReadExperimentScene(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+  e->scene_path = ResolvePath(root.Required("scene"), path, "scene");
+  e->scene = LoadScene(e->scene_path);
+}
+
+void ReadTable1(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+  if (auto t = root.Optional("paper_table"))
+    e->paper_table_path = ResolvePath(*t, path, "paper table");
+}
+
+void ReadAssemblyTime(const JsonNode& root, const std::string&, ExperimentFile* e) {
+  if (auto ops = root.Optional("operators")) e->operators = ReadOperators(*ops, e->scene);
+}
+
+void ReadHumanFactorsGroups(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+  const JsonNode list = root.Required("conditions");
+  const std::size_t n = list.ArraySize(1);
+  for (std::size_t k = 0; k < n; ++k) {
+    const JsonNode c = list.At(k);
+    c.ExpectObject({"name", "scene"});
+    ConditionEntry entry;
+    entry.name = c.Required("name").String();
+    entry.scene_path = ResolvePath(c.Required("scene"), path, "scene");
+    entry.scene = LoadScene(entry.scene_path);
+    for (const ConditionEntry& other : e->conditions)
+      if (other.name == entry.name) c.Required("name").Fail("condition names must be unique");
+    e->conditions.push_back(std::move(entry));
+  }
+  if (auto cycle = root.Optional("paper_cycle_s")) e->paper_cycle_s = cycle->Positive();
+  const JsonNode instants = root.Required("instants_s");
+  const std::size_t m = instants.ArraySize(1);
+  for (std::size_t k = 0; k < m; ++k) {
+    const double t = instants.At(k).Positive();
+    if (t > e->paper_cycle_s)
+      instants.At(k).Fail(fmt::format(
+          "an instant lies within the paper's cycle, paper_cycle_s = {} s", e->paper_cycle_s));
+    e->instants_s.push_back(t);
+  }
+}
+
+void ReadFatigue(const JsonNode& root, const std::string&, ExperimentFile* e) {
+  const auto f = root.Optional("fatigue");
+  if (!f) return;
+  f->ExpectObject({"duration_min", "segments", "pilot_cycles"});
+  if (auto d = f->Optional("duration_min")) e->fatigue.duration_min = d->Positive();
+  if (auto s = f->Optional("segments"))
+    e->fatigue.segments = static_cast<int>(s->Integer(1, 1000));
+  if (auto p = f->Optional("pilot_cycles"))
+    e->fatigue.pilot_cycles = static_cast<int>(p->Integer(0, 10'000'000));
 }
 
 std::string FileFormatOf(const std::string& path) {

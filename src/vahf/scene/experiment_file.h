@@ -23,9 +23,6 @@ inline constexpr const char* kLabFormat = "vahf-lab/1";
 inline constexpr const char* kOverridesFormat = "vahf-overrides/1";
 inline constexpr const char* kSyntheticFormat = "vahf-synthetic/1";
 
-// The experiment kinds of docs/design.md, "Experiments".
-const std::vector<std::string>& ExperimentKinds();
-
 // An operator of an assembly_time experiment: the scene's operator with this
 // stature and arm length (standing where the scene's operator stands).
 struct OperatorEntry {
@@ -203,11 +200,30 @@ std::string ResolvePath(const JsonNode& node, const std::string& experiment_path
 // rule; names unique.
 std::vector<OperatorEntry> ReadOperators(const JsonNode& node, const Scene& scene);
 
-// Loads the experiment and the scene it names; errors name whichever file
-// holds the fault.
-ExperimentFile LoadExperiment(const std::string& path);
-// The same for an already parsed document read from `path`.
-ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string& path);
+// Reading an experiment file (kinds/kind.h parses it: the common fields, then
+// the keys of its kind through the kind's registered reader). Each reader
+// below takes the file's root object and its path and fills its part of `e`;
+// errors name whichever file holds the fault.
+
+// format, name, description, kind (one of `kinds`), seed and trials.
+ExperimentFile ReadExperimentHeader(const JsonNode& root, const std::string& path,
+                                    const std::vector<std::string>& kinds);
+// "scene": the file it names, loaded.
+void ReadExperimentScene(const JsonNode& root, const std::string& path, ExperimentFile* e);
+// table1: "paper_table".
+void ReadTable1(const JsonNode& root, const std::string& path, ExperimentFile* e);
+// assembly_time: "operators".
+void ReadAssemblyTime(const JsonNode& root, const std::string& path, ExperimentFile* e);
+// human_factors_groups: "conditions", "instants_s", "paper_cycle_s".
+void ReadHumanFactorsGroups(const JsonNode& root, const std::string& path, ExperimentFile* e);
+// fatigue: "fatigue" (also read by calibrate and compare for segment targets).
+void ReadFatigue(const JsonNode& root, const std::string& path, ExperimentFile* e);
+// precision: "scenes", "reference", "settings", "noise_trials".
+void ReadPrecision(const JsonNode& root, const std::string& path, ExperimentFile* e);
+// calibrate: "lab", "fatigue", the fit's parameters, targets, stages and settings.
+void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFile* e);
+// compare: "lab", "fatigue", "quantities".
+void ReadComparison(const JsonNode& root, const std::string& path, ExperimentFile* e);
 
 // "scene", "experiment", "lab", "overrides" or "synthetic" by the document's "format" field; an
 // InputError naming `file` otherwise.

@@ -5,6 +5,7 @@
 // assembly_time.json are GB/T 10000-1988's (data/anthropometry/gb10000_1988.csv);
 // and every malformed variant throws vahf::InputError naming the file that
 // holds the fault, the exact JSON pointer, the value and the rule broken.
+#include "vahf/kinds/kind.h"
 #include "vahf/scene/experiment_file.h"
 
 #include <gmock/gmock.h>
@@ -21,11 +22,14 @@
 #include <utility>
 #include <vector>
 
-#include "test_files.h"
+#include "support/test_files.h"
 #include "vahf/core/error.h"
 #include "vahf/scene/scene_loader.h"
 
 namespace vahf::scene {
+
+using kinds::LoadExperiment;
+using kinds::ParseExperiment;
 namespace {
 
 using ::nlohmann::json;

@@ -1,0 +1,65 @@
+// The compare kind (docs/calibration.md, "Compare"): a virtual design against
+// a lab dataset, quantity by quantity (compare/comparison.h).
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "vahf/calibrate/targets.h"
+#include "vahf/compare/comparison.h"
+#include "vahf/kinds/kind_functions.h"
+#include "vahf/kinds/lab_run.h"
+#include "vahf/kinds/run_support.h"
+#include "vahf/report/compare_section.h"
+
+namespace vahf::kinds {
+
+// The lab's side of every quantity, as a run reads it before simulating, and
+// the scene's trial models.
+std::string CheckComparison(const scene::ExperimentFile& e) {
+  const data::LabDataset lab = data::LoadLabDataset(e.comparison.lab_path);
+  std::string out = data::DescribeLabDataset(lab);
+  calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
+  bool segments = false;
+  for (const auto& q : compare::LabSide(lab, e.comparison, e.file)) {
+    const char* unit = q.target.unit == "s" ? " s" : "";
+    out += fmt::format("  compares {} within +-{:g}{}: lab {:g}{} from {}\n", q.target.label,
+                       q.margin, unit, q.target.lab.value, unit,
+                       compare::LabBasis(q.target, q.reported));
+    segments = segments || q.target.spec.segment > 0;
+  }
+  const scene::FatigueDesign& f = e.comparison.fatigue;
+  if (segments)
+    out += fmt::format("  segments from the fatigue design: {:g} min in {} segments, {} pilot "
+                       "cycles\n",
+                       f.duration_min, f.segments, f.pilot_cycles > 0 ? f.pilot_cycles : e.trials);
+  return out + DescribeSceneModels(e.scene);
+}
+
+int RunComparison(const scene::ExperimentFile& file, const RunContext& context) {
+  const experiment::RunSettings& settings = context.settings;
+  const data::LabDataset lab = data::LoadLabDataset(file.comparison.lab_path);
+  const int trials = settings.trials > 0 ? settings.trials : file.trials;
+  experiment::RunnerOptions options;
+  options.threads = settings.threads;
+  options.label = file.name + " (compare)";
+  options.unit = "cycles";
+  experiment::RunnerOptions pilot_options = options;
+  pilot_options.label = file.name + " (compare, fatigue pilot)";
+  const auto start = std::chrono::steady_clock::now();
+  const compare::ComparisonResult result =
+      compare::Compare(file.scene, lab, file.comparison, file.file, settings.seed, trials,
+                       options, pilot_options);
+  const report::RunInfo info{settings.threads, SecondsSince(start)};
+  const report::RunOutput written = WriteLabRun(
+      file, lab, context, trials,
+      result.fatigue.run.conditions.empty() ? " per lab operator"
+      : result.run.conditions.empty()       ? " per segment"
+                                            : " per lab operator and per segment",
+      report::ComparisonSection(file, lab, result, trials), info);
+  for (const auto& q : result.quantities)
+    std::printf("%s: %s\n", q.target.label.c_str(), q.verdict.c_str());
+  return FinishRun(file, context, info.wall_seconds, written);
+}
+
+}  // namespace vahf::kinds

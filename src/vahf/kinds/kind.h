@@ -1,0 +1,79 @@
+// The experiment kinds, each registered once (kinds/registry.cc): the keys of
+// an experiment file it reads and how (scene/experiment_file.h's readers), what
+// `vahf check` validates and says of it, and how `vahf run` runs, analyses and
+// renders it. This is the top layer of the library: it sits above experiment/
+// (designs of cycles), calibrate/, compare/ and report/, and the vahf command
+// reaches every kind through it. A new kind is one entry of the table.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "vahf/experiment/design.h"
+#include "vahf/report/output_directory.h"
+#include "vahf/report/section.h"
+#include "vahf/scene/experiment_file.h"
+
+namespace vahf::kinds {
+
+// What a run needs besides its experiment file.
+struct RunContext {
+  experiment::RunSettings settings;  // seed (resolved), trials override, threads
+  report::OutputDirectory* directory = nullptr;  // created before any simulation
+};
+
+struct Kind {
+  std::string name;
+  std::string summary;  // one line: what it runs and shows (docs/experiments.md)
+  // The keys of an experiment file it reads besides the common ones (format,
+  // name, description, kind, seed, trials, scene); a key only other kinds read
+  // is an error that names them.
+  std::vector<std::string> keys;
+  // Empty: the file names its scene in "scene". Otherwise the kind takes its
+  // scenes elsewhere and this says where (the error for a "scene" key).
+  std::string scene_elsewhere;
+  // Reads the kind's keys into the file (after the header and scene).
+  void (*parse)(const scene::JsonNode& root, const std::string& path,
+                scene::ExperimentFile* e) = nullptr;
+  // Validates what only loading or building can (lab datasets, trial models,
+  // a paper run's experiments) before any simulation, and says what the file
+  // holds, for `vahf check`; an InputError when something is wrong.
+  std::string (*check)(const scene::ExperimentFile& file) = nullptr;
+  // A design of cycles (a paper run lists only these): its run and its
+  // analysis into a report section. Null for a kind with a run of its own.
+  experiment::ExperimentRun (*design)(const scene::ExperimentFile& file,
+                                      const experiment::RunSettings& settings) = nullptr;
+  report::Section (*analyse)(const experiment::ExperimentRun& run) = nullptr;
+  // A run of its own (calibrate, compare): runs, writes the output directory,
+  // prints what it found; returns the exit status. Null: a design's run.
+  int (*run)(const scene::ExperimentFile& file, const RunContext& context) = nullptr;
+};
+
+// Every kind, in the order docs/experiments.md presents them.
+const std::vector<Kind>& Kinds();
+std::vector<std::string> KindNames();
+// The kind named `name`; a program error when there is none (the file's kind
+// was checked against KindNames when it was read).
+const Kind& FindKind(const std::string& name);
+
+// Reads an experiment file: the common fields, the scene, then its kind's
+// keys; errors name whichever file holds the fault.
+scene::ExperimentFile LoadExperiment(const std::string& path);
+scene::ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string& path);
+
+// `vahf check` of an experiment file: every validation a run makes before its
+// first trial, and what the file holds.
+std::string CheckExperiment(const scene::ExperimentFile& file);
+
+// `vahf run`: validates as CheckExperiment does, runs the kind, writes the
+// output directory and prints a summary; the exit status (1 when a plot could
+// not be rendered: the results are kept).
+int RunExperiment(const scene::ExperimentFile& file, const RunContext& context);
+
+// A design's run (a paper run: each of its experiments', as parts) and its
+// sections, one per experiment run, as the output directory holds them.
+experiment::ExperimentRun RunDesign(const scene::ExperimentFile& file,
+                                    const experiment::RunSettings& settings);
+std::vector<report::Section> Sections(const experiment::ExperimentRun& run);
+
+}  // namespace vahf::kinds

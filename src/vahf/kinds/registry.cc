@@ -1,0 +1,145 @@
+// The experiment kinds: one entry each (kind.h). docs/experiments.md describes
+// them; docs/scene-format.md, "Experiment files", their keys.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "vahf/core/error.h"
+#include "vahf/kinds/kind_functions.h"
+#include "vahf/kinds/run_support.h"
+#include "vahf/report/run_output.h"
+#include "vahf/scene/json_reader.h"
+
+namespace vahf::kinds {
+
+const std::vector<Kind>& Kinds() {
+  using namespace experiment;
+  using namespace report;
+  using namespace scene;
+  static const std::vector<Kind> kinds = {
+      {"table1", "Table 1: V, f, r, g, eta, lambda_c and Psi_c at the paper's instants",
+       {"paper_table"}, "", ReadTable1, CheckOneScene, Table1Run, Table1Section},
+      {"assembly_time", "assembly time per operator (Sec. 5.2)", {"operators"}, "",
+       ReadAssemblyTime, CheckOneScene, AssemblyTimeRun, AssemblyTimeSection},
+      {"human_factors_groups", "human factors per working condition (Sec. 5.3)",
+       {"conditions", "instants_s", "paper_cycle_s"}, "", ReadHumanFactorsGroups, CheckGroups,
+       HumanFactorsGroupsRun, HumanFactorsGroupsSection},
+      {"fatigue", "success rate and time over an hour of work (Sec. 5.4)", {"fatigue"}, "",
+       ReadFatigue, CheckOneScene, FatigueExperimentRun, FatigueSection},
+      {"precision", "error against run time of integrators and model settings",
+       {"scenes", "reference", "settings", "noise_trials"},
+       "a precision experiment names its scenes in \"scenes\"", ReadPrecision, CheckPrecision,
+       PrecisionRun, PrecisionSection},
+      {"paper", "the paper's experiments, one report", {"experiments"},
+       "a paper experiment takes its scenes from the experiments it lists", ParsePaper,
+       CheckPaper, PaperRun, nullptr},
+      {"calibrate", "parameters fitted to a lab dataset (docs/calibration.md)",
+       {"lab", "fatigue", "parameters", "targets", "loss", "relative_step", "max_iterations",
+        "tolerance", "solver", "stages"},
+       "", ReadCalibration, CheckCalibration, nullptr, nullptr, RunCalibration},
+      {"compare", "a virtual design against a lab dataset (docs/calibration.md)",
+       {"lab", "fatigue", "quantities"}, "", ReadComparison, CheckComparison, nullptr, nullptr,
+       RunComparison},
+  };
+  return kinds;
+}
+
+std::vector<std::string> KindNames() {
+  std::vector<std::string> names;
+  for (const Kind& k : Kinds()) names.push_back(k.name);
+  return names;
+}
+
+const Kind& FindKind(const std::string& name) {
+  for (const Kind& k : Kinds())
+    if (k.name == name) return k;
+  VAHF_CHECK(false, "an experiment kind that was not registered: " + name);
+  return Kinds().front();
+}
+
+namespace {
+
+// "\"fatigue\", \"calibrate\" or \"compare\"": the kinds that read `key`.
+std::string KindsReading(const std::string& key) {
+  std::vector<std::string> names;
+  for (const Kind& k : Kinds())
+    if (std::find(k.keys.begin(), k.keys.end(), key) != k.keys.end())
+      names.push_back("\"" + k.name + "\"");
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return out;
+}
+
+}  // namespace
+
+scene::ExperimentFile LoadExperiment(const std::string& path) {
+  return ParseExperiment(scene::ReadJsonFile(path), path);
+}
+
+scene::ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string& path) {
+  const scene::JsonNode root(document, path);
+  std::vector<std::string> keys = {"format", "name",   "description", "kind",
+                                   "scene",  "seed",   "trials"};
+  for (const Kind& k : Kinds())
+    for (const std::string& key : k.keys)
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+  root.ExpectObject(keys);
+  scene::ExperimentFile e = scene::ReadExperimentHeader(root, path, KindNames());
+  const Kind& kind = FindKind(e.kind);
+  // A key that only another kind reads is a mistake worth naming.
+  for (auto it = document.begin(); it != document.end(); ++it) {
+    const std::string& key = it.key();
+    const std::string readers = KindsReading(key);
+    if (!readers.empty() &&
+        std::find(kind.keys.begin(), kind.keys.end(), key) == kind.keys.end())
+      root.Required(key).Fail("only an experiment of kind " + readers + " reads \"" + key +
+                              "\"");
+  }
+  if (kind.scene_elsewhere.empty())
+    scene::ReadExperimentScene(root, path, &e);
+  else if (auto scene = root.Optional("scene"))
+    scene->Fail(kind.scene_elsewhere);
+  kind.parse(root, path, &e);
+  return e;
+}
+
+std::string CheckExperiment(const scene::ExperimentFile& file) {
+  std::string out =
+      fmt::format("experiment '{}' ({}): kind {}, seed {}{}\n", file.name, file.file, file.kind,
+                  file.seed,
+                  file.kind == "paper" ? "" : fmt::format(", {} cycles per condition", file.trials));
+  return out + FindKind(file.kind).check(file);
+}
+
+experiment::ExperimentRun RunDesign(const scene::ExperimentFile& file,
+                                    const experiment::RunSettings& settings) {
+  const Kind& kind = FindKind(file.kind);
+  VAHF_CHECK(kind.design != nullptr, "RunDesign of a kind that is no design of cycles");
+  return kind.design(file, settings);
+}
+
+std::vector<report::Section> Sections(const experiment::ExperimentRun& run) {
+  std::vector<report::Section> out;
+  const auto add = [&](const experiment::ExperimentRun& r) {
+    out.push_back(report::SectionFor(r, FindKind(r.file->kind).analyse(r)));
+  };
+  if (run.parts.empty()) add(run);
+  for (const experiment::ExperimentRun& part : run.parts) add(part);
+  return out;
+}
+
+int RunExperiment(const scene::ExperimentFile& file, const RunContext& context) {
+  const Kind& kind = FindKind(file.kind);
+  kind.check(file);  // what check rejects fails now, before any trial
+  if (kind.run) return kind.run(file, context);
+  const auto start = std::chrono::steady_clock::now();
+  const experiment::ExperimentRun run = RunDesign(file, context.settings);
+  const report::RunInfo info{context.settings.threads, SecondsSince(start)};
+  const report::RunOutput written =
+      report::WriteRunOutput(run, Sections(run), *context.directory, info);
+  return FinishRun(file, context, info.wall_seconds, written);
+}
+
+}  // namespace vahf::kinds

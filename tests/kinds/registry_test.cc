@@ -1,0 +1,152 @@
+// Tests of the experiment-kind registry (kinds/kind.h): every kind is
+// registered once with what parsing, checking and running need; a key only
+// other kinds read names them; a paper run lists designs of cycles only, and
+// every experiment it lists is validated before the first trial of any.
+#include "vahf/kinds/kind.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "support/test_files.h"
+#include "vahf/core/error.h"
+#include "vahf/visibility/visibility.h"
+
+namespace vahf::kinds {
+namespace {
+
+using ::nlohmann::json;
+using ::testing::HasSubstr;
+
+std::string Source(const std::string& relative) {
+  return std::string(VAHF_SOURCE_DIR) + "/" + relative;
+}
+
+std::filesystem::path TestDir() { return scene::testing::TestDir("vahf_registry_test"); }
+
+// Writes `doc` into the running test's directory (made fresh by its first call).
+std::string Write(const std::string& name, const json& doc) {
+  static std::string test;
+  const std::string running = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  static std::filesystem::path dir;
+  if (test != running) {
+    test = running;
+    dir = TestDir();
+  }
+  return scene::testing::WriteFile(dir / name, doc.dump(1));
+}
+
+json Experiment(const std::string& kind, const std::string& scene, int trials) {
+  return {{"format", "vahf-experiment/1"}, {"name", kind + "_test"}, {"kind", kind},
+          {"scene", scene},                {"seed", 3},               {"trials", trials}};
+}
+
+// The message of the InputError `f` throws ("" when it throws none).
+template <typename F>
+std::string ErrorOf(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(KindRegistryTest, EveryKindIsRegisteredOnceWithWhatItsStagesNeed) {
+  std::set<std::string> names;
+  for (const Kind& k : Kinds()) {
+    EXPECT_TRUE(names.insert(k.name).second) << k.name << " registered twice";
+    EXPECT_FALSE(k.summary.empty()) << k.name;
+    EXPECT_NE(k.parse, nullptr) << k.name;
+    EXPECT_NE(k.check, nullptr) << k.name;
+    // Either a design of cycles with its analysis (the paper run analyses its
+    // parts), or a run of its own; never both, never neither.
+    EXPECT_NE(k.design == nullptr, k.run == nullptr) << k.name;
+    if (k.design && k.name != "paper") {
+      EXPECT_NE(k.analyse, nullptr) << k.name;
+    }
+    EXPECT_EQ(&FindKind(k.name), &k);
+  }
+  EXPECT_EQ(names, (std::set<std::string>{"table1", "assembly_time", "human_factors_groups",
+                                          "fatigue", "precision", "paper", "calibrate",
+                                          "compare"}));
+}
+
+TEST(KindRegistryTest, EveryShippedExperimentLoadsWithARegisteredKind) {
+  for (const char* f : {"table1", "assembly_time", "human_factors_groups", "fatigue",
+                        "precision", "paper", "calibrate_paper", "compare_paper"}) {
+    const scene::ExperimentFile e = LoadExperiment(Source("experiments/") + f + ".json");
+    EXPECT_EQ(FindKind(e.kind).name, e.kind) << f;
+  }
+}
+
+TEST(KindRegistryTest, AnUnregisteredKindNamesTheRegisteredOnes) {
+  const std::string path =
+      Write("planned.json", Experiment("stability", Source("experiments/scenes/peg_in_hole.json"), 1));
+  const std::string message = ErrorOf([&] { LoadExperiment(path); });
+  EXPECT_THAT(message, HasSubstr(path));
+  EXPECT_THAT(message, HasSubstr("/kind"));
+  EXPECT_THAT(message, HasSubstr("stability"));
+  for (const Kind& k : Kinds()) EXPECT_THAT(message, HasSubstr(k.name));
+}
+
+TEST(KindRegistryTest, AKeyOnlyOtherKindsReadNamesEveryKindThatReadsIt) {
+  json doc = Experiment("table1", Source("experiments/scenes/peg_in_hole.json"), 1);
+  doc["fatigue"] = {{"segments", 2}};
+  const std::string message = ErrorOf([&] { LoadExperiment(Write("t.json", doc)); });
+  EXPECT_THAT(message, HasSubstr("/fatigue"));
+  EXPECT_THAT(message, HasSubstr(
+                           "only an experiment of kind \"fatigue\", \"calibrate\" or \"compare\" "
+                           "reads \"fatigue\""));
+}
+
+TEST(KindRegistryTest, APaperRunListsDesignsOfCyclesOnly) {
+  const std::string calibrate = Source("experiments/calibrate_paper.json");
+  const json paper = {{"format", "vahf-experiment/1"},
+                      {"name", "paper_test"},
+                      {"kind", "paper"},
+                      {"experiments", {Source("experiments/table1.json"), calibrate}}};
+  const std::string path = Write("paper.json", paper);
+  const std::string message = ErrorOf([&] { LoadExperiment(path); });
+  EXPECT_THAT(message, HasSubstr(path));
+  EXPECT_THAT(message, HasSubstr("/experiments/1"));
+  EXPECT_THAT(message, HasSubstr("is a calibrate experiment"));
+}
+
+// The second experiment's scene only building its trial models can reject (a
+// visibility grid beyond the ray caster's limit). The first asks for a
+// million cycles: a run that validated lazily would simulate for hours
+// before it met the fault, so this test fails by its time-out then; a run
+// that validates first throws at once, having simulated nothing.
+TEST(KindRegistryTest, APaperRunValidatesEveryExperimentBeforeTheFirstTrial) {
+  json scene = json::parse(std::ifstream(Source("experiments/scenes/peg_in_hole.json")));
+  scene["parameters"]["visibility"]["grid"] = visibility::kMaxGrid + 1;
+  const std::string bad_scene = Write("bad_scene.json", scene);
+  const std::string first =
+      Write("first.json", Experiment("table1", Source("experiments/scenes/peg_in_hole.json"),
+                                     1'000'000));
+  const std::string second = Write("second.json", Experiment("table1", bad_scene, 1));
+  const json paper = {{"format", "vahf-experiment/1"},
+                      {"name", "paper_test"},
+                      {"kind", "paper"},
+                      {"experiments", {first, second}}};
+  const scene::ExperimentFile file = LoadExperiment(Write("paper.json", paper));
+  const std::string checked = ErrorOf([&] { CheckExperiment(file); });
+  EXPECT_THAT(checked, HasSubstr(bad_scene));
+  EXPECT_THAT(checked, HasSubstr("/parameters/visibility/grid"));
+
+  const std::filesystem::path run = std::filesystem::path(first).parent_path() / "run";
+  report::OutputDirectory out(run.string());
+  RunContext context;
+  context.settings.progress = false;
+  context.directory = &out;
+  const std::string ran = ErrorOf([&] { RunExperiment(file, context); });
+  EXPECT_EQ(ran, checked);
+  EXPECT_FALSE(std::filesystem::exists(run / "report.md"));
+}
+
+}  // namespace
+}  // namespace vahf::kinds
