@@ -8,6 +8,8 @@
 # calibrate experiment, the synthetic generator and its dataset, a parameter
 # override file (valid: exit 0; malformed: one line naming it, exit 2);
 # `reference`;
+# duplicate keys in a scene, experiment, override file and lab dataset, and
+# a value nested 100 000 deep (exit 2, one line);
 # `--help`; and bad options (exit 2); `run`: the same results digest on 1 and
 # 2 threads, a bad experiment (exit 2), an --out that is not a vahf output
 # (refused, exit 2, untouched) and SIGINT (exit 130, no output directory left);
@@ -369,6 +371,40 @@ for position in 1 -1; do
   expect_status "trial --position $position (one part in the sequence)" 2
   expect_in "trial --position $position" "$err" "--position = $position: must be 0 to 0"
   expect_lines "trial --position $position" "$err" 1
+done
+
+# --- duplicate keys, in every kind of vahf file: one line, the pointer, the key.
+dup_scene=$tmp/dup_scene.json
+sed 's/"friction": 0.15,/"friction": 0.15, "friction": 0.3,/' "$scene" >"$dup_scene"
+dup_experiment=$tmp/dup_experiment.json
+sed 's/"seed": 3,/"seed": 3, "seed": 4,/' "$experiment" >"$dup_experiment"
+dup_overrides=$tmp/dup_overrides.json
+sed 's/"guidance\/kappa": 300,/"guidance\/kappa": 300, "guidance\/kappa": 301,/' \
+  "$overrides" >"$dup_overrides"
+dup_lab=$tmp/dup_lab.json
+sed 's/"name": "synthetic_block",/"name": "a", "name": "b",/' "$synthetic_dataset" >"$dup_lab"
+for args in "check $dup_scene|/parts/0/friction|friction" \
+    "trial $dup_scene --seed 1|/parts/0/friction|friction" \
+    "check $dup_experiment|/seed|seed" \
+    "check $dup_overrides|/parameters/guidance~1kappa|guidance/kappa" \
+    "check $dup_lab|/name|name"; do
+  IFS='|' read -r command pointer key <<<"$args"
+  run $command
+  expect_status "$command (duplicate key)" 2
+  expect_lines "$command (duplicate key)" "$err" 1
+  expect_in "$command (duplicate key)" "$err" \
+    ": $pointer: duplicate key \"$key\" (a key appears at most once in an object)"
+done
+
+# --- a value nested 100 000 deep (once a stack overflow printing it): one line.
+deep=$tmp/deep.json
+python3 -c 'import sys; n = 100000; sys.stdout.write("{\"format\": \"vahf-scene/1\", \"name\": " + "[" * n + "]" * n + "}")' >"$deep"
+for command in check trial; do
+  if [[ $command == trial ]]; then run trial "$deep" --seed 1; else run check "$deep"; fi
+  expect_status "$command on a value nested 100000 deep" 2
+  expect_lines "$command on a value nested 100000 deep" "$err" 1
+  expect_in "$command on a value nested 100000 deep" "$err" \
+    "nested deeper than 64 levels of arrays and objects"
 done
 
 # --- help and bad options.
