@@ -10,6 +10,7 @@
 # `reference`;
 # duplicate keys in a scene, experiment, override file and lab dataset, and
 # a value nested 100 000 deep (exit 2, one line);
+# a scene accuracy of 1 (exit 2);
 # `--help`; and bad options (exit 2); `run`: the same results digest on 1 and
 # 2 threads, a bad experiment (exit 2), an --out that is not a vahf output
 # (refused, exit 2, untouched) and SIGINT (exit 130, no output directory left);
@@ -372,6 +373,15 @@ for position in 1 -1; do
   expect_in "trial --position $position" "$err" "--position = $position: must be 0 to 0"
   expect_lines "trial --position $position" "$err" 1
 done
+
+# --- a scene's accuracy lies in (0, 1): Simbody asserts it.
+accuracy_one=$tmp/accuracy_one.json
+sed 's/"accuracy": 5e-05/"accuracy": 1/' "$scene" >"$accuracy_one"
+run check "$accuracy_one"
+expect_status "check a scene with accuracy 1" 2
+expect_lines "check a scene with accuracy 1" "$err" 1
+expect_in "check a scene with accuracy 1" "$err" \
+  "$accuracy_one: /parameters/simulation/accuracy = 1: must lie in (0, 1)"
 
 # --- duplicate keys, in every kind of vahf file: one line, the pointer, the key.
 dup_scene=$tmp/dup_scene.json
