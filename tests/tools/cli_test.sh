@@ -11,6 +11,8 @@
 # duplicate keys in a scene, experiment, override file and lab dataset, and
 # a value nested 100 000 deep (exit 2, one line);
 # a scene accuracy of 1 (exit 2);
+# `trial` ending unreachable at its first decision (exit 1, zero integrator
+# counts, one line on stderr);
 # `--help`; and bad options (exit 2); `run`: the same results digest on 1 and
 # 2 threads, a bad experiment (exit 2), an --out that is not a vahf output
 # (refused, exit 2, untouched) and SIGINT (exit 130, no output directory left);
@@ -373,6 +375,22 @@ for position in 1 -1; do
   expect_in "trial --position $position" "$err" "--position = $position: must be 0 to 0"
   expect_lines "trial --position $position" "$err" 1
 done
+
+# --- trial: an operator who cannot reach the part (standing 5 m away) ends the
+# trial at its first decision: the summary on stdout with zero integrator
+# counts (once garbage read from an integrator that never stepped), one line
+# on stderr naming the status, exit 1.
+unreachable=$tmp/unreachable.json
+sed 's/"position": \[0.0, -0.35\]/"position": [0.0, -5.0]/' "$scene" >"$unreachable"
+run trial "$unreachable" --seed 1
+expect_status "trial unreachable" 1
+expect_in "trial unreachable" "$out" "status: unreachable"
+expect_in "trial unreachable" "$out" ": 0 steps taken, 0 attempted, 0 error-test failures, 0 realizations"
+expect_lines "trial unreachable" "$err" 1
+expect_in "trial unreachable" "$err" "vahf: trial ended unreachable: "
+run trial "$unreachable" --seed 1 --integrator RungeKuttaMerson
+expect_status "trial unreachable (RungeKuttaMerson)" 1
+expect_in "trial unreachable (RungeKuttaMerson)" "$out" ": 0 steps taken, 0 attempted, 0 error-test failures, 0 realizations"
 
 # --- a scene's accuracy lies in (0, 1): Simbody asserts it.
 accuracy_one=$tmp/accuracy_one.json

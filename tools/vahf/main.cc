@@ -1,9 +1,13 @@
 // The vahf command: validates scene, experiment and lab dataset files, checks
 // the paper's reference values, and (as the harness grows) runs trials and
 // experiments.
-// Exit status: 0 success, 2 bad input (a file, a value or an option), 1 other.
+// Exit status: 0 success; 1 a failure of the computation, stated on stderr
+// (for `vahf trial`: the trial ended other than completed, its summary still
+// printed); 2 bad input (a file, a value or an option); 130
+// interrupted.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -196,7 +200,13 @@ int Trial(const TrialArgs& a) {
   if (!a.trace.empty())
     std::printf("trace: %s (%zu decision rows, %zu sample rows)\n", a.trace.c_str(),
                 r.trace.size(), r.samples.size());
-  return 0;
+  if (r.status == vahf::sim::Status::kCompleted) return 0;
+  // Anything else is not what a trial is for: say so on one line, exit 1.
+  std::string detail = r.detail;
+  std::replace(detail.begin(), detail.end(), '\n', ' ');  // Simbody's texts span lines
+  std::fprintf(stderr, "vahf: trial ended %s: %s\n", vahf::sim::StatusName(r.status),
+               detail.c_str());
+  return 1;
 }
 
 struct RunArgs {
@@ -377,6 +387,10 @@ int main(int argc, char** argv) {
       "assembly with human factors"};
   app.set_version_flag("--version", "vahf 0.1.0");
   app.require_subcommand(1);
+  app.footer(
+      "Exit status: 0 success; 1 a failure of the computation, stated on stderr (trial: the "
+      "trial did not complete); 2 bad input (a file, a value or an option), one line; 130 "
+      "interrupted.");
 
   std::string check_path;
   CLI::App* check = app.add_subcommand(
@@ -395,6 +409,10 @@ int main(int argc, char** argv) {
   CLI::App* trial = app.add_subcommand(
       "trial", "Run one seeded trial of a scene's assembling part and print its summary");
   trial->add_option("SCENE", trial_args.scene, "scene JSON file")->required();
+  trial->footer(
+      "Exit status: 0 the trial completed; 1 it ended otherwise (timeout, exhausted, "
+      "unreachable, jammed, numerical_failure): its summary is printed and its trace written, "
+      "then 'vahf: trial ended STATUS: DETAIL' on stderr; 2 bad input, one line.");
   trial->add_option("--seed", trial_args.seed, "experiment seed (the stream key)")
       ->required();
   trial->add_option("--trial", trial_args.trial, "trial index (the stream key)")
