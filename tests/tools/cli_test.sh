@@ -13,6 +13,7 @@
 # a scene accuracy of 1 (exit 2);
 # `trial` ending unreachable at its first decision (exit 1, zero integrator
 # counts, one line on stderr);
+# strict command-line numbers for `trial` and `run` (exit 2, one line);
 # `--help`; and bad options (exit 2); `run`: the same results digest on 1 and
 # 2 threads, a bad experiment (exit 2), an --out that is not a vahf output
 # (refused, exit 2, untouched) and SIGINT (exit 130, no output directory left);
@@ -391,6 +392,34 @@ expect_in "trial unreachable" "$err" "vahf: trial ended unreachable: "
 run trial "$unreachable" --seed 1 --integrator RungeKuttaMerson
 expect_status "trial unreachable (RungeKuttaMerson)" 1
 expect_in "trial unreachable (RungeKuttaMerson)" "$out" ": 0 steps taken, 0 attempted, 0 error-test failures, 0 realizations"
+
+# --- trial and run: command-line numbers are read strictly (CLI11 once
+# wrapped --seed -1 to 2^64 - 1); a leading zero is decimal, not octal.
+for args in "--seed -1" "--seed 1e23" "--seed 1.5" "--seed 18446744073709551616" \
+    "--seed 0x10" "--seed 1 --trial -1" "--seed 1 --trial 2.5"; do
+  run trial "$scene" $args
+  expect_status "trial $args" 2
+  expect_in "trial $args" "$err" "must be a decimal integer from 0 to 18446744073709551615"
+  expect_lines "trial $args" "$err" 1
+done
+for accuracy in nan 1 2 0 -1e-4 inf 1e-4x; do
+  run trial "$scene" --seed 1 --accuracy "$accuracy"
+  expect_status "trial --accuracy $accuracy" 2
+  expect_in "trial --accuracy $accuracy" "$err" "must be a number in (0, 1)"
+done
+run trial "$unreachable" --seed 010 --trial 007
+expect_status "trial --seed 010 --trial 007 (unreachable)" 1
+expect_in "trial --seed 010 --trial 007" "$out" "seed 10, trial 7"
+for args in "--seed -1" "--seed 1e23" "--trials 010x" "--threads -2"; do
+  run run "$root/experiments/table1.json" $args --out "$tmp/strict_out"
+  expect_status "run $args" 2
+  expect_in "run $args" "$err" "must be a decimal integer"
+  if [[ ! -e "$tmp/strict_out" ]]; then
+    pass "run $args: no output directory"
+  else
+    fail "run $args: an output directory was written"
+  fi
+done
 
 # --- a scene's accuracy lies in (0, 1): Simbody asserts it.
 accuracy_one=$tmp/accuracy_one.json
