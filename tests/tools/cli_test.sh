@@ -14,6 +14,7 @@
 # `trial` ending unreachable at its first decision (exit 1, zero integrator
 # counts, one line on stderr);
 # strict command-line numbers for `trial` and `run` (exit 2, one line);
+# `trial` on another kind of vahf file (exit 2, the kind named);
 # `--help`; and bad options (exit 2); `run`: the same results digest on 1 and
 # 2 threads, a bad experiment (exit 2), an --out that is not a vahf output
 # (refused, exit 2, untouched) and SIGINT (exit 130, no output directory left);
@@ -420,6 +421,23 @@ for args in "--seed -1" "--seed 1e23" "--trials 010x" "--threads -2"; do
     fail "run $args: an output directory was written"
   fi
 done
+
+# --- trial given another kind of vahf file: one line saying which it is and
+# which command takes it (not "unknown key 'kind'").
+run trial "$experiment" --seed 1
+expect_status "trial on an experiment file" 2
+expect_lines "trial on an experiment file" "$err" 1
+expect_in "trial on an experiment file" "$err" \
+  "vahf: error: $experiment: /format = \"vahf-experiment/1\": this is an experiment file (run it with \`vahf run\`); \`vahf trial\` takes a scene file"
+run trial "$overrides" --seed 1
+expect_status "trial on an override file" 2
+expect_in "trial on an override file" "$err" "this is a parameter override file"
+run trial "$generator" --seed 1
+expect_status "trial on a synthetic generator" 2
+expect_in "trial on a synthetic generator" "$err" "this is a synthetic lab generator"
+run trial "$synthetic_dataset" --seed 1
+expect_status "trial on a lab dataset" 2
+expect_in "trial on a lab dataset" "$err" "this is a lab dataset"
 
 # --- a scene's accuracy lies in (0, 1): Simbody asserts it.
 accuracy_one=$tmp/accuracy_one.json

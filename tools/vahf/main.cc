@@ -174,8 +174,27 @@ struct TrialArgs {
   double sample = 0;
 };
 
+// The scene's file kind, told apart before it is read as a scene: another
+// vahf file is named as such, with the command that takes it.
+void ExpectSceneFile(const nlohmann::json& document, const std::string& path) {
+  const std::string format = vahf::scene::FormatOf(document, path);
+  if (format == "scene") return;
+  const char* what = format == "experiment"  ? "an experiment file (run it with `vahf run`)"
+                     : format == "lab"       ? "a lab dataset (compare or calibrate against it "
+                                               "with an experiment file and `vahf run`)"
+                     : format == "overrides" ? "a parameter override file (apply it with "
+                                               "`vahf run EXPERIMENT --overrides FILE`)"
+                                             : "a synthetic lab generator (run it with "
+                                               "`vahf synthesize`)";
+  vahf::scene::JsonNode(document, path)
+      .Required("format")
+      .Fail(fmt::format("this is {}; `vahf trial` takes a scene file", what));
+}
+
 int Trial(const TrialArgs& a) {
-  vahf::scene::Scene scene = vahf::scene::LoadScene(a.scene);
+  const nlohmann::json document = vahf::scene::ReadJsonFile(a.scene);
+  ExpectSceneFile(document, a.scene);
+  vahf::scene::Scene scene = vahf::scene::ParseScene(document, a.scene);
   if (!a.integrator.empty()) scene.params.simulation.integrator = a.integrator;
   if (a.accuracy > 0) scene.params.simulation.accuracy = a.accuracy;  // checked in (0, 1)
   if (a.position < 0 || a.position >= static_cast<int>(scene.sequence.size()))
