@@ -891,7 +891,7 @@ TEST(PrecisionErrorsTest, UnknownParameterName) {
 TEST(PrecisionErrorsTest, ValueBreaksTheParametersRule) {
   json doc = Precision();
   doc["settings"][3] = Accuracy("RungeKuttaMerson", -1e-3);
-  ExpectError(doc, "/settings/3/simulation~1accuracy", "must be > 0", "-0.001");
+  ExpectError(doc, "/settings/3/simulation~1accuracy", "must lie in (0, 1)", "-0.001");
   doc["settings"][3] = Accuracy("RungeKutta4", 1e-3);
   ExpectError(doc, "/settings/3/simulation~1integrator", "must be one of", "\"RungeKutta4\"");
   doc["settings"][3] = {{"visibility/grid", 2.5}};
@@ -911,7 +911,7 @@ TEST(PrecisionErrorsTest, WholeMessageNamesFilePointerValueAndRule) {
     LoadExperiment(path);
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), path + ": /settings/3/simulation~1accuracy = 0.0: must be > 0");
+    EXPECT_EQ(std::string(e.what()), path + ": /settings/3/simulation~1accuracy = 0.0: must lie in (0, 1)");
   }
 }
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <string>
 
+#include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/sim/trace_csv.h"
 #include "vahf/sim/trial.h"
@@ -96,13 +97,25 @@ TEST(TrialHealth, AFreeMoveHasNoWarningAndNoBound) {
 TEST(TrialHealth, AnEndingAtTheFirstDecisionReadsNoIntegratorCounters) {
   scene::Scene s = LoadExample("free_move.json");
   s.op.position = {0.0, -3.0};  // out of reach at the first decision
-  const TrialResult r = RunTrial(s, {1, 0});
-  ASSERT_EQ(r.status, Status::kUnreachable);
-  EXPECT_EQ(r.counters.steps_taken, 0);
-  EXPECT_EQ(r.counters.steps_attempted, 0);
-  EXPECT_EQ(r.counters.error_test_failures, 0);
-  EXPECT_EQ(r.counters.realizations, 0);
-  EXPECT_EQ(r.counters.decisions, 1);
+  // Every stepper: Simbody's integrators and CVODE (cvode_stepper.cc) end
+  // the trial on different paths.
+  for (const std::string& integrator : scene::IntegratorNames()) {
+    SCOPED_TRACE(integrator);
+    s.params.simulation.integrator = integrator;
+    const TrialResult r = RunTrial(s, {1, 0});
+    ASSERT_EQ(r.status, Status::kUnreachable);
+    EXPECT_EQ(r.counters.steps_taken, 0);
+    EXPECT_EQ(r.counters.steps_attempted, 0);
+    EXPECT_EQ(r.counters.error_test_failures, 0);
+    EXPECT_EQ(r.counters.realizations, 0);
+    EXPECT_EQ(r.counters.jacobian_evaluations, 0);
+    EXPECT_EQ(r.counters.convergence_failures, 0);
+    EXPECT_EQ(r.counters.decisions, 1);
+    EXPECT_NE(r.BriefReport().find(": 0 steps taken, 0 attempted, 0 error-test failures, "
+                                   "0 realizations\n"),
+              std::string::npos)
+        << r.BriefReport();
+  }
 }
 
 }  // namespace

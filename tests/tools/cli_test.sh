@@ -8,6 +8,13 @@
 # calibrate experiment, the synthetic generator and its dataset, a parameter
 # override file (valid: exit 0; malformed: one line naming it, exit 2);
 # `reference`;
+# duplicate keys in a scene, experiment, override file and lab dataset, and
+# a value nested 100 000 deep (exit 2, one line);
+# a scene accuracy of 1 (exit 2);
+# `trial` ending unreachable at its first decision (exit 1, zero integrator
+# counts, one line on stderr);
+# strict command-line numbers for `trial` and `run` (exit 2, one line);
+# `trial` on another kind of vahf file (exit 2, the kind named);
 # `--help`; and bad options (exit 2); `run`: the same results digest on 1 and
 # 2 threads, a bad experiment (exit 2), an --out that is not a vahf output
 # (refused, exit 2, untouched) and SIGINT (exit 130, no output directory left);
@@ -369,6 +376,110 @@ for position in 1 -1; do
   expect_status "trial --position $position (one part in the sequence)" 2
   expect_in "trial --position $position" "$err" "--position = $position: must be 0 to 0"
   expect_lines "trial --position $position" "$err" 1
+done
+
+# --- trial: an operator who cannot reach the part (standing 5 m away) ends the
+# trial at its first decision: the summary on stdout with zero integrator
+# counts (once garbage read from an integrator that never stepped), one line
+# on stderr naming the status, exit 1.
+unreachable=$tmp/unreachable.json
+sed 's/"position": \[0.0, -0.35\]/"position": [0.0, -5.0]/' "$scene" >"$unreachable"
+run trial "$unreachable" --seed 1
+expect_status "trial unreachable" 1
+expect_in "trial unreachable" "$out" "status: unreachable"
+expect_in "trial unreachable" "$out" ": 0 steps taken, 0 attempted, 0 error-test failures, 0 realizations"
+expect_lines "trial unreachable" "$err" 1
+expect_in "trial unreachable" "$err" "vahf: trial ended unreachable: "
+run trial "$unreachable" --seed 1 --integrator RungeKuttaMerson
+expect_status "trial unreachable (RungeKuttaMerson)" 1
+expect_in "trial unreachable (RungeKuttaMerson)" "$out" ": 0 steps taken, 0 attempted, 0 error-test failures, 0 realizations"
+
+# --- trial and run: command-line numbers are read strictly (CLI11 once
+# wrapped --seed -1 to 2^64 - 1); a leading zero is decimal, not octal.
+for args in "--seed -1" "--seed 1e23" "--seed 1.5" "--seed 18446744073709551616" \
+    "--seed 0x10" "--seed 1 --trial -1" "--seed 1 --trial 2.5"; do
+  run trial "$scene" $args
+  expect_status "trial $args" 2
+  expect_in "trial $args" "$err" "must be a decimal integer from 0 to 18446744073709551615"
+  expect_lines "trial $args" "$err" 1
+done
+for accuracy in nan 1 2 0 -1e-4 inf 1e-4x; do
+  run trial "$scene" --seed 1 --accuracy "$accuracy"
+  expect_status "trial --accuracy $accuracy" 2
+  expect_in "trial --accuracy $accuracy" "$err" "must be a number in (0, 1)"
+done
+run trial "$unreachable" --seed 010 --trial 007
+expect_status "trial --seed 010 --trial 007 (unreachable)" 1
+expect_in "trial --seed 010 --trial 007" "$out" "seed 10, trial 7"
+for args in "--seed -1" "--seed 1e23" "--trials 010x" "--threads -2"; do
+  run run "$root/experiments/table1.json" $args --out "$tmp/strict_out"
+  expect_status "run $args" 2
+  expect_in "run $args" "$err" "must be a decimal integer"
+  if [[ ! -e "$tmp/strict_out" ]]; then
+    pass "run $args: no output directory"
+  else
+    fail "run $args: an output directory was written"
+  fi
+done
+
+# --- trial given another kind of vahf file: one line saying which it is and
+# which command takes it (not "unknown key 'kind'").
+run trial "$experiment" --seed 1
+expect_status "trial on an experiment file" 2
+expect_lines "trial on an experiment file" "$err" 1
+expect_in "trial on an experiment file" "$err" \
+  "vahf: error: $experiment: /format = \"vahf-experiment/1\": this is an experiment file (run it with \`vahf run\`); \`vahf trial\` takes a scene file"
+run trial "$overrides" --seed 1
+expect_status "trial on an override file" 2
+expect_in "trial on an override file" "$err" "this is a parameter override file"
+run trial "$generator" --seed 1
+expect_status "trial on a synthetic generator" 2
+expect_in "trial on a synthetic generator" "$err" "this is a synthetic lab generator"
+run trial "$synthetic_dataset" --seed 1
+expect_status "trial on a lab dataset" 2
+expect_in "trial on a lab dataset" "$err" "this is a lab dataset"
+
+# --- a scene's accuracy lies in (0, 1): Simbody asserts it.
+accuracy_one=$tmp/accuracy_one.json
+sed 's/"accuracy": 5e-05/"accuracy": 1/' "$scene" >"$accuracy_one"
+run check "$accuracy_one"
+expect_status "check a scene with accuracy 1" 2
+expect_lines "check a scene with accuracy 1" "$err" 1
+expect_in "check a scene with accuracy 1" "$err" \
+  "$accuracy_one: /parameters/simulation/accuracy = 1: must lie in (0, 1)"
+
+# --- duplicate keys, in every kind of vahf file: one line, the pointer, the key.
+dup_scene=$tmp/dup_scene.json
+sed 's/"friction": 0.15,/"friction": 0.15, "friction": 0.3,/' "$scene" >"$dup_scene"
+dup_experiment=$tmp/dup_experiment.json
+sed 's/"seed": 3,/"seed": 3, "seed": 4,/' "$experiment" >"$dup_experiment"
+dup_overrides=$tmp/dup_overrides.json
+sed 's/"guidance\/kappa": 300,/"guidance\/kappa": 300, "guidance\/kappa": 301,/' \
+  "$overrides" >"$dup_overrides"
+dup_lab=$tmp/dup_lab.json
+sed 's/"name": "synthetic_block",/"name": "a", "name": "b",/' "$synthetic_dataset" >"$dup_lab"
+for args in "check $dup_scene|/parts/0/friction|friction" \
+    "trial $dup_scene --seed 1|/parts/0/friction|friction" \
+    "check $dup_experiment|/seed|seed" \
+    "check $dup_overrides|/parameters/guidance~1kappa|guidance/kappa" \
+    "check $dup_lab|/name|name"; do
+  IFS='|' read -r command pointer key <<<"$args"
+  run $command
+  expect_status "$command (duplicate key)" 2
+  expect_lines "$command (duplicate key)" "$err" 1
+  expect_in "$command (duplicate key)" "$err" \
+    ": $pointer: duplicate key \"$key\" (a key appears at most once in an object)"
+done
+
+# --- a value nested 100 000 deep (once a stack overflow printing it): one line.
+deep=$tmp/deep.json
+python3 -c 'import sys; n = 100000; sys.stdout.write("{\"format\": \"vahf-scene/1\", \"name\": " + "[" * n + "]" * n + "}")' >"$deep"
+for command in check trial; do
+  if [[ $command == trial ]]; then run trial "$deep" --seed 1; else run check "$deep"; fi
+  expect_status "$command on a value nested 100000 deep" 2
+  expect_lines "$command on a value nested 100000 deep" "$err" 1
+  expect_in "$command on a value nested 100000 deep" "$err" \
+    "nested deeper than 64 levels of arrays and objects"
 done
 
 # --- help and bad options.

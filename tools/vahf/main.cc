@@ -1,11 +1,17 @@
 // The vahf command: validates scene, experiment and lab dataset files, checks
 // the paper's reference values, and (as the harness grows) runs trials and
 // experiments.
-// Exit status: 0 success, 2 bad input (a file, a value or an option), 1 other.
+// Exit status: 0 success; 1 a failure of the computation, stated on stderr
+// (for `vahf trial`: the trial ended other than completed, its summary still
+// printed); 2 bad input (a file, a value or an option), in one line; 130
+// interrupted.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <string>
 
 #include "vahf/calibrate/synthetic_lab.h"
@@ -83,10 +89,29 @@ struct TrialArgs {
   double sample = 0;
 };
 
+// The scene's file kind, told apart before it is read as a scene: another
+// vahf file is named as such, with the command that takes it.
+void ExpectSceneFile(const nlohmann::json& document, const std::string& path) {
+  const std::string format = vahf::scene::FormatOf(document, path);
+  if (format == "scene") return;
+  const char* what = format == "experiment"  ? "an experiment file (run it with `vahf run`)"
+                     : format == "lab"       ? "a lab dataset (compare or calibrate against it "
+                                               "with an experiment file and `vahf run`)"
+                     : format == "overrides" ? "a parameter override file (apply it with "
+                                               "`vahf run EXPERIMENT --overrides FILE`)"
+                                             : "a synthetic lab generator (run it with "
+                                               "`vahf synthesize`)";
+  vahf::scene::JsonNode(document, path)
+      .Required("format")
+      .Fail(fmt::format("this is {}; `vahf trial` takes a scene file", what));
+}
+
 int Trial(const TrialArgs& a) {
-  vahf::scene::Scene scene = vahf::scene::LoadScene(a.scene);
+  const nlohmann::json document = vahf::scene::ReadJsonFile(a.scene);
+  ExpectSceneFile(document, a.scene);
+  vahf::scene::Scene scene = vahf::scene::ParseScene(document, a.scene);
   if (!a.integrator.empty()) scene.params.simulation.integrator = a.integrator;
-  if (a.accuracy > 0) scene.params.simulation.accuracy = a.accuracy;
+  if (a.accuracy > 0) scene.params.simulation.accuracy = a.accuracy;  // checked in (0, 1)
   if (a.position < 0 || a.position >= static_cast<int>(scene.sequence.size()))
     throw vahf::InputError("--position", "", std::to_string(a.position),
                            "must be 0 to " + std::to_string(scene.sequence.size() - 1) +
@@ -111,7 +136,13 @@ int Trial(const TrialArgs& a) {
   if (!a.trace.empty())
     std::printf("trace: %s (%zu decision rows, %zu sample rows)\n", a.trace.c_str(),
                 r.trace.size(), r.samples.size());
-  return 0;
+  if (r.status == vahf::sim::Status::kCompleted) return 0;
+  // Anything else is not what a trial is for: say so on one line, exit 1.
+  std::string detail = r.detail;
+  std::replace(detail.begin(), detail.end(), '\n', ' ');  // Simbody's texts span lines
+  std::fprintf(stderr, "vahf: trial ended %s: %s\n", vahf::sim::StatusName(r.status),
+               detail.c_str());
+  return 1;
 }
 
 struct RunArgs {
@@ -170,6 +201,29 @@ int main(int argc, char** argv) {
       "assembly with human factors"};
   app.set_version_flag("--version", "vahf 0.1.0");
   app.require_subcommand(1);
+  app.footer(
+      "Exit status: 0 success; 1 a failure of the computation, stated on stderr (trial: the "
+      "trial did not complete); 2 bad input (a file, a value or an option), one line; 130 "
+      "interrupted.");
+
+  // Command-line integers, read strictly: decimal digits only, from 0 to
+  // `max`, rewritten in canonical form for CLI11's own conversion (CLI11 2.1
+  // reads them with strtoull(text, 0): "-1" would wrap to 2^64 - 1, "010" be
+  // octal 8 and "0x10" hexadecimal).
+  const auto decimal = [](std::uint64_t max) {
+    return CLI::Validator(
+        [max](std::string& text) {
+          std::uint64_t v = 0;
+          const char* end = text.data() + text.size();
+          const auto [stop, error] = std::from_chars(text.data(), end, v);
+          if (text.empty() || error != std::errc() || stop != end || v > max)
+            return fmt::format("must be a decimal integer from 0 to {}, not '{}'", max, text);
+          text = std::to_string(v);
+          return std::string();
+        },
+        "", "decimal");
+  };
+  constexpr std::uint64_t kMaxU64 = std::numeric_limits<std::uint64_t>::max();
 
   std::string check_path;
   CLI::App* check = app.add_subcommand(
@@ -188,10 +242,16 @@ int main(int argc, char** argv) {
   CLI::App* trial = app.add_subcommand(
       "trial", "Run one seeded trial of a scene's assembling part and print its summary");
   trial->add_option("SCENE", trial_args.scene, "scene JSON file")->required();
+  trial->footer(
+      "Exit status: 0 the trial completed; 1 it ended otherwise (timeout, exhausted, "
+      "unreachable, jammed, numerical_failure): its summary is printed and its trace written, "
+      "then 'vahf: trial ended STATUS: DETAIL' on stderr; 2 bad input, one line.");
   trial->add_option("--seed", trial_args.seed, "experiment seed (the stream key)")
-      ->required();
+      ->required()
+      ->transform(decimal(kMaxU64));
   trial->add_option("--trial", trial_args.trial, "trial index (the stream key)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->transform(decimal(kMaxU64));
   trial
       ->add_option("--position", trial_args.position,
                    "which entry of the scene's sequence to assemble (0 = first)")
@@ -200,8 +260,20 @@ int main(int argc, char** argv) {
       ->add_option("--integrator", trial_args.integrator,
                    "override simulation/integrator")
       ->check(CLI::IsMember(vahf::scene::IntegratorNames()));
-  trial->add_option("--accuracy", trial_args.accuracy, "override simulation/accuracy")
-      ->check(CLI::PositiveNumber);
+  trial
+      ->add_option("--accuracy", trial_args.accuracy,
+                   "override simulation/accuracy, in (0, 1) as its rule")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            // Simbody asserts 0 < accuracy < 1; nan passes CLI::PositiveNumber.
+            double x = 0;
+            const char* end = text.data() + text.size();
+            const auto [stop, error] = std::from_chars(text.data(), end, x);
+            if (error != std::errc() || stop != end || !(x > 0 && x < 1))
+              return fmt::format("must be a number in (0, 1), not '{}'", text);
+            return std::string();
+          },
+          "", "open unit interval"));
   trial->add_option("--trace", trial_args.trace,
                     "write one CSV row per decision instant to this file");
   trial
@@ -216,11 +288,14 @@ int main(int argc, char** argv) {
              "tables, summary.json, manifest.json, plots)");
   run->add_option("EXPERIMENT", run_args.experiment, "experiment JSON file")->required();
   run->add_option("--seed", run_args.seed, "override the experiment's seed")
+      ->transform(decimal(kMaxU64))
       ->each([&](const std::string&) { run_args.seed_given = true; });
   run->add_option("--trials", run_args.trials,
                   "override the cycles per condition (every experiment of a paper run)")
+      ->transform(decimal(10'000'000))
       ->check(CLI::Range(1, 10'000'000));
   run->add_option("--threads", run_args.threads, "worker threads (results do not depend on it)")
+      ->transform(decimal(1024))
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
   run->add_option("--out", run_args.out,
@@ -240,6 +315,7 @@ int main(int argc, char** argv) {
   synthesize->add_option("--out", synth_args.out, "folder for dataset.json and trials.csv")
       ->required();
   synthesize->add_option("--threads", synth_args.threads, "worker threads (results do not depend on it)")
+      ->transform(decimal(1024))
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
 
@@ -255,7 +331,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    // One line, as every input error (CLI11's exit() adds a second).
+    std::fprintf(stderr, "vahf: error: %s\n", e.what());
     return vahf::kExitInputError;
   }
 

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <set>
 #include <sstream>
 
 #include "vahf/core/error.h"
@@ -33,20 +35,130 @@ std::string TypeName(const nlohmann::json& j) {
   return j.type_name();
 }
 
-// Compact JSON for a message, shortened in the middle so that both ends stay
-// readable (the end of a long path is its file name, the part a user needs);
-// non-finite numbers (which JSON text cannot hold but a document built in
-// code can) are shown as nan or inf rather than nlohmann's "null".
-std::string Shown(const nlohmann::json& j) {
+// A scalar as compact JSON; non-finite numbers (which JSON text cannot hold
+// but a document built in code can) as nan or inf rather than nlohmann's
+// "null", and invalid UTF-8 (likewise only from code) replaced, not thrown.
+std::string ScalarText(const nlohmann::json& j) {
   if (j.is_number_float() && !std::isfinite(j.get<double>())) {
     const double v = j.get<double>();
     return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
   }
-  constexpr std::size_t kMax = 100, kHead = 30, kTail = kMax - kHead - 3;
-  const std::string text = j.dump();
-  if (text.size() <= kMax) return text;
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+constexpr std::size_t kShownMax = 100;  // characters of a value in a message
+constexpr int kShownDepth = 4;          // container levels written out
+
+// Appends j as compact JSON to `out`, writing no further element once `out`
+// is longer than `limit`; containers below `depth` levels are written as
+// [...] or {...}. Recursion is bounded by `depth`, not by j's nesting (a
+// document built in code may nest without limit: nlohmann's dump would
+// recurse through all of it and overflow the stack).
+void AppendBounded(const nlohmann::json& j, int depth, std::size_t limit, std::string& out) {
+  if (!j.is_structured()) {
+    out += ScalarText(j);
+    return;
+  }
+  const bool array = j.is_array();
+  if (depth == 0 && !j.empty()) {
+    out += array ? "[...]" : "{...}";
+    return;
+  }
+  out += array ? '[' : '{';
+  for (auto it = j.begin(); it != j.end() && out.size() <= limit; ++it) {
+    if (it != j.begin()) out += ',';
+    if (!array) out += ScalarText(it.key()) + ':';
+    AppendBounded(*it, depth - 1, limit, out);
+  }
+  out += array ? ']' : '}';
+}
+
+// The value for a message, at most kShownMax characters. A long scalar is
+// shortened in the middle so that both ends stay readable (the end of a long
+// path is its file name, the part a user needs); a long container keeps its
+// start.
+std::string Shown(const nlohmann::json& j) {
+  std::string text;
+  AppendBounded(j, kShownDepth, kShownMax, text);
+  if (text.size() <= kShownMax) return text;
+  if (j.is_structured()) return text.substr(0, kShownMax - 3) + "...";
+  constexpr std::size_t kHead = 30, kTail = kShownMax - kHead - 3;
   return text.substr(0, kHead) + "..." + text.substr(text.size() - kTail);
 }
+
+// Checks the structure of a document as nlohmann's parser builds it, through
+// the parser's callback (called at every key, value and container start and
+// end, with the nesting depth): a key repeated within one object, and a
+// container nested deeper than kMaxJsonDepth, throw an InputError naming the
+// JSON pointer. The callback is the simplest robust hook: it sees the events
+// in document order before the tree is complete, so a deep document is
+// refused before anything recursive could touch it (nlohmann's parser itself
+// is iterative, and so is its destructor since 3.10), and the tree is still
+// built by nlohmann (a SAX handler of our own would have to build it again).
+class StructureCheck {
+ public:
+  explicit StructureCheck(const std::string& file) : file_(file) {}
+
+  bool operator()(int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        // `depth` counts the enclosing containers.
+        if (depth + 1 > kMaxJsonDepth)
+          throw InputError(file_, Pointer(), "",
+                           fmt::format("nested deeper than {} levels of arrays and objects "
+                                       "(the most a vahf file may hold)",
+                                       kMaxJsonDepth));
+        levels_.push_back({event == Event::object_start});
+        break;
+      case Event::key: {
+        Level& object = levels_.back();
+        object.key = parsed.get<std::string>();
+        if (!object.keys.insert(object.key).second)
+          throw InputError(file_, Pointer(), "",
+                           fmt::format("duplicate key {} (a key appears at most once in an "
+                                       "object)",
+                                       ScalarText(parsed)));
+        break;
+      }
+      case Event::object_end:
+      case Event::array_end:
+        levels_.pop_back();
+        NextElement();
+        break;
+      case Event::value:
+        NextElement();
+        break;
+    }
+    return true;  // keep everything
+  }
+
+ private:
+  struct Level {
+    bool object;
+    std::set<std::string> keys = {};  // an object's keys so far
+    std::string key = {};             // an object's current key
+    std::size_t index = 0;            // an array's current element
+  };
+
+  // After a value or a container ends: the enclosing array's next element.
+  void NextElement() {
+    if (!levels_.empty() && !levels_.back().object) ++levels_.back().index;
+  }
+
+  // The JSON pointer of the current position: the current key or element of
+  // every enclosing container.
+  std::string Pointer() const {
+    std::string out;
+    for (const Level& l : levels_)
+      out += "/" + (l.object ? PointerToken(l.key) : std::to_string(l.index));
+    return out.empty() ? "/" : out;
+  }
+
+  const std::string& file_;
+  std::vector<Level> levels_;
+};
 
 std::string Joined(const std::vector<std::string>& items) {
   std::string out;
@@ -63,18 +175,23 @@ nlohmann::json ReadJsonFile(const std::string& path) {
   if (!in) throw InputError(path, "", "", "cannot open the file for reading");
   std::stringstream buffer;
   buffer << in.rdbuf();
+  return ParseJsonText(buffer.str(), path);
+}
+
+nlohmann::json ParseJsonText(const std::string& text, const std::string& file) {
+  StructureCheck check(file);
   try {
-    return nlohmann::json::parse(buffer.str());
+    return nlohmann::json::parse(text, std::ref(check));
   } catch (const nlohmann::json::parse_error& e) {
     // e.what() carries "line L, column C". NaN and Infinity land here as an
     // invalid literal: say why, since other tools write them.
     const std::string what = e.what();
     const bool literal = what.find("invalid literal") != std::string::npos;
-    throw InputError(path, "", "",
+    throw InputError(file, "", "",
                      fmt::format("not valid JSON: {}{}", what,
                                  literal ? " (NaN and Infinity are not JSON numbers)" : ""));
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(path, "", "", fmt::format("not valid JSON: {}", e.what()));
+    throw InputError(file, "", "", fmt::format("not valid JSON: {}", e.what()));
   }
 }
 
@@ -83,6 +200,7 @@ std::string PointerToken(const std::string& key) {
   for (char c : key) {
     if (c == '~') out += "~0";
     else if (c == '/') out += "~1";
+    else if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", int{c});
     else out += c;
   }
   return out;

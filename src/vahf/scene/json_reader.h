@@ -13,9 +13,22 @@
 
 namespace vahf::scene {
 
+// How deeply arrays and objects may nest in a vahf file (the root object is
+// level 1; the deepest shipped files reach 6: a profile point of a scene,
+// /parts/0/geometry/profile/0).
+// A bound lets every recursive walk of a document (nlohmann's dump, copy and
+// comparison recurse) run in bounded stack.
+inline constexpr int kMaxJsonDepth = 64;
+
 // Parses a file as JSON; a syntax error or an unreadable file is an InputError
-// naming the line and column.
+// naming the line and column. So is a key that appears twice in one object
+// (JSON leaves its meaning open, RFC 8259 Sec. 4; nlohmann keeps the last),
+// and nesting deeper than kMaxJsonDepth: both are refused while parsing,
+// naming the JSON pointer, before the rest of the document is read.
 nlohmann::json ReadJsonFile(const std::string& path);
+
+// The same, for text already read (`file` names it in errors).
+nlohmann::json ParseJsonText(const std::string& text, const std::string& file);
 
 class JsonNode {
  public:
@@ -52,7 +65,10 @@ class JsonNode {
   Eigen::Vector3d Vector3() const;
   Eigen::Vector2d Vector2() const;
 
-  // The value as the message shows it (compact JSON, shortened).
+  // The value as the message shows it: compact JSON, at most 100 characters
+  // (a long scalar keeps both ends, a container its start), containers
+  // nested more than 4 deep shown as [...] or {...}: bounded whatever the
+  // value's size and depth.
   std::string ValueText() const;
 
  private:
@@ -61,7 +77,8 @@ class JsonNode {
   std::string path_;
 };
 
-// Escapes a key for a JSON pointer (RFC 6901).
+// Escapes a key for a JSON pointer (RFC 6901), and a control character as
+// \uXXXX so that a message naming the pointer stays on one line.
 std::string PointerToken(const std::string& key);
 
 }  // namespace vahf::scene

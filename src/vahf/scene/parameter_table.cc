@@ -12,6 +12,7 @@ const char* RuleText(ParamRule rule) {
     case ParamRule::kPositive: return "> 0";
     case ParamRule::kNonNegative: return ">= 0";
     case ParamRule::kUnit: return "in [0, 1]";
+    case ParamRule::kOpenUnit: return "in (0, 1)";
     case ParamRule::kAngle: return "in [0, 180]";
     case ParamRule::kCount: return "integer >= 1";
     case ParamRule::kChoice: return "one of the names";
@@ -86,7 +87,7 @@ std::vector<ParamSpec> MakeTable() {
       {"simulation", "jam_progress", "m", R::kPositive, "approach to the target that counts as progress", VAHF_REAL(simulation.jam_progress)},
       {"simulation", "divergence_speed", "m/s", R::kPositive, "a part point faster than this: the integration diverged (numerical_failure)", VAHF_REAL(simulation.divergence_speed)},
       {"simulation", "integrator", "-", R::kChoice, "Simbody integrator, or CVODE (SUNDIALS BDF, without Simbody)", nullptr, nullptr, VAHF_TEXT(simulation.integrator), IntegratorNames()},
-      {"simulation", "accuracy", "1", R::kPositive, "integrator relative accuracy", VAHF_REAL(simulation.accuracy)},
+      {"simulation", "accuracy", "1", R::kOpenUnit, "integrator relative accuracy (Simbody's Integrator::setAccuracy asserts 0 < accuracy < 1)", VAHF_REAL(simulation.accuracy)},
       {"simulation", "fixed_step", "s", R::kPositive, "step of the FixedStep integrator", VAHF_REAL(simulation.fixed_step)},
       {"simulation", "velocity_time_scale", "s", R::kPositive, "CVODE: velocity tolerance = accuracy / this (m/s)", VAHF_REAL(simulation.velocity_time_scale)},
       {"simulation", "step_floor", "s", R::kPositive, "an accepted step shorter than this is a warning", VAHF_REAL(simulation.step_floor)},
@@ -133,6 +134,12 @@ void ReadParamValue(const ParamSpec& s, const JsonNode& v, Parameters* p) {
     case ParamRule::kPositive: s.real(*p) = v.Positive(); break;
     case ParamRule::kNonNegative: s.real(*p) = v.NonNegative(); break;
     case ParamRule::kUnit: s.real(*p) = v.InRange(0.0, 1.0); break;
+    case ParamRule::kOpenUnit: {
+      const double x = v.Number();
+      if (!(x > 0 && x < 1)) v.Fail("must lie in (0, 1)");
+      s.real(*p) = x;
+      break;
+    }
     case ParamRule::kAngle: s.real(*p) = v.InRange(0.0, 180.0); break;
     case ParamRule::kCount: s.count(*p) = static_cast<int>(v.Integer(1, 1 << 16)); break;
     case ParamRule::kChoice: s.text(*p) = v.Choice(s.choices); break;

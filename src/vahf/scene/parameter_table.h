@@ -16,6 +16,7 @@ enum class ParamRule {
   kPositive,     // > 0
   kNonNegative,  // >= 0
   kUnit,         // in [0, 1]
+  kOpenUnit,     // in (0, 1), both ends excluded
   kAngle,        // degrees in [0, 180]
   kCount,        // integer >= 1
   kChoice,       // one of `choices`
