@@ -15,7 +15,7 @@
 #include <limits>
 #include <string>
 
-#include "test_files.h"
+#include "support/test_files.h"
 #include "vahf/core/error.h"
 #include "vahf/scene/scene_loader.h"
 
