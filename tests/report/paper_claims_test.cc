@@ -139,24 +139,25 @@ TEST(PaperClaims, WorkingConditionsWorstReproducedBestNot) {
 }
 
 // Sec. 5.4: over an hour the mean time rises and the success rate falls
-// (paper: 0.96 to 0.75). Half reproduced. Eq. 4's work over an hour of
+// (paper: 0.96 to 0.75). The rate does not fall: Eq. 4's work over an hour of
 // cycles is some hundreds of kJ against A_max = 1600 kcal = 6.69 MJ (Eq. 6),
-// so Psi_c stays near 0.95: every cycle of the first and last segments still
-// succeeds (the rate does not fall), but the operator's force is 5 % weaker
-// at the end of the hour and the same cycles, paired by their streams, take
-// longer: the paired t test finds the rise at this size (measured: p =
-// 0.019), where Welch's unpaired test, before issue 12, did not (p > 0.05).
-TEST(PaperClaims, FatigueTimeRisesButTheSuccessRateDoesNotFall) {
+// so Psi_c stays near 0.95 and every cycle of the first and last segments
+// succeeds. The time rises, a little: the operator's force is 5 % weaker at
+// the end of the hour, and the same cycles, paired by their streams, take
+// longer. Whether that is significant depends on the size (measured: +0.046 s,
+// paired p = 0.019 here with 4 cycles; +0.029 s, p = 0.079, "no", in the
+// paper run's 12), so this test asserts the direction, not the verdict.
+TEST(PaperClaims, FatigueTimeRisesALittleButTheSuccessRateDoesNotFall) {
   const auto r = RunShipped("fatigue", 4);
   const nlohmann::json& s = r->section.summary;
   const nlohmann::json& rate = ClaimContaining(r->section, "success rate falls");
   EXPECT_EQ(rate.at("verdict"), "no") << rate.dump();
   const nlohmann::json& time = ClaimContaining(r->section, "mean assembly time rises");
   std::printf("%s\n", time.at("evidence").get<std::string>().c_str());
-  EXPECT_EQ(time.at("verdict"), "yes") << time.dump();
-  // Measured: 0.949 here (4-cycle pilot, 95 J/s), 0.958 in the paper run
-  // (77.5 J/s). Bound: an hour at up to 185 J/s, twice the measured rate,
-  // keeps Psi_c above 0.9.
+  EXPECT_NE(time.at("verdict"), "untestable") << time.dump();
+  // Measured: 0.949 here (4-cycle pilot, 95 J/s), 0.954 in the paper run.
+  // Bound: an hour at up to 185 J/s, twice the measured rate, keeps Psi_c
+  // above 0.9.
   EXPECT_GT(s.at("psi_end_of_hour").get<double>(), 0.9) << s.dump();
   EXPECT_LT(s.at("psi_end_of_hour").get<double>(), 1.0) << s.dump();
   const nlohmann::json& t = s.at("tests");
@@ -165,7 +166,6 @@ TEST(PaperClaims, FatigueTimeRisesButTheSuccessRateDoesNotFall) {
   const nlohmann::json& rise = t.at("time_last_minus_first");
   EXPECT_EQ(rise.at("pairs"), 4) << rise.dump();
   EXPECT_GT(rise.at("mean_difference_s").get<double>(), 0.0) << rise.dump();
-  EXPECT_LT(rise.at("p_greater").get<double>(), 0.05) << rise.dump();
 }
 
 // Every kind's report renders: tables, summary, and each gnuplot figure; and
