@@ -1222,7 +1222,9 @@ def crash_text(err):
 
 
 def signature(o, tree):
-    cmd = o.argv[1] + (" --integrator" if "--integrator" in o.argv else "")
+    cmd = o.argv[1]
+    if "--integrator" in o.argv:
+        cmd += " --integrator " + o.argv[o.argv.index("--integrator") + 1]
     err = o.stderr.decode("utf-8", "replace")
     if o.timeout:
         return "%s: timeout" % cmd
@@ -1269,7 +1271,7 @@ def keep_failure(out_dir, tree, m, o, kind):
 
 
 def backtrace(argv, cwd, frames=8):
-    """gdb's backtrace of a crashing run: its top frames (vahf's own first), or None."""
+    """gdb's backtrace of a crashing run: its top frames above libc's abort, or None."""
     gdb = shutil.which("gdb")
     if not gdb:
         return None
@@ -1281,6 +1283,10 @@ def backtrace(argv, cwd, frames=8):
         return None
     text = p.stdout.decode("utf-8", "replace")
     bt = [x for x in text.split("\n") if re.match(r"#\d+ ", x)]
+    libc = re.compile(r"__pthread_kill|__GI_raise|__GI_abort| raise \(| abort \(|"
+                      r"__assert_fail|__libc_message")
+    while bt and libc.search(bt[0]):  # from the first frame above the C library's abort
+        bt.pop(0)
     return bt[:frames] if bt else None
 
 
@@ -1543,6 +1549,11 @@ def main(argv=None):
                 n, sig, m.idx, m.base, "; ".join(m.mutations)[:300]))
     print("trials that ended other than completed (exit 1, not failures): " + (", ".join(
         "%s %d" % kv for kv in sorted(ended.items())) or "none"))
+    slow = sorted(((o.seconds, m, o) for m, runs in zip(mutants, results) for o in runs
+                   if not o.timeout), key=lambda x: -x[0])[:5]
+    print("slowest runs that finished: " + "; ".join(
+        "mutant %d %s %.1f s" % (m.idx, " ".join(o.argv[1:2] + o.argv[3:]), t)
+        for t, m, o in slow))
     print("failures: %d in %d group(s)" % (len(failures), len(groups)))
     for sig, g in sorted(groups.items(), key=lambda x: -x[1]["count"]):
         print("  %4d  %s\n        e.g. mutant %d (%s: %s)\n        %s" % (
