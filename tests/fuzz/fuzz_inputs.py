@@ -803,7 +803,10 @@ def split_csv(text):
 
 
 def parse_row(line):
-    return next(csv.reader([line]), [])
+    try:
+        return next(csv.reader([line]), [])
+    except csv.Error:  # a line an earlier mutation left unparseable (a lone CR, a NUL)
+        return line.split(",")
 
 
 def write_row(fields):
@@ -1104,8 +1107,8 @@ def make_mutant(idx, seed, bases):
             else:
                 try:
                     doc = json.loads(files["dataset.json"])
-                except ValueError:
-                    continue  # already garbled text: leave it
+                except (ValueError, RecursionError):
+                    continue  # already garbled or nested too deep for Python: leave it
                 st = State(cls, doc, bases, "dataset.json")
                 data, ds = serialize(rng, st, mutate_json(rng, st, 1))
                 files["dataset.json"] = data
