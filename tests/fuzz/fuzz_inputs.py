@@ -44,8 +44,8 @@ generator and runs vahf on every mutant:
 
 Generation is deterministic: mutant i is made by its own random.Random seeded
 from (seed, i), and all mutants are generated and written, in order, before
-any runs; results do not depend on --jobs. `--only I` regenerates and runs
-mutant I alone. Each failure is kept under OUT/failures/ with the mutant, the
+any runs; results do not depend on --jobs. `--only I,J` regenerates and runs
+mutants I and J alone. Each failure is kept under OUT/failures/ with the mutant, the
 command line (cmd.sh), stdout, stderr and the mutations that made it; the
 mutant also stays in OUT/tree/, where relative paths resolve. A summary line
 per class, the failures grouped by signature, and OUT/summary.json end the run.
@@ -1350,8 +1350,9 @@ def main(argv=None):
                     help="generator seed (default: $VAHF_FUZZ_SEED or %d)" % DEFAULT_SEED)
     ap.add_argument("--first", type=int, default=0,
                     help="index of the first mutant (default 0): mutants FIRST..FIRST+FILES-1")
-    ap.add_argument("--only", type=int, metavar="I",
-                    help="make and run mutant I alone (reproduces one failure)")
+    ap.add_argument("--only", metavar="I[,J...]",
+                    help="make and run these mutants alone (reproduces failures: their "
+                    "numbers are in OUT/summary.json)")
     ap.add_argument("--out", help="output folder: the mutants' tree, failures/, summary.json "
                     "(default: a new folder under $TMPDIR); an existing one is cleared only if "
                     "an earlier run of this script made it")
@@ -1378,9 +1379,12 @@ def main(argv=None):
     a = ap.parse_args(argv)
     if a.files < 0 or a.jobs < 1 or a.timeout <= 0 or a.seed < 0 or a.first < 0:
         ap.error("--files, --seed, --first >= 0; --jobs >= 1; --timeout > 0")
+    if a.only is not None and not re.fullmatch(r"\d+(,\d+)*", a.only):
+        ap.error("--only takes mutant numbers separated by commas, not %r" % a.only)
 
     bases = Bases(a.time_limit)
-    indices = [a.only] if a.only is not None else list(range(a.first, a.first + a.files))
+    indices = ([int(x) for x in a.only.split(",")] if a.only is not None else
+               list(range(a.first, a.first + a.files)))
 
     if a.list:
         for i in indices:
@@ -1577,6 +1581,11 @@ def main(argv=None):
                                          "mutants": [x.idx for x in ms[:20]],
                                          "mutations": ms[0].mutations}
                                         for s, ms in catr_rules.items()],
+        "failure_list": [{"mutant": m.idx, "class": m.cls, "base": m.base,
+                          "mutations": m.mutations, "kind": kind,
+                          "command": " ".join(shell_quote(x) for x in o.argv),
+                          "seconds": round(o.seconds, 3),
+                          "signature": signature(o, tree)} for m, o, kind in failures],
         "exit1_other": [{"signature": s, "count": n, "mutant": m.idx,
                          "mutations": m.mutations} for s, (n, m, o) in exit1.items()],
         "stderr_noise": [{"signature": s, "count": n, "mutant": m.idx,
