@@ -1491,7 +1491,7 @@ def main(argv=None):
                     pass
             if m.dir:
                 shutil.rmtree(os.path.join(tree, m.dir), ignore_errors=True)
-    for suffix in (".trace.csv",):
+    for suffix in (".trace.csv", ".trace.csv.partial"):  # a killed run leaves .partial
         for m in mutants:
             p = os.path.join(tree, "data", "m%06d%s" % (m.idx, suffix))
             if os.path.exists(p):
