@@ -1491,7 +1491,7 @@ def main(argv=None):
                     pass
             if m.dir:
                 shutil.rmtree(os.path.join(tree, m.dir), ignore_errors=True)
-    for suffix in (".trace.csv",):
+    for suffix in (".trace.csv", ".trace.csv.partial"):  # a killed run leaves .partial
         for m in mutants:
             p = os.path.join(tree, "data", "m%06d%s" % (m.idx, suffix))
             if os.path.exists(p):
@@ -1521,10 +1521,12 @@ def main(argv=None):
 
     # ---- report
     nfiles = len(mutants)
+    cpu = (resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime +
+           resource.getrusage(resource.RUSAGE_CHILDREN).ru_stime) if resource else float("nan")
     print("fuzz_inputs.py: seed %d, %d files, %d runs, %.1f s wall with %d job(s) "
-          "(%.1f s per 1000 files); vahf %s" % (
+          "(%.1f s per 1000 files), %.1f s CPU in vahf; vahf %s" % (
               a.seed, nfiles, sum(len(r) for r in results), wall, a.jobs,
-              1000 * wall / max(1, nfiles), vahf))
+              1000 * wall / max(1, nfiles), cpu, vahf))
     for c in classes:
         s = stats[c]
         if not s["files"]:
@@ -1570,7 +1572,8 @@ def main(argv=None):
             print("          " + x[:200])
     summary = {
         "seed": a.seed, "files": nfiles, "first": indices[0] if indices else 0,
-        "jobs": a.jobs, "wall_s": wall, "timeout_s": a.timeout, "time_limit_s": a.time_limit,
+        "jobs": a.jobs, "wall_s": wall, "cpu_s_in_vahf": cpu, "timeout_s": a.timeout,
+        "time_limit_s": a.time_limit,
         "vahf": vahf, "classes": stats,
         "seconds_by_command": seconds,
         "failures": [{"signature": s, "count": g["count"], "kind": g["kind"],
