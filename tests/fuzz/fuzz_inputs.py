@@ -33,8 +33,11 @@ generator and runs vahf on every mutant:
             accepts, `vahf trial FILE --seed 1` and for some an `--integrator`,
             `--position` or `--trial` variant. To keep CI time down, every scene
             mutant starts from its base with simulation/time_limit lowered to
-            --time-limit seconds (default 1) before it is mutated, so a trial
-            simulates at most that long unless a mutation changes the limit.
+            --time-limit seconds (default 1) and simulation/max_steps to
+            --max-steps (default 20000) before it is mutated, so a trial
+            simulates at most that long and takes at most that many steps
+            unless a mutation changes them (vahf's own budget, 1e6 steps,
+            then bounds it).
   asserts   per run: exit status in {0, 1, 2}; not killed by a signal; not
             timed out (--timeout, default 20 s per process); on exit 2, stderr
             is exactly one line starting with "vahf: error: ".
@@ -177,11 +180,12 @@ def load_param_table():
         name, rule, default = m.group(1), m.group(2).strip(), m.group(3).strip()
         vals = [0, -1, 1e-300, 1e300, 1e308]
         r = re.match(r"in ([\[(])([-\d.e]+), ([-\d.e]+)([\])])", rule)
+        i = re.match(r"integer in \[(-?\d+), (-?\d+)\]", rule)
         if r:
             vals += _around(float(r.group(2)), float(r.group(3)))
-        elif rule.startswith("integer >="):
-            n = int(rule.split(">=")[1])
-            vals += [n - 1, 2 ** 31, 2 ** 63, 1.5]
+        elif i:
+            lo, hi = int(i.group(1)), int(i.group(2))
+            vals += [lo - 1, lo, hi, hi + 1, 2 ** 31, 2 ** 63, 1.5]
         elif rule.startswith(">"):
             vals += [math.nextafter(0.0, -1.0), 5e-324]
         else:  # an enumeration: its members, and a wrong one
@@ -358,7 +362,7 @@ DOC_LAB = {
 
 
 class Bases:
-    def __init__(self, time_limit):
+    def __init__(self, time_limit, max_steps=0):
         self.scenes = {}       # name -> doc (time limit lowered)
         self.experiments = {}  # name -> doc
         self.labs = {}         # name -> {relpath: text}
@@ -371,6 +375,9 @@ class Bases:
                 if time_limit > 0:
                     sim = doc.setdefault("parameters", {}).setdefault("simulation", {})
                     sim["time_limit"] = time_limit
+                if max_steps > 0:
+                    sim = doc.setdefault("parameters", {}).setdefault("simulation", {})
+                    sim["max_steps"] = max_steps
                 self.scenes["scenes/" + f] = doc
         edir = os.path.join(REPO, "experiments")
         for f in sorted(os.listdir(edir)):
@@ -1364,6 +1371,10 @@ def main(argv=None):
                     help="simulation/time_limit (s) written into every scene base before it is "
                     "mutated, to keep trials short (default 1: every base scene completes its "
                     "first part within 0.86 s; 0 keeps the scenes' own)")
+    ap.add_argument("--max-steps", type=int, default=20000,
+                    help="simulation/max_steps written into every scene base, the trials' work "
+                    "budget (default 20000: the costliest base scene takes 16 000 steps for its "
+                    "first part; 0 keeps vahf's default)")
     ap.add_argument("--memory-mb", type=int, default=4096,
                     help="address-space limit of each vahf process, MiB (default 4096; 0 none)")
     ap.add_argument("--strict-check", action="store_true",
@@ -1382,7 +1393,7 @@ def main(argv=None):
     if a.only is not None and not re.fullmatch(r"\d+(,\d+)*", a.only):
         ap.error("--only takes mutant numbers separated by commas, not %r" % a.only)
 
-    bases = Bases(a.time_limit)
+    bases = Bases(a.time_limit, a.max_steps)
     indices = ([int(x) for x in a.only.split(",")] if a.only is not None else
                list(range(a.first, a.first + a.files)))
 

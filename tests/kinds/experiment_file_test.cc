@@ -891,7 +891,7 @@ TEST(PrecisionErrorsTest, UnknownParameterName) {
 TEST(PrecisionErrorsTest, ValueBreaksTheParametersRule) {
   json doc = Precision();
   doc["settings"][3] = Accuracy("RungeKuttaMerson", -1e-3);
-  ExpectError(doc, "/settings/3/simulation~1accuracy", "must lie in (0, 1)", "-0.001");
+  ExpectError(doc, "/settings/3/simulation~1accuracy", "must lie in [1e-12, 0.5]", "-0.001");
   doc["settings"][3] = Accuracy("RungeKutta4", 1e-3);
   ExpectError(doc, "/settings/3/simulation~1integrator", "must be one of", "\"RungeKutta4\"");
   doc["settings"][3] = {{"visibility/grid", 2.5}};
@@ -911,7 +911,7 @@ TEST(PrecisionErrorsTest, WholeMessageNamesFilePointerValueAndRule) {
     LoadExperiment(path);
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), path + ": /settings/3/simulation~1accuracy = 0.0: must lie in (0, 1)");
+    EXPECT_EQ(std::string(e.what()), path + ": /settings/3/simulation~1accuracy = 0.0: must lie in [1e-12, 0.5]");
   }
 }
 
@@ -1144,7 +1144,7 @@ TEST(CalibrateErrorsTest, WidenedBoundBreaksTheRule) {
   // A positive parameter's lower bound of 0 stays 0 when widened.
   doc = Calibrate();
   doc["parameters"][0] = FitParam("guidance/kappa", 400, 0, 2000);
-  ExpectError(doc, "/parameters/0/lower", "breaks guidance/kappa's rule: must be > 0", "0");
+  ExpectError(doc, "/parameters/0/lower", "breaks guidance/kappa's rule: must lie in (0, 1e6]", "0");
   // An angle's upper bound of 180 degrees.
   doc = Calibrate();
   doc["parameters"][1] = FitParam("sight/plateau_to_deg", 60, 45, 180);
@@ -1191,7 +1191,7 @@ TEST(CalibrateErrorsTest, LossStepAndIterationsOutOfRange) {
   ExpectError(doc, "/loss/kind", "required field 'kind' is missing");
   doc = Calibrate();
   doc["relative_step"] = 0.6;
-  ExpectError(doc, "/relative_step", "must lie in [0.0001, 0.5]", "0.6");
+  ExpectError(doc, "/relative_step", "must lie in [1e-4, 0.5]", "0.6");
   doc = Calibrate();
   doc["max_iterations"] = 0;
   ExpectError(doc, "/max_iterations", "must lie in [1, 1000]", "0");

@@ -116,15 +116,14 @@ TEST(KindRegistryTest, APaperRunListsDesignsOfCyclesOnly) {
   EXPECT_THAT(message, HasSubstr("is a calibrate experiment"));
 }
 
-// The second experiment's scene only building its trial models can reject (a
-// visibility grid beyond the ray caster's limit). The first asks for a
-// million cycles: a run that validated lazily would simulate for hours
+// The second experiment's scene is changed after loading (as a calibration's
+// trial values are) so that only building its trial models rejects it: a
+// contact shell of more than contact::kMaxShellPoints points. The first asks
+// for a million cycles: a run that validated lazily would simulate for hours
 // before it met the fault, so this test fails by its time-out then; a run
 // that validates first throws at once, having simulated nothing.
 TEST(KindRegistryTest, APaperRunValidatesEveryExperimentBeforeTheFirstTrial) {
-  json scene = json::parse(std::ifstream(Source("experiments/scenes/peg_in_hole.json")));
-  scene["parameters"]["visibility"]["grid"] = visibility::kMaxGrid + 1;
-  const std::string bad_scene = Write("bad_scene.json", scene);
+  const std::string bad_scene = Source("experiments/scenes/peg_in_hole.json");
   const std::string first =
       Write("first.json", Experiment("table1", Source("experiments/scenes/peg_in_hole.json"),
                                      1'000'000));
@@ -133,10 +132,13 @@ TEST(KindRegistryTest, APaperRunValidatesEveryExperimentBeforeTheFirstTrial) {
                       {"name", "paper_test"},
                       {"kind", "paper"},
                       {"experiments", {first, second}}};
-  const scene::ExperimentFile file = LoadExperiment(Write("paper.json", paper));
+  scene::ExperimentFile file = LoadExperiment(Write("paper.json", paper));
+  ASSERT_EQ(file.experiments.size(), 2u);
+  file.experiments[1].scene.params.contact.shell_spacing = 1e-5;
   const std::string checked = ErrorOf([&] { CheckExperiment(file); });
   EXPECT_THAT(checked, HasSubstr(bad_scene));
-  EXPECT_THAT(checked, HasSubstr("/parameters/visibility/grid"));
+  EXPECT_THAT(checked, HasSubstr("/parameters/contact"));
+  EXPECT_THAT(checked, HasSubstr("contact shell"));
 
   const std::filesystem::path run = std::filesystem::path(first).parent_path() / "run";
   report::OutputDirectory out(run.string());

@@ -127,7 +127,7 @@ TEST(LoadOverridesErrorsTest, UnknownParameterName) {
 
 TEST(LoadOverridesErrorsTest, ValueBreaksItsParametersRule) {
   ExpectError(Overrides({{"guidance/kappa", -1}}), "/parameters/guidance~1kappa",
-              "must be > 0", "-1");
+              "must lie in (0, 1e6]", "-1");
   ExpectError(Overrides({{"reach/value_at_d2", 1.5}}), "/parameters/reach~1value_at_d2",
               "must lie in [0, 1]", "1.5");
   ExpectError(Overrides({{"visibility/grid", 2.5}}), "/parameters/visibility~1grid",
@@ -167,7 +167,7 @@ TEST(LoadOverridesErrorsTest, WholeMessageNamesFilePointerValueAndRule) {
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              path + ": /parameters/guidance~1kappa = -1: must be > 0");
+              path + ": /parameters/guidance~1kappa = -1: must lie in (0, 1e6]");
   }
 }
 

@@ -1,12 +1,14 @@
 // The parameter table: every entry has exactly one accessor, names are unique,
-// defaults obey their own rules, and docs/parameters.md is the table's current
-// output (regenerate with `vahf params > docs/parameters.md` after a change);
-// the integrator accuracy lies in (0, 1), both ends excluded (Simbody asserts
-// it; 1 once aborted a trial that `check` had passed).
+// defaults obey their own rules, every number has finite bounds that the
+// reader enforces at both edges, and docs/parameters.md is the table's
+// current output (regenerate with `vahf params > docs/parameters.md` after a
+// change); the integrator accuracy lies inside (0, 1) (Simbody asserts it; 1
+// once aborted a trial that `check` had passed).
 #include "vahf/scene/parameter_table.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -28,13 +30,17 @@ TEST(ParameterTable, WellFormed) {
     if (s.real) {
       const double v = s.real(defaults);
       switch (s.rule) {
-        case ParamRule::kPositive: EXPECT_GT(v, 0) << name; break;
-        case ParamRule::kNonNegative: EXPECT_GE(v, 0) << name; break;
-        case ParamRule::kUnit: EXPECT_TRUE(v >= 0 && v <= 1) << name; break;
-        case ParamRule::kOpenUnit: EXPECT_TRUE(v > 0 && v < 1) << name; break;
-        case ParamRule::kAngle: EXPECT_TRUE(v >= 0 && v <= 180) << name; break;
+        case ParamRule::kClosed: EXPECT_TRUE(v >= s.lo && v <= s.hi) << name; break;
+        case ParamRule::kOpenBelow: EXPECT_TRUE(v > s.lo && v <= s.hi) << name; break;
         default: ADD_FAILURE() << name << " has a rule for another kind of value";
       }
+    }
+    if (s.count) {
+      EXPECT_EQ(s.rule, ParamRule::kCount) << name;
+      EXPECT_TRUE(s.count(defaults) >= s.lo && s.count(defaults) <= s.hi) << name;
+    }
+    if (s.rule != ParamRule::kChoice) {
+      EXPECT_TRUE(std::isfinite(s.lo) && std::isfinite(s.hi) && s.lo < s.hi) << name;
     }
     if (s.text) {
       EXPECT_EQ(s.rule, ParamRule::kChoice) << name;
@@ -59,25 +65,58 @@ TEST(ParameterTable, AccessorsReachDistinctFields) {
   }
 }
 
+// Every bound is enforced: the edge values are read (or refused, for an open
+// lower edge), and a value just outside either edge is refused with the rule.
+TEST(ParameterTable, BoundsAreEnforcedAtBothEdges) {
+  const std::string file = "scene.json";
+  const auto reads = [&](const ParamSpec& s, double x) {
+    const nlohmann::json value = s.rule == ParamRule::kCount
+                                     ? nlohmann::json(static_cast<std::int64_t>(x))
+                                     : nlohmann::json(x);
+    Parameters p;
+    try {
+      ReadParamValue(s, JsonNode(value, file, "/parameters/x"), &p);
+      return true;
+    } catch (const InputError& e) {
+      EXPECT_NE(e.rule().find("must lie in"), std::string::npos) << e.what();
+      return false;
+    }
+  };
+  for (const ParamSpec& s : ParameterTable()) {
+    const std::string name = ParamName(s);
+    if (s.rule == ParamRule::kChoice) continue;
+    const bool integer = s.rule == ParamRule::kCount;
+    const double below = integer ? s.lo - 1 : std::nextafter(s.lo, -HUGE_VAL);
+    const double above = integer ? s.hi + 1 : std::nextafter(s.hi, HUGE_VAL);
+    EXPECT_FALSE(reads(s, below)) << name;
+    EXPECT_EQ(reads(s, s.lo), s.rule != ParamRule::kOpenBelow) << name;
+    EXPECT_TRUE(reads(s, s.hi)) << name;
+    EXPECT_FALSE(reads(s, above)) << name;
+    if (!integer) {
+      EXPECT_FALSE(reads(s, 1e308)) << name;
+    }
+  }
+}
+
 TEST(ParameterTable, AccuracyLiesStrictlyBetweenZeroAndOne) {
   const ParamSpec* accuracy = FindParam("simulation/accuracy");
   ASSERT_NE(accuracy, nullptr);
   const std::string file = "scene.json";
-  for (const double bad : {0.0, 1.0, 2.0, -1e-4}) {
+  for (const double bad : {0.0, 1.0, 2.0, -1e-4, 1e-16}) {
     const nlohmann::json value = bad;
     Parameters p;
     try {
       ReadParamValue(*accuracy, JsonNode(value, file, "/parameters/simulation/accuracy"), &p);
       ADD_FAILURE() << "accuracy " << bad << " accepted";
     } catch (const InputError& e) {
-      EXPECT_EQ(e.rule(), "must lie in (0, 1)") << bad;
+      EXPECT_EQ(e.rule(), "must lie in [1e-12, 0.5]") << bad;
     }
   }
-  const nlohmann::json good = 0.999;
+  const nlohmann::json good = 0.5;
   Parameters p;
   ReadParamValue(*accuracy, JsonNode(good, file), &p);
-  EXPECT_EQ(p.simulation.accuracy, 0.999);
-  EXPECT_NE(ParameterTableMarkdown().find("| `simulation/accuracy` | 1 | in (0, 1) |"),
+  EXPECT_EQ(p.simulation.accuracy, 0.5);
+  EXPECT_NE(ParameterTableMarkdown().find("| `simulation/accuracy` | 1 | in [1e-12, 0.5] |"),
             std::string::npos);
 }
 

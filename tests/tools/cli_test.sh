@@ -143,7 +143,7 @@ expect_lines "check negative mass" "$err" 1
 expect_in "check negative mass" "$err" "$bad"
 expect_in "check negative mass" "$err" "/parts/1/mass"
 expect_in "check negative mass" "$err" "-0.1"
-expect_in "check negative mass" "$err" "must be > 0"
+expect_in "check negative mass" "$err" "must lie in [1e-4, 10000]"
 if [[ -s $out ]]; then
   fail "check negative mass: prints nothing on stdout"
 else
@@ -315,7 +315,7 @@ run check "$bad_overrides"
 expect_status "check malformed override file" 2
 expect_lines "check malformed override file" "$err" 1
 expect_in "check malformed override file" "$err" \
-  "vahf: error: $bad_overrides: /parameters/guidance~1kappa = -1: must be > 0"
+  "vahf: error: $bad_overrides: /parameters/guidance~1kappa = -1: must lie in (0, 1e6]"
 if [[ -s $out ]]; then
   fail "check malformed override file: prints nothing on stdout"
 else
@@ -366,6 +366,11 @@ run trial "$scene" --seed 1 --sample 0.001
 expect_status "trial --sample without --trace" 2
 expect_in "trial --sample without --trace" "$err" "needs --trace FILE"
 expect_lines "trial --sample without --trace" "$err" 1
+# A trace is held in memory until written: at most 1e6 rows over the time limit.
+run trial "$scene" --seed 1 --trace "$tmp/dense.csv" --sample 1e-7
+expect_status "trial --sample 1e-7" 2
+expect_in "trial --sample 1e-7" "$err" "at most 1e6 rows over the time limit"
+expect_lines "trial --sample 1e-7" "$err" 1
 run trial "$scene" --seed 1 --trace "$tmp/sampled.csv" --sample -1
 expect_status "trial --sample -1" 2
 expect_in "trial --sample -1" "$err" "must be > 0 s"
@@ -403,11 +408,41 @@ for args in "--seed -1" "--seed 1e23" "--seed 1.5" "--seed 18446744073709551616"
   expect_in "trial $args" "$err" "must be a decimal integer from 0 to 18446744073709551615"
   expect_lines "trial $args" "$err" 1
 done
-for accuracy in nan 1 2 0 -1e-4 inf 1e-4x; do
+# --accuracy and --set read a value by the parameter's rule (vahf params).
+for accuracy in 1 2 0 -1e-4 1e-16; do
   run trial "$scene" --seed 1 --accuracy "$accuracy"
   expect_status "trial --accuracy $accuracy" 2
-  expect_in "trial --accuracy $accuracy" "$err" "must be a number in (0, 1)"
+  expect_in "trial --accuracy $accuracy" "$err" "vahf: error: --accuracy: /simulation/accuracy = "
+  expect_in "trial --accuracy $accuracy" "$err" "must lie in [1e-12, 0.5]"
+  expect_lines "trial --accuracy $accuracy" "$err" 1
 done
+for accuracy in nan inf 1e-4x; do
+  run trial "$scene" --seed 1 --accuracy "$accuracy"
+  expect_status "trial --accuracy $accuracy" 2
+  expect_in "trial --accuracy $accuracy" "$err" "must be a number"
+  expect_lines "trial --accuracy $accuracy" "$err" 1
+done
+run trial "$scene" --seed 1 --set guidance/kappa=-1
+expect_status "trial --set guidance/kappa=-1" 2
+expect_in "trial --set guidance/kappa=-1" "$err" \
+  "vahf: error: --set: /guidance/kappa = -1: must lie in (0, 1e6]"
+run trial "$scene" --seed 1 --set guidance/kapa=1
+expect_status "trial --set guidance/kapa=1" 2
+expect_in "trial --set guidance/kapa=1" "$err" "names no parameter"
+run trial "$scene" --seed 1 --set guidance/kappa
+expect_status "trial --set without =" 2
+expect_in "trial --set without =" "$err" "takes GROUP/KEY=VALUE"
+run trial "$scene" --seed 1 --set contact/shell_spacing=1e-5
+expect_status "trial --set a shell spacing too fine for the peg" 2
+expect_in "trial --set a shell spacing too fine for the peg" "$err" "contact shell"
+expect_lines "trial --set a shell spacing too fine for the peg" "$err" 1
+# The work budget: a trial still running after max_steps accepted steps ends
+# as step_budget, exit 1, with its summary.
+run trial "$scene" --seed 1 --set simulation/max_steps=10
+expect_status "trial --set simulation/max_steps=10" 1
+expect_in "trial --set simulation/max_steps=10" "$out" "status: step_budget (10 accepted steps"
+expect_in "trial --set simulation/max_steps=10" "$err" "vahf: trial ended step_budget"
+expect_lines "trial --set simulation/max_steps=10" "$err" 1
 run trial "$unreachable" --seed 010 --trial 007
 expect_status "trial --seed 010 --trial 007 (unreachable)" 1
 expect_in "trial --seed 010 --trial 007" "$out" "seed 10, trial 7"
@@ -446,7 +481,7 @@ run check "$accuracy_one"
 expect_status "check a scene with accuracy 1" 2
 expect_lines "check a scene with accuracy 1" "$err" 1
 expect_in "check a scene with accuracy 1" "$err" \
-  "$accuracy_one: /parameters/simulation/accuracy = 1: must lie in (0, 1)"
+  "$accuracy_one: /parameters/simulation/accuracy = 1: must lie in [1e-12, 0.5]"
 
 # --- duplicate keys, in every kind of vahf file: one line, the pointer, the key.
 dup_scene=$tmp/dup_scene.json

@@ -270,7 +270,7 @@ TEST(Visibility, RejectsBadInput) {
       VisibilityCaster caster(ball, {}, {grid, false});
       ADD_FAILURE() << "accepted grid " << grid;
     } catch (const InputError& e) {
-      EXPECT_THAT(e.what(), ::testing::HasSubstr("must be an integer from 1 to 16384"));
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("must be an integer from 1 to 1024"));
     }
   }
   EXPECT_THROW(VisibilityCaster(geometry::TriangleMesh{}, {}), InputError);

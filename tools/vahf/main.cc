@@ -84,7 +84,8 @@ struct TrialArgs {
   std::uint64_t trial = 0;
   int position = 0;
   std::string integrator;
-  double accuracy = 0;
+  std::string accuracy;
+  std::vector<std::string> sets;  // "group/key=value"
   std::string trace;
   double sample = 0;
 };
@@ -106,12 +107,34 @@ void ExpectSceneFile(const nlohmann::json& document, const std::string& path) {
       .Fail(fmt::format("this is {}; `vahf trial` takes a scene file", what));
 }
 
+// Sets parameter `name` of `scene` from command-line text by the parameter
+// table's rule: the text is read as JSON (a number, or a bare name for a
+// choice), and an error names `option`, the parameter and the rule.
+void SetParameter(const char* option, const std::string& name, const std::string& text,
+                  vahf::scene::Scene* scene) {
+  const vahf::scene::ParamSpec* spec = vahf::scene::FindParam(name);
+  if (!spec)
+    throw vahf::InputError(option, "", name, "names no parameter (see `vahf params`)");
+  nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+  if (value.is_discarded()) value = text;  // a choice's bare name
+  vahf::scene::ReadParamValue(*spec, vahf::scene::JsonNode(value, option, "/" + name),
+                              &scene->params);
+}
+
 int Trial(const TrialArgs& a) {
   const nlohmann::json document = vahf::scene::ReadJsonFile(a.scene);
   ExpectSceneFile(document, a.scene);
   vahf::scene::Scene scene = vahf::scene::ParseScene(document, a.scene);
   if (!a.integrator.empty()) scene.params.simulation.integrator = a.integrator;
-  if (a.accuracy > 0) scene.params.simulation.accuracy = a.accuracy;  // checked in (0, 1)
+  if (!a.accuracy.empty()) SetParameter("--accuracy", "simulation/accuracy", a.accuracy, &scene);
+  for (const std::string& set : a.sets) {
+    const std::size_t eq = set.find('=');
+    if (eq == std::string::npos)
+      throw vahf::InputError("--set", "", set, "takes GROUP/KEY=VALUE, e.g. simulation/max_steps=20000");
+    SetParameter("--set", set.substr(0, eq), set.substr(eq + 1), &scene);
+  }
+  if (const std::string v = vahf::scene::ParameterViolation(scene); !v.empty())
+    throw vahf::InputError("--set", "", "applied to " + a.scene, v);
   if (a.position < 0 || a.position >= static_cast<int>(scene.sequence.size()))
     throw vahf::InputError("--position", "", std::to_string(a.position),
                            "must be 0 to " + std::to_string(scene.sequence.size() - 1) +
@@ -126,9 +149,12 @@ int Trial(const TrialArgs& a) {
   if (a.sample > 0 && a.trace.empty())
     throw vahf::InputError("--sample", "", fmt::format("{}", a.sample),
                            "needs --trace FILE to write the rows to");
-  if (a.sample > 0 && scene.params.simulation.time_limit / a.sample > 1e7)
+  // Rows are held until the trace is written: 1e6 rows are about 0.5 GB of CSV.
+  if (a.sample > 0 && scene.params.simulation.time_limit / a.sample > 1e6)
     throw vahf::InputError("--sample", "", fmt::format("{}", a.sample),
-                           "at most 1e7 rows over the time limit");
+                           fmt::format("at most 1e6 rows over the time limit ({} s): DT >= {} s",
+                                       scene.params.simulation.time_limit,
+                                       scene.params.simulation.time_limit / 1e6));
   options.sample_interval = a.sample;
   const vahf::sim::TrialResult r = vahf::sim::RunTrial(scene, {a.seed, a.trial}, options);
   if (!a.trace.empty()) vahf::WriteFileAtomically(a.trace, vahf::sim::TraceCsv(r));
@@ -244,7 +270,7 @@ int main(int argc, char** argv) {
   trial->add_option("SCENE", trial_args.scene, "scene JSON file")->required();
   trial->footer(
       "Exit status: 0 the trial completed; 1 it ended otherwise (timeout, exhausted, "
-      "unreachable, jammed, numerical_failure): its summary is printed and its trace written, "
+      "unreachable, jammed, numerical_failure, step_budget): its summary is printed and its trace written, "
       "then 'vahf: trial ended STATUS: DETAIL' on stderr; 2 bad input, one line.");
   trial->add_option("--seed", trial_args.seed, "experiment seed (the stream key)")
       ->required()
@@ -260,20 +286,13 @@ int main(int argc, char** argv) {
       ->add_option("--integrator", trial_args.integrator,
                    "override simulation/integrator")
       ->check(CLI::IsMember(vahf::scene::IntegratorNames()));
+  trial->add_option("--accuracy", trial_args.accuracy,
+                    "override simulation/accuracy (its rule: `vahf params`)");
   trial
-      ->add_option("--accuracy", trial_args.accuracy,
-                   "override simulation/accuracy, in (0, 1) as its rule")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            // Simbody asserts 0 < accuracy < 1; nan passes CLI::PositiveNumber.
-            double x = 0;
-            const char* end = text.data() + text.size();
-            const auto [stop, error] = std::from_chars(text.data(), end, x);
-            if (error != std::errc() || stop != end || !(x > 0 && x < 1))
-              return fmt::format("must be a number in (0, 1), not '{}'", text);
-            return std::string();
-          },
-          "", "open unit interval"));
+      ->add_option("--set", trial_args.sets,
+                   "override a parameter, e.g. --set simulation/max_steps=20000 (repeatable; "
+                   "each by its rule in `vahf params`)")
+      ->option_text("GROUP/KEY=VALUE");
   trial->add_option("--trace", trial_args.trace,
                     "write one CSV row per decision instant to this file");
   trial

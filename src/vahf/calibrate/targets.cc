@@ -287,7 +287,7 @@ TargetSamples VirtualSamples(const Target& target, const experiment::DesignRun& 
       continue;
     }
     for (const experiment::PartRun& p : c.parts) {
-      if (p.trial.part != target.spec.part || p.trial.status == sim::Status::kNumericalFailure)
+      if (p.trial.part != target.spec.part || sim::IsComputationFailure(p.trial.status))
         continue;
       samples.Add(p.trial.status == sim::Status::kCompleted, p.trial.completion_time, op);
     }

@@ -56,7 +56,31 @@ void BoxShell(const geometry::Box& box, double spacing, std::vector<ShellPoint>*
   }
 }
 
+// Divisions() in double: the count of a length that may not fit an int.
+double DivisionsBound(double length, double spacing) {
+  return std::max(1.0, std::ceil(length / spacing));
+}
+
 }  // namespace
+
+double PointShellSizeBound(const geometry::Shape& shape, double spacing) {
+  double n = 0;
+  if (const auto* p = std::get_if<geometry::RevolvedProfile>(&shape)) {
+    const auto& v = p->vertices;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const geometry::ProfilePoint a = v[k], b = v[(k + 1) % v.size()];
+      if (a.r == 0.0 && b.r == 0.0) continue;
+      n += DivisionsBound(std::hypot(b.r - a.r, b.z - a.z), spacing) *
+           DivisionsBound(2 * M_PI * std::max(a.r, b.r), spacing);
+    }
+    return n;
+  }
+  const Eigen::Vector3d& size = std::get<geometry::Box>(shape).size;
+  for (int axis = 0; axis < 3; ++axis)
+    n += 2 * DivisionsBound(size[(axis + 1) % 3], spacing) *
+         DivisionsBound(size[(axis + 2) % 3], spacing);
+  return n;
+}
 
 std::vector<ShellPoint> MakePointShell(const geometry::Shape& shape, double spacing) {
   std::vector<ShellPoint> out;

@@ -24,4 +24,14 @@ struct ShellPoint {
 // slant length times the angle). For a box each face is a grid.
 std::vector<ShellPoint> MakePointShell(const geometry::Shape& shape, double spacing);
 
+// The most points MakePointShell can make for `shape` at `spacing`, computed
+// without making them (in double, so it cannot overflow): what the scene rule
+// kMaxShellPoints is checked against before any allocation.
+double PointShellSizeBound(const geometry::Shape& shape, double spacing);
+
+// Every contact evaluation visits each shell point's broad phase: a trial's
+// step costs grow with it. 1e6 points (56 MB) is fifty times the finest
+// shipped shell; more is a spacing mistake, not a finer model.
+inline constexpr double kMaxShellPoints = 1e6;
+
 }  // namespace vahf::contact

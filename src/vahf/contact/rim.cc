@@ -57,6 +57,19 @@ void BoxRims(const geometry::Box& box, double spacing, std::vector<RimPoint>* ou
 
 }  // namespace
 
+double RimSizeBound(const geometry::Shape& shape, double spacing) {
+  const auto count = [&](double length) { return std::max(1.0, std::ceil(length / spacing)); };
+  double n = 0;
+  if (const auto* p = std::get_if<geometry::RevolvedProfile>(&shape)) {
+    for (const geometry::ProfilePoint& v : p->vertices)
+      if (v.r > 0) n += count(2 * M_PI * v.r);  // every vertex off the axis, convex or not
+    return n;
+  }
+  const Eigen::Vector3d& size = std::get<geometry::Box>(shape).size;
+  for (int axis = 0; axis < 3; ++axis) n += 4 * count(size[axis]);
+  return n;
+}
+
 std::vector<RimPoint> MakeRims(const geometry::Shape& shape, double spacing) {
   std::vector<RimPoint> out;
   if (const auto* p = std::get_if<geometry::RevolvedProfile>(&shape))

@@ -37,4 +37,12 @@ inline constexpr double kMinRimTurnRad = M_PI / 180.0;
 // an integer to within 1e-9 is not rounded up (10 mm at 1 mm gives 10).
 std::vector<RimPoint> MakeRims(const geometry::Shape& shape, double spacing);
 
+// The most samples MakeRims can make, computed without making them (in
+// double): checked against kMaxRimPoints before any allocation.
+double RimSizeBound(const geometry::Shape& shape, double spacing);
+
+// Each rim sample is a signed-distance query per contact evaluation, like a
+// shell point (point_shell.h, kMaxShellPoints).
+inline constexpr double kMaxRimPoints = 1e6;
+
 }  // namespace vahf::contact

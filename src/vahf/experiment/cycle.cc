@@ -26,7 +26,7 @@ CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed, std::uint
     out.work = run.trial.work;
     const bool done = run.trial.status == sim::Status::kCompleted;
     out.warnings.Add(run.trial.warnings);
-    out.numerical_failure = run.trial.status == sim::Status::kNumericalFailure;
+    out.numerical_failure = sim::IsComputationFailure(run.trial.status);
     out.parts.push_back(std::move(run));
     if (!done) return out;
   }

@@ -114,7 +114,14 @@ RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& pts) {
       Reject(fmt::format("point {}: r = {} is negative; a profile lies in the "
                          "half-plane r >= 0",
                          k, pts[k].r));
+    if (pts[k].r > kMaxExtent || std::abs(pts[k].z) > kMaxExtent)
+      Reject(fmt::format("point {}: ({}, {}) m lies beyond {} m; a part's profile lies "
+                         "within r <= {} m, |z| <= {} m",
+                         k, pts[k].r, pts[k].z, kMaxExtent, kMaxExtent, kMaxExtent));
   }
+  if (pts.size() > kMaxProfileVertices + 1)
+    Reject(fmt::format("profile: {} points; at most {} vertices (and the closing repeat)",
+                       pts.size(), kMaxProfileVertices));
   if (pts.size() < 4)
     Reject(fmt::format("profile: {} points; a closed profile needs at least 3 distinct "
                        "vertices and its first point repeated at the end",
@@ -164,7 +171,9 @@ RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& pts) {
   double twice_area = 0.0;
   for (std::size_t k = 0; k < n; ++k)
     twice_area += v[k].r * v[(k + 1) % n].z - v[(k + 1) % n].r * v[k].z;
-  if (twice_area == 0.0) Reject("profile: encloses zero area");
+  if (std::abs(twice_area) < 2 * kMinProfileArea)
+    Reject(fmt::format("profile: encloses {:.3g} m^2; at least {:g} m^2 (a 10 um square)",
+                       std::abs(twice_area) / 2, kMinProfileArea));
   if (twice_area < 0) std::reverse(p.vertices.begin(), p.vertices.end());
   return p;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <string>
 #include <variant>
 #include <vector>
@@ -28,10 +29,23 @@ struct Box {
 
 using Shape = std::variant<RevolvedProfile, Box>;
 
+// The sizes a part may have, m, so that its contact shell, rims and meshes
+// stay countable and its area and inertia sums cannot overflow: assembled
+// parts are millimetres to metres (the paper's cylinder is about 0.5 m).
+inline constexpr double kMaxExtent = 10.0;  // |r|, |z| of a profile point; a box edge
+inline constexpr double kMinBoxEdge = 1e-4;
+// A profile encloses at least this area (a 10 um square), m^2: less, and the
+// sign of its area, which orients it, is lost to rounding.
+inline constexpr double kMinProfileArea = 1e-10;
+// Profile vertices: the self-crossing test is quadratic in them (1000 take
+// a few ms; the shipped profiles have under 30).
+inline constexpr std::size_t kMaxProfileVertices = 1000;
+
 // Checks a profile as written in a file: a list of points whose last equals its
-// first (closed), at least three distinct vertices, r >= 0, finite, no
-// repeated consecutive points, no self-crossing or folding edge, non-zero
-// area. On success returns the polygon without the closing repeat, oriented
+// first (closed), at least three distinct vertices and at most
+// kMaxProfileVertices, 0 <= r <= kMaxExtent and |z| <= kMaxExtent, no
+// repeated consecutive points, no self-crossing or folding edge, an area of
+// at least kMinProfileArea. On success returns the polygon without the closing repeat, oriented
 // counter-clockwise; on failure throws std::invalid_argument whose message
 // starts with "point K: " (or "profile: ") and states the rule.
 RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& closed_points);

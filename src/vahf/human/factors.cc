@@ -27,13 +27,17 @@ double AngleDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
 }
 
+// A part centred on the eye itself has no sight line: the operator looks
+// straight at it, angle 0 (a scene may place a part anywhere in the workcell).
 double SightAngleDeg(const Posture& posture, const Eigen::Vector3d& part_centre,
                      const Eigen::Vector3d& motion_direction) {
-  return AngleDeg(part_centre - posture.eye, motion_direction);
+  const Eigen::Vector3d sight = part_centre - posture.eye;
+  return sight.norm() > 0 ? AngleDeg(sight, motion_direction) : 0.0;
 }
 
 double GlanceAngleDeg(const Posture& posture, const Eigen::Vector3d& part_centre) {
-  return AngleDeg(part_centre - posture.eye, posture.down);
+  const Eigen::Vector3d sight = part_centre - posture.eye;
+  return sight.norm() > 0 ? AngleDeg(sight, posture.down) : 0.0;
 }
 
 double ShoulderDistance(const Posture& posture, const Eigen::Vector3d& part_centre) {

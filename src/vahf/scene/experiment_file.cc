@@ -49,23 +49,6 @@ std::vector<OperatorEntry> ReadOperators(const JsonNode& node, const Scene& scen
 
 namespace {
 
-// A number for a label: shortest exact form, scientific (1e-4, 2.5e-3) when
-// small or large.
-std::string NumberText(double x) {
-  const double a = std::fabs(x);
-  if (a == 0 || (a >= 1e-2 && a < 1e5)) return fmt::format("{}", x);
-  for (int digits = 0;; ++digits) {
-    const std::string s = fmt::format("{:.{}e}", x, digits);
-    if (std::stod(s) != x && digits < 17) continue;
-    const std::size_t e = s.find('e');
-    std::string exponent = s.substr(e + 1);  // "-04", "+05"
-    const bool negative = exponent[0] == '-';
-    exponent = exponent.substr(1);
-    while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
-    return s.substr(0, e) + "e" + (negative ? "-" : "") + exponent;
-  }
-}
-
 std::string ValueText(const nlohmann::json& v) {
   if (v.is_string()) return v.get<std::string>();
   if (v.is_number_float()) return NumberText(v.get<double>());

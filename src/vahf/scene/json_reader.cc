@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -284,7 +286,29 @@ double JsonNode::NonNegative() const {
 
 double JsonNode::InRange(double lo, double hi) const {
   const double v = Number();
-  if (!(v >= lo && v <= hi)) Fail(fmt::format("must lie in [{}, {}]", lo, hi));
+  if (!(v >= lo && v <= hi)) Fail(fmt::format("must lie in [{}, {}]", NumberText(lo), NumberText(hi)));
+  return v;
+}
+
+std::string NumberText(double x) {
+  const double a = std::fabs(x);
+  if (a == 0 || (a >= 1e-2 && a < 1e5)) return fmt::format("{}", x);
+  for (int digits = 0;; ++digits) {
+    const std::string s = fmt::format("{:.{}e}", x, digits);
+    // strtod, not stod: stod throws on a subnormal (1e-310) it reads back.
+    if (std::strtod(s.c_str(), nullptr) != x && digits < 17) continue;
+    const std::size_t e = s.find('e');
+    std::string exponent = s.substr(e + 1);  // "-04", "+05"
+    const bool negative = exponent[0] == '-';
+    exponent = exponent.substr(1);
+    while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
+    return s.substr(0, e) + "e" + (negative ? "-" : "") + exponent;
+  }
+}
+
+double JsonNode::InOpenClosed(double lo, double hi) const {
+  const double v = Number();
+  if (!(v > lo && v <= hi)) Fail(fmt::format("must lie in ({}, {}]", NumberText(lo), NumberText(hi)));
   return v;
 }
 
@@ -330,6 +354,16 @@ Eigen::Vector3d JsonNode::Vector3() const {
 Eigen::Vector2d JsonNode::Vector2() const {
   if (!json_->is_array() || json_->size() != 2) Fail("must be an array of 2 numbers");
   return {At(0).Number(), At(1).Number()};
+}
+
+Eigen::Vector3d JsonNode::Vector3(double lo, double hi) const {
+  if (!json_->is_array() || json_->size() != 3) Fail("must be an array of 3 numbers");
+  return {At(0).InRange(lo, hi), At(1).InRange(lo, hi), At(2).InRange(lo, hi)};
+}
+
+Eigen::Vector2d JsonNode::Vector2(double lo, double hi) const {
+  if (!json_->is_array() || json_->size() != 2) Fail("must be an array of 2 numbers");
+  return {At(0).InRange(lo, hi), At(1).InRange(lo, hi)};
 }
 
 }  // namespace vahf::scene

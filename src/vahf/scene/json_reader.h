@@ -57,6 +57,7 @@ class JsonNode {
   double Positive() const;     // > 0
   double NonNegative() const;  // >= 0
   double InRange(double lo, double hi) const;  // lo <= x <= hi
+  double InOpenClosed(double lo, double hi) const;  // lo < x <= hi
   std::int64_t Integer(std::int64_t min, std::int64_t max) const;
   std::uint64_t Unsigned() const;
   std::string String() const;
@@ -64,6 +65,9 @@ class JsonNode {
   bool Boolean() const;
   Eigen::Vector3d Vector3() const;
   Eigen::Vector2d Vector2() const;
+  // Each component in [lo, hi]; an error names the component's pointer.
+  Eigen::Vector3d Vector3(double lo, double hi) const;
+  Eigen::Vector2d Vector2(double lo, double hi) const;
 
   // The value as the message shows it: compact JSON, at most 100 characters
   // (a long scalar keeps both ends, a container its start), containers
@@ -76,6 +80,11 @@ class JsonNode {
   const std::string* file_;
   std::string path_;
 };
+
+// A number as people write it, in rules, messages and labels: the shortest
+// form that reads back exactly, scientific when small or large (0.5, 1000,
+// 1e6, 1e-12, 2.5e-3).
+std::string NumberText(double x);
 
 // Escapes a key for a JSON pointer (RFC 6901), and a control character as
 // \uXXXX so that a message naming the pointer stays on one line.

@@ -12,14 +12,14 @@
 
 namespace vahf::scene {
 
+// Every number has finite bounds [lo, hi]: a value the code cannot honour
+// (one that overflows its arithmetic or stalls its integration) is refused
+// when the file is read, not met in the middle of a run.
 enum class ParamRule {
-  kPositive,     // > 0
-  kNonNegative,  // >= 0
-  kUnit,         // in [0, 1]
-  kOpenUnit,     // in (0, 1), both ends excluded
-  kAngle,        // degrees in [0, 180]
-  kCount,        // integer >= 1
-  kChoice,       // one of `choices`
+  kClosed,     // lo <= x <= hi
+  kOpenBelow,  // lo < x <= hi (lo is usually 0: "positive")
+  kCount,      // an integer, lo <= n <= hi
+  kChoice,     // one of `choices` (lo, hi unused)
 };
 
 struct ParamSpec {
@@ -27,6 +27,7 @@ struct ParamSpec {
   const char* key;
   const char* unit;
   ParamRule rule;
+  double lo, hi;
   const char* meaning;
   // Exactly one accessor is set, by the kind of value.
   double& (*real)(Parameters&) = nullptr;
@@ -49,6 +50,9 @@ const ParamSpec* FindParam(const std::string& name);
 // breaks it names the node (the scene loader's and the experiment files' one
 // reader of parameter values).
 void ReadParamValue(const ParamSpec& spec, const JsonNode& value, Parameters* p);
+
+// The rule as docs/parameters.md states it: "in (0, 1e6]", the names, ...
+std::string ParamRuleText(const ParamSpec& spec);
 
 // The value of a parameter in `p`, as text.
 std::string ParamValueText(const ParamSpec& spec, const Parameters& p);

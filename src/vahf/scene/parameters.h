@@ -50,6 +50,17 @@ struct SimulationParams {
   // the contact oscillation (about 1e-4 s) or sticking friction (a few
   // microseconds) it is built for.
   double step_floor = 1e-8;
+  // The work budget of a trial, in accepted integrator steps: a trial still
+  // running after this many ends as status step_budget, a failure of the
+  // computation like numerical_failure. Counted in steps, not seconds, so
+  // that where a trial ends never depends on the machine. Each accepted step
+  // costs a bounded number of attempts (CVODE: at most 7 error-test and 10
+  // convergence failures a step; Simbody's integrators: down to their minimum
+  // step) and every decision ends a step, so this bounds a trial's work. The
+  // shipped scenes take at most about 2e4 steps a simulated second
+  // (docs/physics.md), so 1e6 holds any of them to its 10 s time limit with
+  // a margin of five.
+  int max_steps = 1000000;
 };
 
 struct Parameters {

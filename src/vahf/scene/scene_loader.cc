@@ -7,6 +7,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "vahf/contact/point_shell.h"
+#include "vahf/contact/rim.h"
 #include "vahf/core/error.h"
 #include "vahf/scene/json_reader.h"
 #include "vahf/scene/parameter_table.h"
@@ -14,11 +16,27 @@
 namespace vahf::scene {
 namespace {
 
+// The bounds of a scene's numbers (issue 13: finite bounds the code can
+// honour). A workcell spans metres; 100 m holds any of them, and keeps the
+// operator's shoulder offsets (centimetres) far above the rounding of a
+// coordinate (2.2e-16 * 100 m = 2e-14 m).
+constexpr double kMaxCoordinate = 100.0;  // m, every position
+// Gravity up to 10 g: the Earth's 9.81 m/s^2 (ISO 80000-3), the Moon's, or none.
+constexpr double kMaxGravity = 100.0;  // m/s^2, per component
+// Part mass, kg: 0.1 g (a small seal) to 10 t; density, kg/m^3: 1 (an
+// aerogel) to 1e5 (osmium is 22 590).
+constexpr double kMinMass = 1e-4, kMaxMass = 1e4;
+constexpr double kMinDensity = 1.0, kMaxDensity = 1e5;
+// Coulomb friction coefficients of engineering pairs lie below about 1.5
+// (rubber on dry steel); 5 leaves room for a deliberately extreme case.
+constexpr double kMaxFriction = 5.0;
+
 Pose ReadPose(const JsonNode& node) {
   node.ExpectObject({"position", "rotation_xyz_deg"});
   Pose pose;
-  pose.position = node.Required("position").Vector3();
-  if (auto rot = node.Optional("rotation_xyz_deg")) pose.rotation_xyz_deg = rot->Vector3();
+  pose.position = node.Required("position").Vector3(-kMaxCoordinate, kMaxCoordinate);
+  if (auto rot = node.Optional("rotation_xyz_deg"))
+    pose.rotation_xyz_deg = rot->Vector3(-360.0, 360.0);
   return pose;
 }
 
@@ -32,11 +50,17 @@ geometry::Shape ReadShape(const JsonNode& node) {
       if (!(s[k] > 0))
         size.Fail("a box needs three positive edge lengths (m); a zero or negative edge "
                   "makes it degenerate");
+    for (int k = 0; k < 3; ++k)
+      size.At(k).InRange(geometry::kMinBoxEdge, geometry::kMaxExtent);
     return geometry::Box{s};
   }
   node.ExpectObject({"type", "profile"});
   const JsonNode profile = node.Required("profile");
   const std::size_t n = profile.ArraySize();
+  if (n > geometry::kMaxProfileVertices + 1)
+    profile.Fail(fmt::format("{} points; a profile has at most {} vertices (and the "
+                             "closing repeat)",
+                             n, geometry::kMaxProfileVertices));
   std::vector<geometry::ProfilePoint> points;
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Vector2d rz = profile.At(k).Vector2();
@@ -80,15 +104,32 @@ Part ReadPart(const JsonNode& node) {
     throw InputError(node.file(), node.path() + "/mass", "(missing)",
                      "a part needs its 'mass' (kg) or its 'density' (kg/m^3)");
   if (density) {
-    part.density = density->Positive();
+    part.density = density->InRange(kMinDensity, kMaxDensity);
     part.mass = part.density * volume;
+    if (!(part.mass >= kMinMass && part.mass <= kMaxMass))
+      density->Fail(fmt::format("gives a mass of {:.6g} kg ({:.6g} m^3 of it); a part's mass "
+                                "lies in [{}, {}] kg",
+                                part.mass, volume, kMinMass, kMaxMass));
   } else {
-    part.mass = mass->Positive();
+    part.mass = mass->InRange(kMinMass, kMaxMass);
     part.density = part.mass / volume;
+    if (!(part.density >= kMinDensity && part.density <= kMaxDensity))
+      mass->Fail(fmt::format("gives a density of {:.6g} kg/m^3 ({:.6g} m^3 of it); a part's "
+                             "density lies in [{}, {}] kg/m^3",
+                             part.density, volume, kMinDensity, kMaxDensity));
   }
-  part.friction = node.Required("friction").NonNegative();
+  part.friction = node.Required("friction").InRange(0.0, kMaxFriction);
   part.grasp = part.mass_properties.centroid;
-  if (auto grasp = node.Optional("grasp")) part.grasp = grasp->Vector3();
+  if (auto grasp = node.Optional("grasp")) {
+    part.grasp = grasp->Vector3(-kMaxCoordinate, kMaxCoordinate);
+    // The hand holds the part: the grasp lies on it or in it, so within the
+    // sphere about the part origin that holds the part.
+    const double reach = part.mass_properties.bounding_radius;
+    if (part.grasp.norm() > reach * (1 + 1e-9))
+      grasp->Fail(fmt::format("lies {:.6g} m from the part origin; the hand holds the part, "
+                              "so the grasp lies within its bounding sphere ({:.6g} m)",
+                              part.grasp.norm(), reach));
+  }
   part.initial = ReadPose(node.Required("pose"));
   if (part.role == Role::kAssembling) {
     part.target = ReadPose(node.Required("target"));
@@ -109,7 +150,7 @@ human::Operator ReadOperator(const JsonNode& node) {
   // percentiles: 1.45-1.81 m); anything outside is a unit mistake.
   op.height = node.Required("height").InRange(1.0, 2.5);
   op.arm_length = node.Required("arm_length").InRange(0.3, 1.2);
-  op.position = node.Required("position").Vector2();
+  op.position = node.Required("position").Vector2(-kMaxCoordinate, kMaxCoordinate);
   op.facing_deg = node.Required("facing_deg").InRange(-360.0, 360.0);
   if (auto sex = node.Optional("sex")) op.sex = sex->Choice({"male", "female", "unspecified"});
   return op;
@@ -168,7 +209,7 @@ Scene ParseScene(const nlohmann::json& document, const std::string& file) {
   scene.file = file;
   scene.name = root.Required("name").String();
   if (auto d = root.Optional("description")) scene.description = d->String();
-  if (auto g = root.Optional("gravity")) scene.gravity = g->Vector3();
+  if (auto g = root.Optional("gravity")) scene.gravity = g->Vector3(-kMaxGravity, kMaxGravity);
   scene.op = ReadOperator(root.Required("operator"));
 
   const JsonNode parts = root.Required("parts");
@@ -213,6 +254,7 @@ Scene ParseScene(const nlohmann::json& document, const std::string& file) {
                                  scene.op.arm_length),
                      reach);
   }
+  RequireCountableSizes(scene);
   return scene;
 }
 
@@ -248,10 +290,45 @@ std::string DescribeScene(const Scene& s) {
   return out;
 }
 
+std::string SizeViolation(const Scene& scene) {
+  const contact::ContactParams& c = scene.params.contact;
+  // "part 'rod': its contact shell at contact/shell_spacing 1e-5 m would ..."
+  const auto over = [](const Part& part, const char* what, const char* key, double spacing,
+                       double n, double max) {
+    return n <= max ? std::string()
+                    : fmt::format("part '{}': its {} at contact/{} {} m would hold up to "
+                                  "{:.3g} points, more than {:g}: raise the spacing",
+                                  part.name, what, key, spacing, n, max);
+  };
+  for (const Part& part : scene.parts) {
+    std::string v;
+    if (part.role == Role::kAssembling)
+      v = over(part, "contact shell", "shell_spacing", c.shell_spacing,
+               contact::PointShellSizeBound(part.shape, c.shell_spacing),
+               contact::kMaxShellPoints);
+    if (v.empty() && c.model == "resolving")
+      v = over(part, "rims", "rim_spacing", c.rim_spacing,
+               contact::RimSizeBound(part.shape, c.rim_spacing), contact::kMaxRimPoints);
+    if (!v.empty()) return v;
+  }
+  return "";
+}
+
+void RequireCountableSizes(const Scene& scene) {
+  const std::string size = SizeViolation(scene);
+  if (!size.empty())
+    throw InputError(scene.file, "/parameters/contact",
+                     fmt::format("shell_spacing {} m, rim_spacing {} m",
+                                 scene.params.contact.shell_spacing,
+                                 scene.params.contact.rim_spacing),
+                     size);
+}
+
 std::string ParameterViolation(const Scene& scene) {
   for (const std::string& violation :
        {scene.params.sight.Violation(), scene.params.glance.Violation(),
-        scene.params.reach.Violation(scene.op.arm_length, scene.op.height)})
+        scene.params.reach.Violation(scene.op.arm_length, scene.op.height),
+        SizeViolation(scene)})
     if (!violation.empty()) return violation;
   return "";
 }

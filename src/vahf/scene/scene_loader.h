@@ -26,4 +26,12 @@ std::string DescribeScene(const Scene& scene);
 // trial values) applies them again.
 std::string ParameterViolation(const Scene& scene);
 
+// The size rules of that list: the moving parts' contact shells and, under the
+// resolving contact model, every part's rims stay countable
+// (contact::kMaxShellPoints, kMaxRimPoints), checked before anything is made.
+std::string SizeViolation(const Scene& scene);
+// Throws its violation as an InputError at the scene file's
+// /parameters/contact: the loader's and the trial model builder's check.
+void RequireCountableSizes(const Scene& scene);
+
 }  // namespace vahf::scene

@@ -90,6 +90,11 @@ TraceRow FinalRow(TrialContext& c, double time, const contact::RigidMotion& m) {
   const Vector3d T = m.pose.translation();
   const Vector3d centre = m.pose * model.part_com;
   TraceRow row = TrialContext::PoseRow(time, m);
+  if (!IsFinite(m)) {  // a numerical failure's last state: A and Psi as last decided
+    row.work = c.work;
+    row.psi = human::FatigueCoefficient(c.work, c.params().fatigue.a_max);
+    return row;
+  }
   row.factors = c.FactorsAt(m, centre, c.MotionDirection(centre, T, false));
   row.work = c.work + human::WorkEq4(c.last_force, human::TravelOf(T - c.last_position),
                                      c.params().fatigue.k);

@@ -17,6 +17,14 @@ bool StepChecks::Accepted(double t, const contact::RigidMotion& m, double depth,
     return false;
   }
   Depth(depth, t);
+  const int budget = c_.params().simulation.max_steps;
+  if (++accepted_ >= budget) {
+    c_.End({Status::kStepBudget,
+            fmt::format("{} accepted steps (simulation/max_steps) at t = {} s, {} s of "
+                        "simulated time a step on average",
+                        accepted_, t, t / static_cast<double>(accepted_))});
+    return false;
+  }
   const double floor = c_.params().simulation.step_floor;
   if (++steps_since_restart_ > kProbingSteps && h > 0 && h < floor)
     c_.warnings.Count(WarningKind::kStepSizeFloor, t, [&] {

@@ -1,7 +1,8 @@
 // The checks made at every accepted step of any stepper (docs/design.md
 // decision 12), without Simbody: the state is finite and not diverging, the
 // contact depth is within the penetration bound, the step is above the floor,
-// and the integrator's retries since the last step are counted.
+// the integrator's retries since the last step are counted, and the trial is
+// within its work budget (simulation/max_steps accepted steps).
 #pragma once
 
 #include <cstdint>
@@ -20,7 +21,8 @@ class StepChecks {
   // An accepted step to time t, of size h, ending at motion m with the
   // contact `depth` there; `retries` is the integrator's running total of
   // failed attempts other than error-test failures, `retry_detail` says what
-  // they were. False when the state is unusable (the trial has ended).
+  // they were. False when the state is unusable or the budget is spent (the
+  // trial has ended).
   bool Accepted(double t, const contact::RigidMotion& m, double depth, double h,
                 std::int64_t retries, const std::function<std::string()>& retry_detail);
 
@@ -34,6 +36,7 @@ class StepChecks {
 
   TrialContext& c_;
   std::int64_t retries_ = 0;
+  std::int64_t accepted_ = 0;
   static constexpr int kProbingSteps = 3;
   int steps_since_restart_ = 0;
 };

@@ -10,6 +10,7 @@
 #include "vahf/guidance/assembly_force.h"
 #include "vahf/guidance/assembly_torque.h"
 #include "vahf/human/fatigue.h"
+#include "vahf/scene/scene_loader.h"
 
 namespace vahf::sim {
 namespace {
@@ -44,7 +45,7 @@ std::vector<FixedPart> FixedParts(const scene::Scene& scene, int position) {
 VisibilityMeshes MeshesFor(const scene::Scene& scene, const scene::Part& part,
                            const std::vector<FixedPart>& fixed) {
   const auto& v = scene.params.visibility;
-  if (v.grid > visibility::kMaxGrid)
+  if (v.grid > visibility::kMaxGrid)  // a scene built or changed in memory
     throw InputError(scene.file, "/parameters/visibility/grid", std::to_string(v.grid),
                      fmt::format("at most {} rays a side", visibility::kMaxGrid));
   // The mesher's errors know the value and rule but not the scene: add them.
@@ -71,6 +72,10 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
   VAHF_CHECK(sequence_position >= 0 &&
                  sequence_position < static_cast<int>(scene.sequence.size()),
              "sequence position out of range");
+  // The size rules, before anything is allocated: a scene changed after it
+  // was read (an experiment's setting, a calibration's trial value) meets
+  // them here if nowhere else.
+  scene::RequireCountableSizes(scene);
   const scene::Part& part = scene.parts[scene.sequence[sequence_position]];
   auto out = std::make_shared<TrialModel>(human::FactorCurves{
       params.sight.Build(), params.reach.Build(scene.op.arm_length, scene.op.height),

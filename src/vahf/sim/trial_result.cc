@@ -12,8 +12,13 @@ const char* StatusName(Status status) {
     case Status::kUnreachable: return "unreachable";
     case Status::kJammed: return "jammed";
     case Status::kNumericalFailure: return "numerical_failure";
+    case Status::kStepBudget: return "step_budget";
   }
   return "?";
+}
+
+bool IsComputationFailure(Status status) {
+  return status == Status::kNumericalFailure || status == Status::kStepBudget;
 }
 
 std::string TrialResult::BriefReport() const {

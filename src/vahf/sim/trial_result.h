@@ -23,9 +23,15 @@ enum class Status {
   kJammed,            // in contact with no progress for jam_time
   kNumericalFailure,  // NaN in the state or the integrator failed: a failure of
                       // the computation, never counted as a failed assembly
+  kStepBudget,        // simulation/max_steps accepted steps before any other
+                      // ending: a failure of the computation, like kNumericalFailure
 };
 
 const char* StatusName(Status status);
+
+// A failure of the computation (numerical failure, step budget), never counted
+// as a failed assembly: statistics of success and time leave it out.
+bool IsComputationFailure(Status status);
 
 struct TraceRow {
   double time = 0;  // s

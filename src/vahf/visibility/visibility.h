@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "vahf/geometry/tessellation.h"
+#include "vahf/visibility/visibility_params.h"
 
 namespace vahf::visibility {
 
@@ -54,9 +55,6 @@ struct VisibilityResult {
   std::int64_t rays_cast = 0;       // Embree ray queries, both passes
   VisibilityPath path = VisibilityPath::kRaysCast;
 };
-
-// Largest N accepted (N^2 = 2.7e8 rays).
-inline constexpr int kMaxGrid = 1 << 14;
 
 struct CasterOptions {
   int grid = 128;  // N of the N x N ray grid, 1..kMaxGrid

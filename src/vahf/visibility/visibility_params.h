@@ -5,6 +5,10 @@
 
 namespace vahf::visibility {
 
+// Largest N of the ray grid: N^2 = 1 048 576 rays a decision, two orders
+// above the shipped scenes' 128^2, so that one decision's work stays bounded.
+inline constexpr int kMaxGrid = 1024;
+
 struct VisibilityParams {
   // "raycast": V by casting a grid of rays from the operator's eye (Eq. 1);
   // "constant": V = `value` throughout (no tessellation, no rays);
