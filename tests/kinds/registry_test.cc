@@ -72,12 +72,12 @@ TEST(KindRegistryTest, EveryKindIsRegisteredOnceWithWhatItsStagesNeed) {
   }
   EXPECT_EQ(names, (std::set<std::string>{"table1", "assembly_time", "human_factors_groups",
                                           "fatigue", "precision", "paper", "calibrate",
-                                          "compare"}));
+                                          "compare", "stability"}));
 }
 
 TEST(KindRegistryTest, EveryShippedExperimentLoadsWithARegisteredKind) {
   for (const char* f : {"table1", "assembly_time", "human_factors_groups", "fatigue",
-                        "precision", "paper", "calibrate_paper", "compare_paper"}) {
+                        "precision", "paper", "calibrate_paper", "compare_paper", "stability"}) {
     const scene::ExperimentFile e = LoadExperiment(Source("experiments/") + f + ".json");
     EXPECT_EQ(FindKind(e.kind).name, e.kind) << f;
   }
@@ -85,11 +85,11 @@ TEST(KindRegistryTest, EveryShippedExperimentLoadsWithARegisteredKind) {
 
 TEST(KindRegistryTest, AnUnregisteredKindNamesTheRegisteredOnes) {
   const std::string path =
-      Write("planned.json", Experiment("stability", Source("experiments/scenes/peg_in_hole.json"), 1));
+      Write("planned.json", Experiment("sensitivity", Source("experiments/scenes/peg_in_hole.json"), 1));
   const std::string message = ErrorOf([&] { LoadExperiment(path); });
   EXPECT_THAT(message, HasSubstr(path));
   EXPECT_THAT(message, HasSubstr("/kind"));
-  EXPECT_THAT(message, HasSubstr("stability"));
+  EXPECT_THAT(message, HasSubstr("sensitivity"));
   for (const Kind& k : Kinds()) EXPECT_THAT(message, HasSubstr(k.name));
 }
 

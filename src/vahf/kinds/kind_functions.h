@@ -1,6 +1,6 @@
 // The functions each kind registers (kinds/registry.cc), by the file that
 // holds them: design_kinds.cc (the designs of cycles and the paper run),
-// calibrate_kind.cc, compare_kind.cc.
+// calibrate_kind.cc, compare_kind.cc, stability_kind.cc.
 #pragma once
 
 #include <string>
@@ -25,5 +25,9 @@ int RunCalibration(const scene::ExperimentFile& file, const RunContext& context)
 // compare_kind.cc
 std::string CheckComparison(const scene::ExperimentFile& file);
 int RunComparison(const scene::ExperimentFile& file, const RunContext& context);
+
+// stability_kind.cc
+std::string CheckStability(const scene::ExperimentFile& file);
+int RunStability(const scene::ExperimentFile& file, const RunContext& context);
 
 }  // namespace vahf::kinds

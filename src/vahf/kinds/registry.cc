@@ -41,6 +41,9 @@ const std::vector<Kind>& Kinds() {
       {"compare", "a virtual design against a lab dataset (docs/calibration.md)",
        {"lab", "fatigue", "quantities"}, "", ReadComparison, CheckComparison, nullptr, nullptr,
        RunComparison},
+      {"stability", "stiff and extreme cases across integrators, each with its expected outcome",
+       {"integrators", "cases"}, "a stability experiment names a scene in each of its \"cases\"",
+       ReadStability, CheckStability, nullptr, nullptr, RunStability},
   };
   return kinds;
 }
@@ -109,7 +112,9 @@ std::string CheckExperiment(const scene::ExperimentFile& file) {
   std::string out =
       fmt::format("experiment '{}' ({}): kind {}, seed {}{}\n", file.name, file.file, file.kind,
                   file.seed,
-                  file.kind == "paper" ? "" : fmt::format(", {} cycles per condition", file.trials));
+                  file.kind == "paper" || file.kind == "stability"
+                      ? ""
+                      : fmt::format(", {} cycles per condition", file.trials));
   return out + FindKind(file.kind).check(file);
 }
 

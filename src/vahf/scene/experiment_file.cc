@@ -2,8 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <fmt/ranges.h>
+
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include "vahf/core/error.h"
 #include "vahf/scene/json_reader.h"
@@ -291,6 +295,205 @@ void ReadComparison(const JsonNode& root, const std::string& path, ExperimentFil
   d.quantities = ReadTargets(root.Required("quantities"), e->scene, true);
   d.fatigue = e->fatigue;
   CheckSegments(d.quantities, d.fatigue, path);
+}
+
+namespace {
+
+// The value `pointer` (RFC 6901) names in `document`, or null when it names
+// none; `why` says which token fails and why. "" (the whole document) names
+// none: a patch changes a value inside the scene.
+nlohmann::json* Resolve(nlohmann::json& document, const std::string& pointer,
+                        std::string* why) {
+  if (pointer.empty() || pointer[0] != '/') {
+    *why = "a JSON pointer into the scene starts with '/' (RFC 6901), e.g. /parts/0/friction";
+    return nullptr;
+  }
+  nlohmann::json* at = &document;
+  std::string walked;
+  std::size_t start = 1;
+  for (;;) {
+    const std::size_t end = std::min(pointer.find('/', start), pointer.size());
+    const std::string raw = pointer.substr(start, end - start);
+    std::string token;
+    for (std::size_t k = 0; k < raw.size(); ++k) {
+      if (raw[k] != '~') {
+        token += raw[k];
+      } else if (k + 1 < raw.size() && (raw[k + 1] == '0' || raw[k + 1] == '1')) {
+        token += raw[++k] == '0' ? '~' : '/';
+      } else {
+        *why = "'~' in a JSON pointer is followed by 0 or 1 (RFC 6901)";
+        return nullptr;
+      }
+    }
+    const std::string where = walked.empty() ? "the scene's root" : walked;
+    if (at->is_object()) {
+      const auto it = at->find(token);
+      if (it == at->end()) {
+        *why = fmt::format("the scene has no '{}' at {}; a patch replaces a value the scene "
+                           "already holds",
+                           token, where);
+        return nullptr;
+      }
+      at = &*it;
+    } else if (at->is_array()) {
+      const bool digits = !token.empty() && token.size() < 10 &&
+                          token.find_first_not_of("0123456789") == std::string::npos &&
+                          (token.size() == 1 || token[0] != '0');
+      if (!digits || std::stoul(token) >= at->size()) {
+        *why = fmt::format("{} holds {} elements; '{}' names none of them", where, at->size(),
+                           token);
+        return nullptr;
+      }
+      at = &(*at)[std::stoul(token)];
+    } else {
+      *why = fmt::format("{} is a {}, not an object or an array", where, at->type_name());
+      return nullptr;
+    }
+    walked += "/" + raw;
+    if (end == pointer.size()) return at;
+    start = end + 1;
+  }
+}
+
+// Whether `where` (a scene pointer an error names) lies at or under `pointer`.
+bool Under(const std::string& where, const std::string& pointer) {
+  return where.compare(0, pointer.size(), pointer) == 0 &&
+         (where.size() == pointer.size() || where[pointer.size()] == '/');
+}
+
+// The scene of a case: its document patched, read by the scene loader, its
+// parameters overridden; a scene rule it breaks names the experiment file and
+// the case's pointer (the patch entry at fault, or the case).
+Scene CaseScene(const StabilityCase& c, const JsonNode& node, const std::string& integrator) {
+  nlohmann::json document = ReadJsonFile(c.scene_path);
+  const std::optional<JsonNode> patch = node.Optional("patch");
+  for (const auto& [pointer, value] : c.patch) {
+    std::string why;
+    nlohmann::json* at = Resolve(document, pointer, &why);
+    VAHF_CHECK(at != nullptr, "a patch pointer the reader accepted: " + pointer);
+    *at = value;
+  }
+  Scene scene;
+  try {
+    scene = ParseScene(document, c.scene_path);
+  } catch (const InputError& e) {
+    for (const auto& [pointer, value] : c.patch)
+      if (Under(e.where(), pointer))
+        throw InputError(node.file(),
+                         patch->Required(pointer).path() + e.where().substr(pointer.size()),
+                         e.value(), e.rule() + " (scene " + c.scene_path + ", patched)");
+    node.Fail(fmt::format("the scene {}{} breaks a rule: {}", c.scene_path,
+                          c.patch.empty() ? "" : " with the case's patch", e.what()));
+  }
+  const std::optional<JsonNode> parameters = node.Optional("parameters");
+  for (const auto& [name, value] : c.overrides)
+    ReadParamValue(*FindParam(name), parameters->Required(name), &scene.params);
+  const nlohmann::json integrator_value = integrator;
+  ReadParamValue(*FindParam("simulation/integrator"),
+                 JsonNode(integrator_value, node.file(), node.path() + "/integrators"),
+                 &scene.params);
+  const std::string violation = ParameterViolation(scene);
+  if (!violation.empty())
+    node.Fail("applied to scene '" + scene.name + "' (" + c.scene_path + "): " + violation);
+  if (c.position >= static_cast<int>(scene.sequence.size()))
+    node.Required("position")
+        .Fail(fmt::format("the scene's sequence has {} part(s): positions 0 to {}",
+                          scene.sequence.size(), scene.sequence.size() - 1));
+  return scene;
+}
+
+std::vector<std::string> ReadIntegrators(const JsonNode& list) {
+  std::vector<std::string> out;
+  const std::size_t n = list.ArraySize(1);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::string name = list.At(k).Choice(IntegratorNames());
+    if (std::find(out.begin(), out.end(), name) != out.end())
+      list.At(k).Fail("an integrator is listed once");
+    out.push_back(name);
+  }
+  return out;
+}
+
+}  // namespace
+
+void ReadStability(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+  StabilityDesign& d = e->stability;
+  d.integrators = ReadIntegrators(root.Required("integrators"));
+  const JsonNode cases = root.Required("cases");
+  const std::size_t n = cases.ArraySize(1);
+  for (std::size_t k = 0; k < n; ++k) {
+    const JsonNode node = cases.At(k);
+    node.ExpectObject(
+        {"name", "scene", "position", "parameters", "patch", "integrators", "seeds", "expect"});
+    StabilityCase c;
+    c.pointer = node.path();
+    c.name = node.Required("name").String();
+    if (c.name.empty()) node.Required("name").Fail("a case needs a non-empty name");
+    for (const StabilityCase& other : d.cases)
+      if (other.name == c.name)
+        node.Required("name").Fail("case names are unique (also " + other.pointer + ")");
+    c.scene_path = ResolvePath(node.Required("scene"), path, "scene");
+    if (auto position = node.Optional("position"))
+      c.position = static_cast<int>(position->Integer(0, 1000));
+    if (auto patch = node.Optional("patch")) {
+      if (!patch->json().is_object())
+        patch->Fail("a patch is an object of JSON pointer into the scene -> value");
+      nlohmann::json document = ReadJsonFile(c.scene_path);
+      for (const auto& item : patch->json().items()) {  // in key order
+        std::string why;
+        const JsonNode entry = patch->Required(item.key());
+        if (!Resolve(document, item.key(), &why)) entry.Fail(why);
+        for (const auto& [earlier, value] : c.patch)
+          if (Under(item.key(), earlier))
+            entry.Fail("lies inside " + earlier + ", which the same patch replaces");
+        c.patch.emplace_back(item.key(), item.value());
+      }
+    }
+    if (auto parameters = node.Optional("parameters")) {
+      parameters->ExpectObject(ParamNames());
+      Parameters scratch;
+      for (const auto& item : parameters->json().items()) {
+        const JsonNode value = parameters->Required(item.key());
+        if (item.key() == "simulation/integrator")
+          value.Fail("a case names its integrators in \"integrators\"");
+        ReadParamValue(*FindParam(item.key()), value, &scratch);
+        c.overrides.emplace_back(item.key(), item.value());
+      }
+    }
+    c.integrators = d.integrators;
+    if (auto list = node.Optional("integrators")) c.integrators = ReadIntegrators(*list);
+    if (auto seeds = node.Optional("seeds")) c.seeds = static_cast<int>(seeds->Integer(1, 1000));
+    const JsonNode expect = node.Required("expect");
+    const std::size_t m = expect.ArraySize(1);
+    for (std::size_t j = 0; j < m; ++j) {
+      const std::string name = expect.At(j).String();
+      if (std::find(c.expect.begin(), c.expect.end(), name) != c.expect.end())
+        expect.At(j).Fail("an outcome class is listed once");
+      c.expect.push_back(name);
+      c.expect_pointers.push_back(expect.At(j).path());
+    }
+    for (const std::string& integrator : c.integrators)
+      c.scenes.push_back(CaseScene(c, node, integrator));
+    d.cases.push_back(std::move(c));
+  }
+  e->scene_path = d.cases[0].scene_path;
+  e->scene = d.cases[0].scenes[0];
+}
+
+std::string DescribeStability(const ExperimentFile& e) {
+  const StabilityDesign& d = e.stability;
+  std::string out = fmt::format("stability: {} case(s); integrators by default: {}\n",
+                                d.cases.size(), fmt::join(d.integrators, ", "));
+  for (const StabilityCase& c : d.cases) {
+    out += fmt::format("  {} ({}): {}, position {}, {} seed(s), expects {}\n", c.name, c.pointer,
+                       c.scene_path, c.position, c.seeds, fmt::join(c.expect, " or "));
+    for (const auto& [pointer, value] : c.patch)
+      out += fmt::format("    patch {} = {}\n", pointer, value.dump());
+    for (const auto& [name, value] : c.overrides)
+      out += fmt::format("    {} = {}\n", name, value.dump());
+    out += fmt::format("    integrators: {}\n", fmt::join(c.integrators, ", "));
+  }
+  return out;
 }
 
 bool PrecisionSetting::AccuracyOnly() const {

@@ -148,6 +148,39 @@ struct CalibrationDesign {
   FatigueDesign fatigue;
 };
 
+// A case of a stability experiment (docs/experiments.md, "stability"): a
+// scene, changed by a patch of its document and by parameter overrides, run
+// at one position of its sequence under each integrator, with the outcome
+// classes the file expects of it.
+struct StabilityCase {
+  std::string name;
+  std::string pointer;     // where the file states it: "/cases/3"
+  std::string scene_path;  // resolved against the experiment file's folder
+  int position = 0;        // the entry of the scene's sequence to run
+  // JSON pointer (RFC 6901) into the scene document -> the value that
+  // replaces what is there, applied before the scene is read; each pointer
+  // names a value the document already holds.
+  std::vector<std::pair<std::string, nlohmann::json>> patch;
+  // "group/key" -> value, on top of the (patched) scene's own parameters.
+  std::vector<std::pair<std::string, nlohmann::json>> overrides;
+  std::vector<std::string> integrators;  // the case's own, else the file's
+  int seeds = 1;                         // trials per integrator: stream keys 0..seeds-1
+  // Outcome classes: trial status names (sim/trial_result.h), checked against
+  // them by the kind's check (kinds/stability_kind.cc); "/cases/3/expect/1".
+  std::vector<std::string> expect;
+  std::vector<std::string> expect_pointers;
+  // The scene patched and overridden, once per integrator (in `integrators`
+  // order), each validated as the scene loader does.
+  std::vector<Scene> scenes;
+};
+
+// Stiff and extreme cases across integrators (docs/experiments.md,
+// "stability").
+struct StabilityDesign {
+  std::vector<std::string> integrators;  // the default of every case
+  std::vector<StabilityCase> cases;
+};
+
 // "RungeKuttaMerson 1e-4" for an integrator and accuracy, then "group/key
 // value" for each other override, joined by ", " ("CVODE 1e-4,
 // simulation/velocity_time_scale 0.1"); "scene parameters" for no overrides.
@@ -179,6 +212,8 @@ struct ExperimentFile {
   // are its first scene's (the manifest's "scene").
   PrecisionDesign precision;
   CalibrationDesign calibration;           // calibrate
+  // stability: its cases; `scene_path` and `scene` are its first case's.
+  StabilityDesign stability;
   ComparisonDesign comparison;             // compare
   // The parameter-override file applied to every scene (overrides.h), if any.
   std::string overrides_path;
@@ -224,6 +259,12 @@ void ReadPrecision(const JsonNode& root, const std::string& path, ExperimentFile
 void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFile* e);
 // compare: "lab", "fatigue", "quantities".
 void ReadComparison(const JsonNode& root, const std::string& path, ExperimentFile* e);
+// stability: "integrators", "cases".
+void ReadStability(const JsonNode& root, const std::string& path, ExperimentFile* e);
+
+// What `vahf check` prints about a stability experiment: every case with its
+// scene, patch, overrides, integrators, seeds and expected outcomes.
+std::string DescribeStability(const ExperimentFile& file);
 
 // "scene", "experiment", "lab", "overrides" or "synthetic" by the document's "format" field; an
 // InputError naming `file` otherwise.

@@ -69,22 +69,29 @@ void ApplyOverrides(const ParameterOverrides& o, ExperimentFile* file) {
                        violation);
   }
   for (ConditionEntry& c : file->conditions) ApplyOverrides(o, &c.scene);
-  PrecisionDesign& d = file->precision;
-  const auto apply_except = [&](const PrecisionSetting& setting, Scene* scene) {
+  // What a precision setting or a stability case sets itself stays its own.
+  const auto apply_except = [&](const std::vector<std::pair<std::string, nlohmann::json>>& own,
+                                const std::string& also_own, Scene* scene) {
     for (const auto& [name, value] : o.values) {
-      const bool own = std::any_of(setting.overrides.begin(), setting.overrides.end(),
-                                   [&](const auto& s) { return s.first == name; });
-      if (!own) Set(o, name, value, scene);
+      const bool kept = name == also_own ||
+                        std::any_of(own.begin(), own.end(),
+                                    [&](const auto& s) { return s.first == name; });
+      if (!kept) Set(o, name, value, scene);
     }
     Check(o, *scene);
   };
+  PrecisionDesign& d = file->precision;
   for (PrecisionScene& ps : d.scenes) {
     ApplyOverrides(o, &ps.scene);
-    apply_except(d.reference, &ps.reference);
+    apply_except(d.reference.overrides, "", &ps.reference);
     for (std::size_t k = 0; k < ps.settings.size(); ++k)
-      apply_except(d.settings[k], &ps.settings[k]);
+      apply_except(d.settings[k].overrides, "", &ps.settings[k]);
   }
   if (!d.scenes.empty()) file->scene = d.scenes[0].scene;
+  // A stability case runs each of its integrators.
+  for (StabilityCase& c : file->stability.cases)
+    for (Scene& scene : c.scenes) apply_except(c.overrides, "simulation/integrator", &scene);
+  if (!file->stability.cases.empty()) file->scene = file->stability.cases[0].scenes[0];
   for (ExperimentFile& sub : file->experiments) ApplyOverrides(o, &sub);
 }
 

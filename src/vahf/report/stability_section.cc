@@ -1,0 +1,217 @@
+#include "vahf/report/stability_section.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <map>
+
+namespace vahf::report {
+namespace {
+
+// The report's short names of the warning kinds, in WarningKind order.
+constexpr const char* kShortNames[kWarningKinds] = {"nonfinite", "pen", "floor", "retry",
+                                                    "fail"};
+
+nlohmann::json WarningCounts(const Warnings& w) {
+  nlohmann::json out = nlohmann::json::object();
+  for (int k = 0; k < kWarningKinds; ++k) {
+    const WarningEntry& e = w.at(static_cast<WarningKind>(k));
+    if (e.count > 0) out[WarningName(static_cast<WarningKind>(k))] = e.count;
+  }
+  return out;
+}
+
+// The trials of one case under one integrator, in seed order.
+struct Cell {
+  const scene::StabilityCase* c = nullptr;
+  std::string integrator;
+  std::vector<const experiment::StabilityTrial*> trials;
+};
+
+std::vector<Cell> Cells(const scene::StabilityDesign& d,
+                        const std::vector<experiment::StabilityTrial>& trials) {
+  std::vector<Cell> out;
+  for (const experiment::StabilityTrial& t : trials) {
+    const scene::StabilityCase& c = d.cases[t.case_index];
+    const std::string& integrator = c.integrators[t.integrator_index];
+    if (out.empty() || out.back().c != &c || out.back().integrator != integrator)
+      out.push_back({&c, integrator, {}});
+    out.back().trials.push_back(&t);
+  }
+  return out;
+}
+
+// "completed" or, over several seeds, "completed 2, timeout 1".
+std::string Statuses(const Cell& cell) {
+  std::vector<std::pair<std::string, int>> counts;
+  for (const auto* t : cell.trials) {
+    const std::string s = sim::StatusName(t->result.status);
+    auto it = std::find_if(counts.begin(), counts.end(),
+                           [&](const auto& p) { return p.first == s; });
+    if (it == counts.end()) {
+      counts.emplace_back(s, 1);
+    } else {
+      ++it->second;
+    }
+  }
+  if (cell.trials.size() == 1) return counts[0].first;
+  std::string out;
+  for (const auto& [s, n] : counts) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", s, n);
+  return out;
+}
+
+std::string Um(double metres) { return fmt::format("{:.3g}", metres * 1e6); }
+
+}  // namespace
+
+std::string CompactWarnings(const Warnings& w) {
+  std::string out;
+  for (int k = 0; k < kWarningKinds; ++k) {
+    const WarningEntry& e = w.at(static_cast<WarningKind>(k));
+    if (e.count > 0) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", kShortNames[k], e.count);
+  }
+  return out.empty() ? "-" : out;
+}
+
+std::vector<std::string> FailedCases(const scene::StabilityDesign& d,
+                                     const std::vector<experiment::StabilityTrial>& trials) {
+  std::vector<bool> failed(d.cases.size(), false);
+  for (const experiment::StabilityTrial& t : trials)
+    if (!t.failures.empty()) failed[t.case_index] = true;
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < d.cases.size(); ++k)
+    if (failed[k]) out.push_back(d.cases[k].name);
+  return out;
+}
+
+Section StabilitySection(const scene::ExperimentFile& file,
+                         const std::vector<experiment::StabilityTrial>& trials) {
+  const scene::StabilityDesign& d = file.stability;
+  Section s;
+  s.kind = "stability";
+
+  Table table({"case", "integrator", "seed_index", "status", "expected", "pass", "failures",
+               "end_time_s", "completion_time_s", "work_j", "steps_taken", "steps_attempted",
+               "max_steps", "realizations", "warnings", "warnings_total", "max_penetration_m",
+               "penetration_bound_m", "clearance_m", "stiffness_pa_per_m", "detail"});
+  Table cost({"case", "integrator", "seed_index", "simulated_s", "cpu_s", "wall_s",
+              "real_time_factor"});
+  nlohmann::json cases = nlohmann::json::array();
+  nlohmann::json measured = nlohmann::json::array();
+  for (const Cell& cell : Cells(d, trials)) {
+    const scene::StabilityCase& c = *cell.c;
+    if (cases.empty() || cases.back()["case"] != c.name)
+      cases.push_back({{"case", c.name},
+                       {"pointer", c.pointer},
+                       {"scene", c.scene_path},
+                       {"position", c.position},
+                       {"expect", c.expect},
+                       {"passed", true},
+                       {"integrators", nlohmann::json::array()}});
+    nlohmann::json cell_trials = nlohmann::json::array();
+    for (const experiment::StabilityTrial* t : cell.trials) {
+      const sim::TrialResult& r = t->result;
+      const std::int64_t max_steps = c.scenes[t->integrator_index].params.simulation.max_steps;
+      const bool pass = t->failures.empty();
+      table.AddRow({c.name, cell.integrator, std::int64_t{t->seed_index},
+                    std::string(sim::StatusName(r.status)), fmt::format("{}", fmt::join(c.expect, " ")),
+                    std::string(pass ? "yes" : "no"), fmt::format("{}", fmt::join(t->failures, "; ")),
+                    r.end_time, r.completion_time, r.work, r.counters.steps_taken,
+                    r.counters.steps_attempted, max_steps, r.counters.realizations,
+                    CompactWarnings(r.warnings), r.warnings.total(), r.max_penetration,
+                    r.penetration_bound, r.clearance, r.stiffness, r.detail});
+      const double rtf = r.cpu_seconds > 0 ? r.end_time / r.cpu_seconds : 0.0;
+      cost.AddRow({c.name, cell.integrator, std::int64_t{t->seed_index}, r.end_time,
+                   r.cpu_seconds, r.wall_seconds, rtf});
+      cell_trials.push_back({{"seed_index", t->seed_index},
+                             {"status", sim::StatusName(r.status)},
+                             {"pass", pass},
+                             {"failures", t->failures},
+                             {"detail", r.detail},
+                             {"end_time_s", r.end_time},
+                             {"steps_taken", r.counters.steps_taken},
+                             {"steps_attempted", r.counters.steps_attempted},
+                             {"max_steps", max_steps},
+                             {"warnings", WarningCounts(r.warnings)},
+                             {"max_penetration_m", r.max_penetration},
+                             {"penetration_bound_m", r.penetration_bound}});
+      measured.push_back({{"case", c.name},
+                          {"integrator", cell.integrator},
+                          {"seed_index", t->seed_index},
+                          {"cpu_s", r.cpu_seconds},
+                          {"wall_s", r.wall_seconds},
+                          {"real_time_factor", rtf}});
+      if (!pass) cases.back()["passed"] = false;
+    }
+    cases.back()["integrators"].push_back(
+        {{"integrator", cell.integrator}, {"trials", cell_trials}});
+  }
+  const std::vector<std::string> failed = FailedCases(d, trials);
+  s.tables.emplace_back("stability_trials.csv", table);
+  s.measured_tables.emplace_back("stability_cost.csv", cost);
+  s.summary = {{"claims", nlohmann::json::array()},
+               {"cases", cases},
+               {"failed_cases", failed},
+               {"passed", failed.empty()}};
+  s.measured = {{"trials", measured}};
+
+  std::string md = fmt::format(
+      "## Stability: stiff and extreme cases across integrators\n\n"
+      "{} case(s), {} trial(s). A trial passes when its status is one of the classes its "
+      "case expects, every number of its result (end time, work, deepest contact, final "
+      "pose, velocities, forces, factors) is finite, and its accepted steps stay within "
+      "simulation/max_steps. **{}**\n\n",
+      d.cases.size(), trials.size(),
+      failed.empty() ? std::string("Every case passes.")
+                     : fmt::format("{} case(s) fail: {}.", failed.size(), fmt::join(failed, ", ")));
+  md += "| case | integrator | status | expected | verdict | warnings | deepest contact / "
+        "bound (um) | steps | CPU (s) | real-time factor |\n"
+        "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+  for (const Cell& cell : Cells(d, trials)) {
+    Warnings w;
+    double depth = 0, bound = 0, cpu = 0, simulated = 0;
+    std::int64_t steps = 0;
+    bool pass = true;
+    for (const auto* t : cell.trials) {
+      const sim::TrialResult& r = t->result;
+      w.Add(r.warnings);
+      depth = std::max(depth, r.max_penetration);
+      bound = std::max(bound, r.penetration_bound);
+      steps = std::max(steps, r.counters.steps_taken);
+      cpu += r.cpu_seconds;
+      simulated += r.end_time;
+      pass = pass && t->failures.empty();
+    }
+    std::string verdict = "pass";
+    if (!pass) {
+      std::vector<std::string> why;
+      for (const auto* t : cell.trials)
+        for (const std::string& f : t->failures)
+          if (std::find(why.begin(), why.end(), f) == why.end()) why.push_back(f);
+      verdict = fmt::format("**FAIL**: {}", fmt::join(why, "; "));
+    }
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} / {} | {} | {:.3f} | {} |\n",
+                      cell.c->name, cell.integrator, Statuses(cell),
+                      fmt::join(cell.c->expect, ", "), verdict, CompactWarnings(w), Um(depth),
+                      bound > 0 ? Um(bound) : std::string("-"), steps, cpu,
+                      cpu > 0 ? fmt::format("{:.3g}", simulated / cpu) : std::string("-"));
+  }
+  md += "\nWarnings (counts over accepted steps): pen = penetration_bound (contact deeper "
+        "than the bound), retry = integrator_retry, floor = step_size_floor, nonfinite = "
+        "non_finite_state, fail = integrator_failure. Steps: accepted steps (the largest over "
+        "seeds). CPU and the real-time factor (simulated over CPU seconds, the trial's "
+        "thread) are measured on this machine, outside the results digest "
+        "(stability_cost.csv, measured.json); over several seeds CPU is their sum.\n\n"
+        "Why each trial ended:\n\n";
+  for (const experiment::StabilityTrial& t : trials) {
+    const scene::StabilityCase& c = d.cases[t.case_index];
+    md += fmt::format("- {}, {}{}: {} ({})\n", c.name, c.integrators[t.integrator_index],
+                      c.seeds > 1 ? fmt::format(", seed {}", t.seed_index) : std::string(),
+                      sim::StatusName(t.result.status), t.result.detail);
+  }
+  s.markdown = md;
+  return s;
+}
+
+}  // namespace vahf::report
