@@ -186,7 +186,8 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       {"calibrate_synthetic.json", "calibrate"},
       {"calibrate_paper.json", "calibrate"},
       {"compare_synthetic.json", "compare"},
-      {"compare_paper.json", "compare"}};
+      {"compare_paper.json", "compare"},
+      {"stability.json", "stability"}};
   std::set<std::string> found;
   for (const auto& entry :
        std::filesystem::directory_iterator(SourcePath("experiments"))) {
@@ -208,6 +209,9 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       EXPECT_TRUE(e.scene_path.empty()) << name;
     } else if (e.kind == "precision") {  // its first scene
       EXPECT_EQ(e.scene_path, e.precision.scenes.at(0).path) << name;
+    } else if (e.kind == "stability") {  // its first case's
+      EXPECT_EQ(e.scene_path, e.stability.cases.at(0).scene_path) << name;
+      EXPECT_EQ(e.scene.name, "peg_in_hole") << name;
     } else {
       EXPECT_TRUE(std::filesystem::equivalent(e.scene_path, CylinderScene())) << name;
       EXPECT_EQ(e.scene.name, "hydraulic_cylinder") << name;
