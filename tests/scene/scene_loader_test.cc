@@ -451,7 +451,7 @@ const BadCase kBadCases[] = {
      },
      "/parts/1/mass", "must lie in [1e-4, 10000]", "0"},
     {"NegativeDensity", [](json& d) { d["parts"][0]["density"] = -7850; },
-     "/parts/0/density", "must lie in [1, 1e5]", "-7850"},
+     "/parts/0/density", "must lie in [1, 1e7]", "-7850"},
     {"MassAndDensity", [](json& d) { d["parts"][1]["mass"] = 0.05; }, "/parts/1",
      "'density' or its 'mass', not both", ""},
     {"NeitherMassNorDensity", [](json& d) { d["parts"][1].erase("density"); },

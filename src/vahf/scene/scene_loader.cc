@@ -23,10 +23,11 @@ namespace {
 constexpr double kMaxCoordinate = 100.0;  // m, every position
 // Gravity up to 10 g: the Earth's 9.81 m/s^2 (ISO 80000-3), the Moon's, or none.
 constexpr double kMaxGravity = 100.0;  // m/s^2, per component
-// Part mass, kg: 0.1 g (a small seal) to 10 t; density, kg/m^3: 1 (an
-// aerogel) to 1e5 (osmium is 22 590).
+// Part mass, kg: 0.1 g (a small seal) to 10 t. Density, kg/m^3: 1 (an
+// aerogel) to 1e7, 400 times osmium's 22 590, so that a part may stand for a
+// heavier assembly (a lumped mass, or the stability suite's 100 kg peg).
 constexpr double kMinMass = 1e-4, kMaxMass = 1e4;
-constexpr double kMinDensity = 1.0, kMaxDensity = 1e5;
+constexpr double kMinDensity = 1.0, kMaxDensity = 1e7;
 // Coulomb friction coefficients of engineering pairs lie below about 1.5
 // (rubber on dry steel); 5 leaves room for a deliberately extreme case.
 constexpr double kMaxFriction = 5.0;
