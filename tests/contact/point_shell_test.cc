@@ -112,6 +112,24 @@ TEST(PointShell, ConvexSolidsHaveNormalsAwayFromTheCentroid) {
   }
 }
 
+// The size rule (kMaxShellPoints) is checked against this bound before any
+// shell is made: it must hold every shell it stands for, and be loose by no
+// more than the rounding of each band (one point a ring).
+TEST(PointShell, SizeBoundHoldsTheShellAndIsTight) {
+  for (const Case& c : Cases()) {
+    for (double s : kSpacings) {
+      const double n = static_cast<double>(MakePointShell(c.shape, s).size());
+      const double bound = PointShellSizeBound(c.shape, s);
+      EXPECT_GE(bound, n) << c.name << " at " << s;
+      EXPECT_LE(bound, 1.1 * n + 100) << c.name << " at " << s;
+    }
+  }
+  // A 10 m part at 10 um: counted in double, without making it or overflowing.
+  const Shape huge = MakeRevolvedProfile(Closed({{0, 0}, {10, 0}, {10, 10}, {0, 10}}));
+  EXPECT_GT(PointShellSizeBound(huge, 1e-5), 1e12);
+  EXPECT_TRUE(std::isfinite(PointShellSizeBound(huge, 1e-5)));
+}
+
 TEST(PointShell, PointCountGrowsFourfoldWhenSpacingHalves) {
   const Shape cylinder = Cases()[0].shape;
   std::size_t previous = 0;

@@ -84,6 +84,21 @@ TEST(MakeRims, CylinderHasItsTwoEndCircles) {
   EXPECT_EQ(MakeRims(Revolved({{0, 0}, {r, 0}, {r, h}, {0, h}}), 0.5e-3).size(), 2u * 126);
 }
 
+// The size rule (kMaxRimPoints) is checked against this bound before any rim
+// is made: it holds every rim it stands for (it counts concave and straight
+// vertices too), and is finite for a 10 m part at 10 um.
+TEST(RimSizeBound, HoldsTheRims) {
+  for (double s : {1e-3, 0.13e-3}) {
+    for (const geometry::Shape& shape :
+         {ChamferedBore(), ChamferedPeg(), geometry::Shape{Box{{0.04, 0.03, 0.0173}}}}) {
+      const double n = static_cast<double>(MakeRims(shape, s).size());
+      EXPECT_GE(RimSizeBound(shape, s), n) << s;
+      EXPECT_LE(RimSizeBound(shape, s), 2 * n + 10) << s;
+    }
+  }
+  EXPECT_GT(RimSizeBound(geometry::Shape{Box{{10, 10, 10}}}, 1e-5), 1e6);
+}
+
 TEST(MakeRims, ChamferedBoreHasFourCirclesAndNoneAtItsConcaveBottom) {
   // The peg_in_hole scene's bore block: outer bottom and top corners (90 deg),
   // the top face to chamfer and chamfer to wall circles (135 deg each); the

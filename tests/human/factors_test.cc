@@ -48,6 +48,10 @@ TEST(Angles, SightAndGlance) {
   EXPECT_NEAR(GlanceAngleDeg(p, p.eye + Eigen::Vector3d(0, 0, 0.5)), 180.0, 1e-9);
   // 45 degrees below level, ahead.
   EXPECT_NEAR(GlanceAngleDeg(p, p.eye + Eigen::Vector3d(0, 0.5, -0.5)), 45.0, 1e-9);
+  // A part centred on the eye has no sight line: both angles are 0 (this
+  // once aborted a trial, "angle of a zero vector").
+  EXPECT_EQ(GlanceAngleDeg(p, p.eye), 0.0);
+  EXPECT_EQ(SightAngleDeg(p, p.eye, Eigen::Vector3d(1, 0, 0)), 0.0);
 }
 
 TEST(ShoulderDistance, TheFartherShoulder) {

@@ -572,6 +572,73 @@ const BadCase kBadCases[] = {
      "/parameters/visibility/grid", "must be an integer", "2.5"},
     {"GridZero", [](json& d) { d["parameters"]["visibility"]["grid"] = 0; },
      "/parameters/visibility/grid", "must lie in [1, 1024]", "0"},
+
+    // Finite bounds the code can honour (issue 13): each of these once
+    // passed `check` and then aborted, hung or overflowed a trial.
+    {"OperatorFarAway", [](json& d) { d["operator"]["position"][0] = 1e308; },
+     "/operator/position/0", "must lie in [-100, 100]", "1e+308"},
+    {"PoseFarAway", [](json& d) { d["parts"][1]["target"]["position"][2] = -1e308; },
+     "/parts/1/target/position/2", "must lie in [-100, 100]", ""},
+    {"RotationHuge",
+     [](json& d) { d["parts"][1]["pose"]["rotation_xyz_deg"][0] = 1e20; },
+     "/parts/1/pose/rotation_xyz_deg/0", "must lie in [-360, 360]", ""},
+    {"GravityHuge", [](json& d) { d["gravity"] = {0.0, 0.0, -1e300}; }, "/gravity/2",
+     "must lie in [-100, 100]", ""},
+    {"DensityHuge", [](json& d) { d["parts"][1]["density"] = 1.7e308; }, "/parts/1/density",
+     "must lie in [1, 1e7]", ""},
+    {"DensityGivesAMassBeyondTheRule", [](json& d) { d["parts"][1]["density"] = 1.0; },
+     "/parts/1/density", "a part's mass lies in [1e-4, 10000] kg", ""},
+    {"MassGivesADensityBeyondTheRule",
+     [](json& d) {
+       d["parts"][1].erase("density");
+       d["parts"][1]["mass"] = 1e-4;  // the peg's 1.6e-5 m^3: 6.4 kg/m^3 is fine;
+       Profile(d, 1)[3][1] = 5.0;     // a 5 m peg of 0.1 g is not
+       Profile(d, 1)[4][1] = 5.0;
+     },
+     "/parts/1/mass", "a part's density lies in [1, 1e7] kg/m^3", ""},
+    {"FrictionHuge", [](json& d) { d["parts"][1]["friction"] = 50; }, "/parts/1/friction",
+     "must lie in [0, 5]", "50"},
+    {"GraspOutsideThePart", [](json& d) { d["parts"][1]["grasp"] = {0.0, 0.0, 0.5}; },
+     "/parts/1/grasp", "within its bounding sphere", ""},
+    {"ProfileBeyondTenMetres", [](json& d) { Profile(d, 1)[3][0] = 1e300; },
+     "/parts/1/geometry/profile/3", "lies beyond 10 m", ""},
+    {"ProfileTooSmall",
+     [](json& d) {
+       Profile(d, 1) = json::array({{0.0, 0.0}, {1e-6, 0.0}, {1e-6, 1e-6}, {0.0, 1e-6},
+                                    {0.0, 0.0}});
+     },
+     "/parts/1/geometry/profile", "encloses 1e-12 m^2; at least 1e-10 m^2", ""},
+    {"ProfileTooManyVertices",
+     [](json& d) {
+       json p = json::array({{0.0, 0.0}});
+       for (int k = 0; k <= 1000; ++k) p.push_back({0.005, 0.05 * k / 1000.0});
+       p.push_back({0.0, 0.05});
+       p.push_back({0.0, 0.0});
+       Profile(d, 1) = p;
+     },
+     "/parts/1/geometry/profile", "a profile has at most 1000 vertices", ""},
+    {"ContactShellTooFine",
+     [](json& d) { d["parameters"]["contact"]["shell_spacing"] = 1e-5; },
+     "/parameters/contact", "part 'peg': its contact shell at contact/shell_spacing 1e-05 m", ""},
+    {"RimsTooFine",
+     [](json& d) {
+       d["parameters"]["contact"]["model"] = "resolving";
+       d["parameters"]["contact"]["rim_spacing"] = 1e-5;
+       d["parts"][1]["geometry"] = {{"type", "box"}, {"size", {10.0, 10.0, 10.0}}};
+       d["parts"][1]["mass"] = 1e4;
+       d["parts"][1].erase("density");
+       d["parameters"]["contact"]["shell_spacing"] = 1.0;
+     },
+     "/parameters/contact", "its rims at contact/rim_spacing", ""},
+    {"BoxEdgeTooLong",
+     [](json& d) { d["parts"][1]["geometry"] = {{"type", "box"}, {"size", {20.0, 1.0, 1.0}}}; },
+     "/parts/1/geometry/size/0", "must lie in [1e-4, 10]", "20"},
+    {"ContactBlendSubnormal",
+     [](json& d) { d["parameters"]["guidance"]["contact_blend"] = 5e-324; },
+     "/parameters/guidance/contact_blend", "must lie in [1e-3, 1000]", ""},
+    {"DecisionIntervalTiny",
+     [](json& d) { d["parameters"]["simulation"]["decision_interval"] = 5e-324; },
+     "/parameters/simulation/decision_interval", "must lie in [1e-3, 10]", ""},
     {"UnknownIntegrator",
      [](json& d) { d["parameters"]["simulation"]["integrator"] = "Euler"; },
      "/parameters/simulation/integrator", "must be one of: RungeKuttaMerson",

@@ -414,6 +414,34 @@ TEST(Trial, DivergedIntegrationIsANumericalFailureNotACrash) {
   EXPECT_EQ(RunTrial(s, {1, 0}, {0, 0.0, false}).status, Status::kCompleted);
 }
 
+// The work budget (simulation/max_steps): a trial still running after that
+// many accepted steps ends as step_budget, a failure of the computation, with
+// finite numbers, under Simbody's steppers and CVODE alike; the same trial
+// with room to spare completes, bit for bit as without a budget.
+TEST(Trial, StepBudgetEndsATrialAsAClassifiedStatus) {
+  for (const char* integrator : {"RungeKuttaMerson", "CPodes", "CVODE"}) {
+    scene::Scene s = LoadExample("peg_in_hole.json");
+    s.params.simulation.integrator = integrator;
+    s.params.simulation.max_steps = 25;
+    const TrialResult r = RunTrial(s, {1, 0});
+    EXPECT_EQ(r.status, Status::kStepBudget) << integrator << ": " << r.detail;
+    EXPECT_TRUE(IsComputationFailure(r.status));
+    EXPECT_EQ(std::string(StatusName(r.status)), "step_budget");
+    EXPECT_NE(r.detail.find("25 accepted steps (simulation/max_steps)"), std::string::npos)
+        << r.detail;
+    EXPECT_EQ(r.counters.steps_taken, 25) << integrator;
+    EXPECT_GT(r.end_time, 0.0);
+    EXPECT_TRUE(std::isfinite(r.work) && r.final_row.position.allFinite()) << integrator;
+    s.params.simulation.max_steps = 1000000;
+    const TrialResult full = RunTrial(s, {1, 0});
+    EXPECT_EQ(full.status, Status::kCompleted) << integrator;
+    s.params.simulation.max_steps = static_cast<int>(full.counters.steps_taken) + 1;
+    const TrialResult tight = RunTrial(s, {1, 0});
+    EXPECT_EQ(tight.status, Status::kCompleted) << integrator;
+    EXPECT_EQ(tight.completion_time, full.completion_time) << integrator;
+  }
+}
+
 TEST(Trial, PegSinkingIntoTheBoreIsHiddenByIt) {
   // Table 1's piston rod: as the part nears its final position in the bore,
   // the bore hides it (V falls) and the vision coefficient eta = 1 - V f rises.

@@ -70,8 +70,10 @@ double PointShellSizeBound(const geometry::Shape& shape, double spacing) {
     for (std::size_t k = 0; k < v.size(); ++k) {
       const geometry::ProfilePoint a = v[k], b = v[(k + 1) % v.size()];
       if (a.r == 0.0 && b.r == 0.0) continue;
+      // Band i's ring has ceil(2 pi r_i / s) <= 2 pi r_i / s + 1 points, and
+      // the band radii r_i average (a.r + b.r) / 2 over the edge.
       n += DivisionsBound(std::hypot(b.r - a.r, b.z - a.z), spacing) *
-           DivisionsBound(2 * M_PI * std::max(a.r, b.r), spacing);
+           (1 + M_PI * (a.r + b.r) / spacing);
     }
     return n;
   }

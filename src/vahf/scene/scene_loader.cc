@@ -110,14 +110,15 @@ Part ReadPart(const JsonNode& node) {
     if (!(part.mass >= kMinMass && part.mass <= kMaxMass))
       density->Fail(fmt::format("gives a mass of {:.6g} kg ({:.6g} m^3 of it); a part's mass "
                                 "lies in [{}, {}] kg",
-                                part.mass, volume, kMinMass, kMaxMass));
+                                part.mass, volume, NumberText(kMinMass), NumberText(kMaxMass)));
   } else {
     part.mass = mass->InRange(kMinMass, kMaxMass);
     part.density = part.mass / volume;
     if (!(part.density >= kMinDensity && part.density <= kMaxDensity))
       mass->Fail(fmt::format("gives a density of {:.6g} kg/m^3 ({:.6g} m^3 of it); a part's "
                              "density lies in [{}, {}] kg/m^3",
-                             part.density, volume, kMinDensity, kMaxDensity));
+                             part.density, volume, NumberText(kMinDensity),
+                             NumberText(kMaxDensity)));
   }
   part.friction = node.Required("friction").InRange(0.0, kMaxFriction);
   part.grasp = part.mass_properties.centroid;
