@@ -1378,7 +1378,8 @@ def main(argv=None):
     ap.add_argument("--memory-mb", type=int, default=4096,
                     help="address-space limit of each vahf process, MiB (default 4096; 0 none)")
     ap.add_argument("--strict-check", action="store_true",
-                    help="count 'check accepts what trial rejects' cases as failures")
+                    help="count 'check accepts what trial rejects' cases, and any exit 1 of "
+                    "`vahf check`, as failures (tools/test runs with it)")
     ap.add_argument("--keep-all", action="store_true",
                     help="keep every mutant in OUT/tree, not only the failing ones")
     ap.add_argument("--list", action="store_true",
@@ -1483,6 +1484,11 @@ def main(argv=None):
                         sig = "%s: exit 1: %s" % (o.argv[1], mask(last or "(no vahf: line)",
                                                                   tree))
                         exit1.setdefault(sig, [0, m, o])[0] += 1
+                        # check computes nothing: its exit 1 is bad input
+                        # that escaped the rules (issue 13 wants exit 2).
+                        if a.strict_check and o.argv[1] == "check":
+                            failures.append((m, o, "check-exit-1"))
+                            failed = True
                 other = [x for x in err if x.strip() and not x.startswith("vahf: ")]
                 if other:
                     sig = "%s: exit %d: %s" % (o.argv[1], o.rc, mask(other[0].strip(), tree))

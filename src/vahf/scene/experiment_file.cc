@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <system_error>
 #include <optional>
 
 #include "vahf/core/error.h"
@@ -23,8 +24,16 @@ std::string ResolvePath(const JsonNode& node, const std::string& experiment_path
       relative.is_absolute()
           ? relative.string()
           : (std::filesystem::path(experiment_path).parent_path() / relative).string();
-  if (!std::filesystem::is_regular_file(resolved))
-    node.Fail(std::string("no ") + what + " file at " + resolved +
+  std::error_code error;  // e.g. a name longer than the file system allows
+  const bool found = std::filesystem::is_regular_file(resolved, error);
+  if (error && error != std::errc::no_such_file_or_directory)
+    node.Fail(fmt::format("cannot be a {} file's path: {}", what, error.message()));
+  // The path as the message shows it: a long one keeps both ends.
+  const std::string shown = resolved.size() <= 200 ? resolved
+                                                   : resolved.substr(0, 120) + "..." +
+                                                         resolved.substr(resolved.size() - 60);
+  if (!found)
+    node.Fail(std::string("no ") + what + " file at " + shown +
               " (a relative path is taken from the experiment file's folder)");
   return resolved;
 }

@@ -171,7 +171,8 @@ std::string Joined(const std::vector<std::string>& items) {
 }  // namespace
 
 nlohmann::json ReadJsonFile(const std::string& path) {
-  if (std::filesystem::is_directory(path))
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
     throw InputError(path, "", "", "is a directory, not a JSON file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "", "cannot open the file for reading");
