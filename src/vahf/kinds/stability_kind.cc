@@ -50,11 +50,9 @@ int RunStability(const scene::ExperimentFile& file, const RunContext& context) {
   h.seed = settings.seed;
   h.trials = 1;
   h.cycles_per_condition = "each case's seeds per integrator";
-  std::vector<std::string> integrations;
-  for (const scene::StabilityCase& c : file.stability.cases) {
+  for (const scene::StabilityCase& c : file.stability.cases)
     if (std::find(h.inputs.begin(), h.inputs.end(), c.scene_path) == h.inputs.end())
       h.inputs.push_back(c.scene_path);
-  }
   h.integration = fmt::format("per case and integrator, accuracy {:g} unless the case sets "
                               "it (stability_trials.csv)",
                               file.scene.params.simulation.accuracy);
