@@ -25,8 +25,10 @@ struct CycleResult {
   bool completed = false;      // every part of the sequence completed
   double time = 0;             // s: to the last completion, or to the failure
   double work = 0;             // A at the end, J (includes the initial work)
-  // A part's trial ended as a numerical failure: the cycle says nothing
-  // about the assembly and is left out of success rates (reported apart).
+  // A part's trial ended as a failure of the computation (numerical_failure
+  // or step_budget, sim::IsComputationFailure): the cycle says nothing about
+  // the assembly and is left out of success rates (reported apart, counted
+  // as numerical failures).
   bool numerical_failure = false;
   Warnings warnings;  // the sum of its part trials' records
 };
