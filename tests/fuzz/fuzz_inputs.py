@@ -1059,6 +1059,12 @@ CLI_VALUES = {
 }
 
 
+# The trials' work budget on the command line as well as in the bases
+# (--max-steps): a mutation that deletes a base's "simulation" object must not
+# give its trial vahf's default budget of 1e6 steps, minutes on a stiff scene.
+BUDGET = []
+
+
 def make_mutant(idx, seed, bases):
     rng = random.Random(seed * 1000003 + idx)
     cls = choose(rng, [(w, c) for c, w in CLASS_WEIGHTS])
@@ -1070,7 +1076,8 @@ def make_mutant(idx, seed, bases):
         data, m.mutations = serialize(rng, st, mutate_json(rng, st, n_mutations(rng)))
         m.main = "experiments/%s.json" % name
         m.files[m.main] = data
-        m.runs = [["check", "{main}"]] + [["trial", "{main}"] + v for v in trial_variants(rng)]
+        m.runs = [["check", "{main}"]] + [["trial", "{main}"] + v + BUDGET
+                                          for v in trial_variants(rng)]
     elif cls in ("experiment", "generator", "overrides"):
         if cls == "experiment":
             base = pick(rng, sorted(bases.experiments))
@@ -1144,7 +1151,7 @@ def make_mutant(idx, seed, bases):
             else:
                 args += [opt, val]
             m.mutations.append("option %s %r" % (opt, val))
-        m.runs = [["trial", "{main}"] + args]
+        m.runs = [["trial", "{main}"] + args + BUDGET]
     if not m.mutations:
         m.mutations = ["(none applied: the base as is)"]
     return m
@@ -1395,6 +1402,8 @@ def main(argv=None):
         ap.error("--only takes mutant numbers separated by commas, not %r" % a.only)
 
     bases = Bases(a.time_limit, a.max_steps)
+    if a.max_steps > 0:
+        BUDGET[:] = ["--set", "simulation/max_steps=%d" % a.max_steps]
     indices = ([int(x) for x in a.only.split(",")] if a.only is not None else
                list(range(a.first, a.first + a.files)))
 
