@@ -1431,6 +1431,11 @@ def main(argv=None):
             os.makedirs(os.path.dirname(p), exist_ok=True)
             with open(p, "wb") as fh:
                 fh.write(data)
+        # Only the names stay in memory: the data are on disk, and a run of
+        # 100 000 mutants (lab CSVs of up to 200 000 rows among them) would
+        # otherwise exceed the address-space limit this process shares
+        # with its children (--memory-mb).
+        m.files = dict.fromkeys(m.files)
         mutants.append(m)
     t_gen = time.monotonic() - t0
     if not a.quiet:

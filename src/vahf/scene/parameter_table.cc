@@ -162,8 +162,6 @@ void ReadParamValue(const ParamSpec& s, const JsonNode& v, Parameters* p) {
   }
 }
 
-std::string ParamRuleText(const ParamSpec& spec) { return RuleText(spec); }
-
 std::string ParamValueText(const ParamSpec& spec, const Parameters& p) {
   Parameters q = p;  // the accessors are the loader's, which writes through them
   if (spec.real) return fmt::format("{}", spec.real(q));

@@ -51,9 +51,6 @@ const ParamSpec* FindParam(const std::string& name);
 // reader of parameter values).
 void ReadParamValue(const ParamSpec& spec, const JsonNode& value, Parameters* p);
 
-// The rule as docs/parameters.md states it: "in (0, 1e6]", the names, ...
-std::string ParamRuleText(const ParamSpec& spec);
-
 // The value of a parameter in `p`, as text.
 std::string ParamValueText(const ParamSpec& spec, const Parameters& p);
 
