@@ -113,6 +113,15 @@ TEST(StabilityFile, APatchPointerMustNameAValueTheSceneHolds) {
   ExpectError(e, "/cases/0/patch/~1parts~17~1friction", "holds 2 elements; '7' names none");
   e["cases"][0]["patch"] = {{"parts/1/friction", 0.2}};
   ExpectError(e, "/cases/0/patch/parts~11~1friction", "starts with '/'");
+  e["cases"][0]["patch"] = {{"/parts/99999999999999999999999/friction", 0.2}};
+  ExpectError(e, "/cases/0/patch/~1parts~199999999999999999999999~1friction",
+              "holds 2 elements; '99999999999999999999999' names none");
+  e["cases"][0]["patch"] = {{"/parts/01/friction", 0.2}};
+  ExpectError(e, "/cases/0/patch/~1parts~101~1friction", "'01' names none");
+  e["cases"][0]["patch"] = {{"/parts/1/fr~2", 0.2}};
+  ExpectError(e, "/cases/0/patch/~1parts~11~1fr~02", "writes '~' as ~0");
+  e["cases"][0]["patch"] = {{"", 0.2}};
+  ExpectError(e, "/cases/0/patch/", "starts with '/'");
   e["cases"][0]["patch"] = {{"/name/x", 0.2}};
   ExpectError(e, "/cases/0/patch/~1name~1x", "/name is a string");
   e["cases"][0]["patch"] = {{"/parts/1", json::object()}, {"/parts/1/friction", 0.2}};

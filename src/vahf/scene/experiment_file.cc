@@ -1,14 +1,15 @@
 #include "vahf/scene/experiment_file.h"
 
 #include <fmt/format.h>
-
 #include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <system_error>
 #include <optional>
+#include <string>
+#include <system_error>
+#include <vector>
 
 #include "vahf/core/error.h"
 #include "vahf/scene/json_reader.h"
@@ -308,60 +309,52 @@ void ReadComparison(const JsonNode& root, const std::string& path, ExperimentFil
 
 namespace {
 
-// The value `pointer` (RFC 6901) names in `document`, or null when it names
-// none; `why` says which token fails and why. "" (the whole document) names
-// none: a patch changes a value inside the scene.
+// The value `pointer` (RFC 6901, parsed by nlohmann::json's json_pointer)
+// names in `document`, or null when it names none; `why` says which token
+// fails and why. "" (the whole document) names none: a patch changes a value
+// inside the scene.
 nlohmann::json* Resolve(nlohmann::json& document, const std::string& pointer,
                         std::string* why) {
-  if (pointer.empty() || pointer[0] != '/') {
-    *why = "a JSON pointer into the scene starts with '/' (RFC 6901), e.g. /parts/0/friction";
+  using Pointer = nlohmann::json::json_pointer;
+  Pointer target;
+  try {
+    target = Pointer(pointer);
+  } catch (const nlohmann::json::exception&) {
+    target = Pointer();
+  }
+  if (target.empty()) {
+    *why = "a JSON pointer into the scene starts with '/' and writes '~' as ~0 and '/' as ~1 "
+           "(RFC 6901), e.g. /parts/0/friction";
     return nullptr;
   }
-  nlohmann::json* at = &document;
-  std::string walked;
-  std::size_t start = 1;
-  for (;;) {
-    const std::size_t end = std::min(pointer.find('/', start), pointer.size());
-    const std::string raw = pointer.substr(start, end - start);
-    std::string token;
-    for (std::size_t k = 0; k < raw.size(); ++k) {
-      if (raw[k] != '~') {
-        token += raw[k];
-      } else if (k + 1 < raw.size() && (raw[k + 1] == '0' || raw[k + 1] == '1')) {
-        token += raw[++k] == '0' ? '~' : '/';
-      } else {
-        *why = "'~' in a JSON pointer is followed by 0 or 1 (RFC 6901)";
-        return nullptr;
-      }
+  const auto holds = [&](const Pointer& p) {
+    try {
+      return document.contains(p);
+    } catch (const nlohmann::json::exception&) {  // an array index beyond size_t
+      return false;
     }
-    const std::string where = walked.empty() ? "the scene's root" : walked;
-    if (at->is_object()) {
-      const auto it = at->find(token);
-      if (it == at->end()) {
-        *why = fmt::format("the scene has no '{}' at {}; a patch replaces a value the scene "
-                           "already holds",
-                           token, where);
-        return nullptr;
-      }
-      at = &*it;
-    } else if (at->is_array()) {
-      const bool digits = !token.empty() && token.size() < 10 &&
-                          token.find_first_not_of("0123456789") == std::string::npos &&
-                          (token.size() == 1 || token[0] != '0');
-      if (!digits || std::stoul(token) >= at->size()) {
-        *why = fmt::format("{} holds {} elements; '{}' names none of them", where, at->size(),
-                           token);
-        return nullptr;
-      }
-      at = &(*at)[std::stoul(token)];
-    } else {
-      *why = fmt::format("{} is a {}, not an object or an array", where, at->type_name());
-      return nullptr;
-    }
-    walked += "/" + raw;
-    if (end == pointer.size()) return at;
-    start = end + 1;
+  };
+  if (holds(target)) return &document.at(target);
+  // What fails: the first token past the longest prefix the document holds.
+  std::vector<std::string> tokens;
+  for (Pointer p = target; !p.empty(); p.pop_back()) tokens.push_back(p.back());
+  Pointer held;
+  while (holds(held / tokens.back())) {
+    held /= tokens.back();
+    tokens.pop_back();
   }
+  const nlohmann::json& at = document.at(held);
+  const std::string where = held.empty() ? "the scene's root" : held.to_string();
+  if (at.is_object())
+    *why = fmt::format("the scene has no '{}' at {}; a patch replaces a value the scene "
+                       "already holds",
+                       tokens.back(), where);
+  else if (at.is_array())
+    *why = fmt::format("{} holds {} elements; '{}' names none of them", where, at.size(),
+                       tokens.back());
+  else
+    *why = fmt::format("{} is a {}, not an object or an array", where, at.type_name());
+  return nullptr;
 }
 
 // Whether `where` (a scene pointer an error names) lies at or under `pointer`.
@@ -370,18 +363,11 @@ bool Under(const std::string& where, const std::string& pointer) {
          (where.size() == pointer.size() || where[pointer.size()] == '/');
 }
 
-// The scene of a case: its document patched, read by the scene loader, its
-// parameters overridden; a scene rule it breaks names the experiment file and
-// the case's pointer (the patch entry at fault, or the case).
-Scene CaseScene(const StabilityCase& c, const JsonNode& node, const std::string& integrator) {
-  nlohmann::json document = ReadJsonFile(c.scene_path);
+// The scene of a case, from its patched `document`: read by the scene loader,
+// its parameters overridden; a scene rule it breaks names the experiment file
+// and the case's pointer (the patch entry at fault, or the case).
+Scene CaseScene(const StabilityCase& c, const JsonNode& node, const nlohmann::json& document) {
   const std::optional<JsonNode> patch = node.Optional("patch");
-  for (const auto& [pointer, value] : c.patch) {
-    std::string why;
-    nlohmann::json* at = Resolve(document, pointer, &why);
-    VAHF_CHECK(at != nullptr, "a patch pointer the reader accepted: " + pointer);
-    *at = value;
-  }
   Scene scene;
   try {
     scene = ParseScene(document, c.scene_path);
@@ -397,6 +383,16 @@ Scene CaseScene(const StabilityCase& c, const JsonNode& node, const std::string&
   const std::optional<JsonNode> parameters = node.Optional("parameters");
   for (const auto& [name, value] : c.overrides)
     ReadParamValue(*FindParam(name), parameters->Required(name), &scene.params);
+  if (c.position >= static_cast<int>(scene.sequence.size()))
+    node.Required("position")
+        .Fail(fmt::format("the scene's sequence has {} part(s): positions 0 to {}",
+                          scene.sequence.size(), scene.sequence.size() - 1));
+  return scene;
+}
+
+// The case's scene under one of its integrators.
+Scene UnderIntegrator(const StabilityCase& c, const JsonNode& node, Scene scene,
+                      const std::string& integrator) {
   const nlohmann::json integrator_value = integrator;
   ReadParamValue(*FindParam("simulation/integrator"),
                  JsonNode(integrator_value, node.file(), node.path() + "/integrators"),
@@ -404,10 +400,6 @@ Scene CaseScene(const StabilityCase& c, const JsonNode& node, const std::string&
   const std::string violation = ParameterViolation(scene);
   if (!violation.empty())
     node.Fail("applied to scene '" + scene.name + "' (" + c.scene_path + "): " + violation);
-  if (c.position >= static_cast<int>(scene.sequence.size()))
-    node.Required("position")
-        .Fail(fmt::format("the scene's sequence has {} part(s): positions 0 to {}",
-                          scene.sequence.size(), scene.sequence.size() - 1));
   return scene;
 }
 
@@ -444,17 +436,19 @@ void ReadStability(const JsonNode& root, const std::string& path, ExperimentFile
     c.scene_path = ResolvePath(node.Required("scene"), path, "scene");
     if (auto position = node.Optional("position"))
       c.position = static_cast<int>(position->Integer(0, 1000));
+    nlohmann::json document = ReadJsonFile(c.scene_path);  // read once, patched in place
     if (auto patch = node.Optional("patch")) {
       if (!patch->json().is_object())
         patch->Fail("a patch is an object of JSON pointer into the scene -> value");
-      nlohmann::json document = ReadJsonFile(c.scene_path);
       for (const auto& item : patch->json().items()) {  // in key order
-        std::string why;
         const JsonNode entry = patch->Required(item.key());
-        if (!Resolve(document, item.key(), &why)) entry.Fail(why);
         for (const auto& [earlier, value] : c.patch)
           if (Under(item.key(), earlier))
             entry.Fail("lies inside " + earlier + ", which the same patch replaces");
+        std::string why;
+        nlohmann::json* at = Resolve(document, item.key(), &why);
+        if (at == nullptr) entry.Fail(why);
+        *at = item.value();
         c.patch.emplace_back(item.key(), item.value());
       }
     }
@@ -481,8 +475,9 @@ void ReadStability(const JsonNode& root, const std::string& path, ExperimentFile
       c.expect.push_back(name);
       c.expect_pointers.push_back(expect.At(j).path());
     }
+    const Scene scene = CaseScene(c, node, document);
     for (const std::string& integrator : c.integrators)
-      c.scenes.push_back(CaseScene(c, node, integrator));
+      c.scenes.push_back(UnderIntegrator(c, node, scene, integrator));
     d.cases.push_back(std::move(c));
   }
   e->scene_path = d.cases[0].scene_path;
