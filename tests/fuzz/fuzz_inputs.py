@@ -39,7 +39,8 @@ generator and runs vahf on every mutant:
             unless a mutation changes them (vahf's own budget, 1e6 steps,
             then bounds it).
   asserts   per run: exit status in {0, 1, 2}; not killed by a signal; not
-            timed out (--timeout, default 60 s per process); on exit 2, stderr
+            over its CPU limit (--timeout, default 120 s of CPU per process,
+            and 4x that plus 60 s of wall); on exit 2, stderr
             is exactly one line starting with "vahf: error: ".
   records   "check accepts what trial rejects": `check` says "valid scene"
             (exit 0) and `trial` exits 2. Issue 13 wants none; they are counted
@@ -924,6 +925,13 @@ def c_row(rng, name, text):
     return "\n".join(lines), "%s: %s" % (name, what)
 
 
+# The most text one mutation writes into a file. A long field (c_long_field:
+# 1e6 characters) repeated over 200 000 rows would be 200 GB, beyond the
+# address space this script shares with vahf (--memory-mb); 256 MiB is still
+# far above any lab file (seed 1: mutants 1740 and 27770 of 0-39 999 reach it).
+MAX_MUTANT_BYTES = 256 << 20
+
+
 def c_many_rows(rng, name, text):
     """Many rows: a big file (repetition numbers kept distinct where the file has them)."""
     lines, h = split_csv(text)
@@ -935,6 +943,7 @@ def c_many_rows(rng, name, text):
     out = lines[:h + 1]
     rep = header.index("repetition") if "repetition" in header else None
     tcol = header.index("time") if name.startswith("tracks") and "time" in header else None
+    size, capped = 0, False
     for k in range(n):
         f = list(rows[k % len(rows)])
         if rep is not None and rep < len(f):
@@ -942,7 +951,12 @@ def c_many_rows(rng, name, text):
         if tcol is not None and tcol < len(f):
             f[tcol] = repr(k * 0.001)
         out.append(write_row(f))
-    return "\n".join(out) + "\n", "%s: %d rows" % (name, n)
+        size += len(out[-1]) + 1
+        if size > MAX_MUTANT_BYTES:  # rows made long by an earlier mutation
+            n, capped = k + 1, True
+            break
+    return "\n".join(out) + "\n", "%s: %d rows%s" % (
+        name, n, " (capped at %d MiB)" % (MAX_MUTANT_BYTES >> 20) if capped else "")
 
 
 def c_long_field(rng, name, text):
@@ -1165,19 +1179,28 @@ class Outcome:
 
 
 def run_one(vahf, argv, timeout, cwd):
+    """Runs vahf with `timeout` seconds of CPU. A hang is judged on CPU time, so
+    that a loaded machine cannot turn a slow but bounded run into one:
+    RLIMIT_CPU, set by util-linux's prlimit (preexec_fn is unsafe under
+    threads), sends SIGXCPU at the limit and SIGKILL 5 s later. The wall
+    limit catches a process that hangs without using CPU."""
     o = Outcome()
     o.argv = [vahf] + argv
     o.signal = None
     o.timeout = False
+    cpu = max(1, math.ceil(timeout))
     t0 = time.monotonic()
     try:
-        p = subprocess.run(o.argv, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                           stderr=subprocess.PIPE, timeout=timeout, cwd=cwd)
+        p = subprocess.run(["prlimit", "--cpu=%d:%d" % (cpu, cpu + 5), "--"] + o.argv,
+                           stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                           stderr=subprocess.PIPE, timeout=4 * cpu + 60, cwd=cwd)
         o.rc, o.stdout, o.stderr = p.returncode, p.stdout, p.stderr
     except subprocess.TimeoutExpired as e:
         o.rc, o.timeout = None, True
         o.stdout, o.stderr = e.stdout or b"", e.stderr or b""
     o.seconds = time.monotonic() - t0
+    if o.rc in (-signal.SIGXCPU, -signal.SIGKILL):  # over the CPU limit
+        o.rc, o.timeout = None, True
     if o.rc is not None and o.rc < 0:
         o.signal = -o.rc
     o.problem = problem_of(o)
@@ -1370,10 +1393,11 @@ def main(argv=None):
     ap.add_argument("--out", help="output folder: the mutants' tree, failures/, summary.json "
                     "(default: a new folder under $TMPDIR); an existing one is cleared only if "
                     "an earlier run of this script made it")
-    ap.add_argument("--timeout", type=float, default=60.0,
-                    help="seconds per vahf process before it counts as hung (default 60: a "
-                    "trial's 20 000-step budget takes up to 23 s alone on the costliest "
-                    "mutants seen, the resolved peg's contact at about 1 ms a step)")
+    ap.add_argument("--timeout", type=float, default=120.0,
+                    help="seconds of CPU per vahf process before it counts as hung, or 4x "
+                    "that plus 60 s of wall (default 120: a trial's 20 000-step budget takes "
+                    "up to 82 s of CPU on the costliest mutant seen, seed 1 mutant 46634, "
+                    "a peg starting 29 mm inside a stiff wall at about 4 ms a step)")
     ap.add_argument("--jobs", type=int, default=1,
                     help="vahf processes run at once (default 1); results do not depend on it")
     ap.add_argument("--time-limit", type=float, default=1.0,
