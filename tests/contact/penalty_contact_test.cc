@@ -641,6 +641,10 @@ TEST(ContactModelBroadPhase, APegAgainstItsBoreWallIsQueriedOnlyNearTheWall) {
   std::printf("peg 55 um off the bore's axis: %d shell points touching, %llu queried of %zu\n",
               touching, static_cast<unsigned long long>(c.point_queries), model.shell().size());
   EXPECT_LT(c.point_queries, 3u * static_cast<unsigned>(touching));
+  // Each touching point's distance pass examines every surface edge of the
+  // bore's profile (6): the work the trial's contact test budget counts.
+  EXPECT_GE(c.edge_tests, 6u * static_cast<unsigned>(touching));
+  EXPECT_EQ(c.Tests(), c.point_queries + c.rim_queries + c.edge_tests);
 }
 
 TEST(ContactModelBroadPhase, RimsAwayFromTheMovingPartAreSkippedWhole) {

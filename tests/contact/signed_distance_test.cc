@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <iterator>
@@ -345,6 +346,38 @@ TEST(SignedDistanceBounds, AreTheSolidsBoundingBox) {
   EXPECT_FALSE(f.Penetration({0, 0, -1e-9}).has_value());
   EXPECT_FALSE(f.Penetration({0, 0, kH + 1e-9}).has_value());
   EXPECT_FALSE(f.Penetration({kR + 1e-9, 0, kH / 2}).has_value());
+}
+
+// The work a query reports (a trial's contact test budget counts it): the
+// edges of the point's slab that the crossing test examines and, for a point
+// inside, every surface edge of the distance pass; none for a point outside
+// the bounds or a box. The answer is the same with or without the count.
+TEST(SignedDistanceWork, PenetrationCountsTheEdgesItExamines) {
+  const SignedDistance f(Cylinder());  // 3 surface edges; 1 (the side) spans a height
+  auto edges = [](const SignedDistance& field, const Eigen::Vector3d& p) {
+    std::uint64_t n = 0;
+    const std::optional<Distance> counted = field.Penetration(p, &n);
+    const std::optional<Distance> plain = field.Penetration(p);
+    EXPECT_EQ(counted.has_value(), plain.has_value());
+    if (counted && plain) {
+      EXPECT_EQ(counted->distance, plain->distance);
+    }
+    return n;
+  };
+  EXPECT_EQ(edges(f, {0.005, 0, 0.025}), 4u);          // inside: 1 crossing + 3 edges
+  EXPECT_EQ(edges(f, {0.009, 0.009, 0.025}), 1u);      // in the bounds, outside: 1
+  EXPECT_EQ(edges(f, {0, 0, kH + 1e-3}), 0u);          // beyond the bounds: none
+  EXPECT_EQ(edges(SignedDistance(Box{kBoxSize}), {0, 0, 0}), 0u);
+  // A sawtooth side of n teeth: the distance pass examines every one of them.
+  std::vector<ProfilePoint> saw = {{0, 0}, {kR, 0}};
+  const int n = 200;
+  for (int i = 1; i < n; ++i) saw.push_back({kR + 0.0005 * (i % 2), kH * i / n});
+  saw.push_back({kR, kH});
+  saw.push_back({0, kH});
+  const SignedDistance teeth(MakeRevolvedProfile(Closed(saw)));
+  const std::uint64_t inside = edges(teeth, {0.005, 0, 0.0251});
+  EXPECT_GE(inside, static_cast<std::uint64_t>(n));
+  EXPECT_LT(edges(teeth, {0.0109, 0.0109, 0.0251}), 4u);  // outside: its slab's edge only
 }
 
 // ---------------------------------------------------------------- the first implementation

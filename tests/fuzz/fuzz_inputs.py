@@ -37,7 +37,9 @@ generator and runs vahf on every mutant:
             --max-steps (default 20000) before it is mutated, so a trial
             simulates at most that long and takes at most that many steps
             unless a mutation changes them (vahf's own budget, 1e6 steps,
-            then bounds it).
+            then bounds it). Each trial's command line also sets both
+            budgets: --max-steps and simulation/max_contact_tests to
+            --max-contact-tests (default 2e9), which bounds what a step costs.
   asserts   per run: exit status in {0, 1, 2}; not killed by a signal; not
             over its CPU limit (--timeout, default 120 s of CPU per process,
             and 4x that plus 60 s of wall); on exit 2, stderr
@@ -1397,8 +1399,9 @@ def main(argv=None):
                     help="seconds of CPU per vahf process before it counts as hung, or 4x "
                     "that plus 60 s of wall (default 120: a trial's 20 000-step budget takes "
                     "77-82 s of CPU on seed 1 mutant 46634, a peg starting 29 mm inside a "
-                    "stiff wall; mutant 48454 needs 133 s and is a known timeout, because a "
-                    "step budget does not bound a step's cost: tests/fuzz/FINDINGS.md)")
+                    "stiff wall; the contact test budget ends mutant 48454's wedged sawtooth "
+                    "peg, 133 s under the step budget alone, after about 14 s: "
+                    "tests/fuzz/FINDINGS.md)")
     ap.add_argument("--jobs", type=int, default=1,
                     help="vahf processes run at once (default 1); results do not depend on it")
     ap.add_argument("--time-limit", type=float, default=1.0,
@@ -1409,6 +1412,11 @@ def main(argv=None):
                     help="simulation/max_steps written into every scene base, the trials' work "
                     "budget (default 20000: the costliest base scene takes 16 000 steps for its "
                     "first part; 0 keeps vahf's default)")
+    ap.add_argument("--max-contact-tests", type=float, default=2e9,
+                    help="simulation/max_contact_tests set on every trial's command line, the "
+                    "other half of its work budget: a step's cost grows with the points in "
+                    "contact and a profile's vertices (default 2e9; vahf's is 3e10; "
+                    "0 keeps the scene's)")
     ap.add_argument("--memory-mb", type=int, default=4096,
                     help="address-space limit of each vahf process, MiB (default 4096; 0 none)")
     ap.add_argument("--strict-check", action="store_true",
@@ -1423,14 +1431,19 @@ def main(argv=None):
                     "gdb and report the backtrace's top frames (bt.txt in its failure folder)")
     ap.add_argument("--quiet", action="store_true", help="no progress lines")
     a = ap.parse_args(argv)
-    if a.files < 0 or a.jobs < 1 or a.timeout <= 0 or a.seed < 0 or a.first < 0:
-        ap.error("--files, --seed, --first >= 0; --jobs >= 1; --timeout > 0")
+    if (a.files < 0 or a.jobs < 1 or a.timeout <= 0 or a.seed < 0 or a.first < 0 or
+            not a.max_contact_tests >= 0):
+        ap.error("--files, --seed, --first, --max-contact-tests >= 0; --jobs >= 1; --timeout > 0")
     if a.only is not None and not re.fullmatch(r"\d+(,\d+)*", a.only):
         ap.error("--only takes mutant numbers separated by commas, not %r" % a.only)
 
     bases = Bases(a.time_limit, a.max_steps)
     if a.max_steps > 0:
         BUDGET[:] = ["--set", "simulation/max_steps=%d" % a.max_steps]
+    # On the command line only: written into the bases it would change every
+    # mutant drawn from them, and earlier soaks' mutant numbers with them.
+    if a.max_contact_tests > 0:
+        BUDGET += ["--set", "simulation/max_contact_tests=%.17g" % a.max_contact_tests]
     indices = ([int(x) for x in a.only.split(",")] if a.only is not None else
                list(range(a.first, a.first + a.files)))
 

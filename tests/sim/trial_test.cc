@@ -442,6 +442,39 @@ TEST(Trial, StepBudgetEndsATrialAsAClassifiedStatus) {
   }
 }
 
+// The other half of the work budget: contact tests, which bound a step's cost
+// where the step count does not (a many-vertex profile wedged in its bore,
+// tests/fuzz/FINDINGS.md). Where it ends is counted, so the same on any machine.
+TEST(Trial, ContactTestBudgetEndsATrialAsAClassifiedStatus) {
+  for (const char* integrator : {"RungeKuttaMerson", "CPodes", "CVODE"}) {
+    scene::Scene s = LoadExample("peg_in_hole.json");
+    s.params.simulation.integrator = integrator;
+    const TrialResult full = RunTrial(s, {1, 0});
+    ASSERT_EQ(full.status, Status::kCompleted) << integrator << ": " << full.detail;
+    ASSERT_GT(full.counters.contact_tests, full.counters.contact_point_queries) << integrator;
+    const double half = 0.5 * static_cast<double>(full.counters.contact_tests);
+    s.params.simulation.max_contact_tests = half;
+    const TrialResult r = RunTrial(s, {1, 0});
+    EXPECT_EQ(r.status, Status::kStepBudget) << integrator << ": " << r.detail;
+    EXPECT_TRUE(IsComputationFailure(r.status));
+    EXPECT_NE(r.detail.find("contact tests (simulation/max_contact_tests"), std::string::npos)
+        << r.detail;
+    EXPECT_GE(static_cast<double>(r.counters.contact_tests), half) << integrator;
+    EXPECT_LT(r.counters.contact_tests, full.counters.contact_tests) << integrator;
+    EXPECT_LT(r.counters.steps_taken, full.counters.steps_taken) << integrator;
+    EXPECT_TRUE(std::isfinite(r.work) && r.final_row.position.allFinite()) << integrator;
+    // The same budget, the same ending, to the step.
+    const TrialResult again = RunTrial(s, {1, 0});
+    EXPECT_EQ(again.counters.steps_taken, r.counters.steps_taken) << integrator;
+    EXPECT_EQ(again.end_time, r.end_time) << integrator;
+    // Just above what the trial takes: no effect.
+    s.params.simulation.max_contact_tests = static_cast<double>(full.counters.contact_tests) + 1;
+    const TrialResult loose = RunTrial(s, {1, 0});
+    EXPECT_EQ(loose.status, Status::kCompleted) << integrator;
+    EXPECT_EQ(loose.completion_time, full.completion_time) << integrator;
+  }
+}
+
 TEST(Trial, PegSinkingIntoTheBoreIsHiddenByIt) {
   // Table 1's piston rod: as the part nears its final position in the bore,
   // the bore hides it (V falls) and the vision coefficient eta = 1 - V f rises.

@@ -51,6 +51,16 @@ struct ContactCounters {
   std::uint64_t rims_skipped = 0;      // obstacles' rims wholly clear of the moving sphere
   std::uint64_t rim_queries = 0;       // rim points tested against the moving part
   std::uint64_t rim_blocks_skipped = 0;  // runs of rim points proven clear of it
+  // Profile edges the point and rim queries examined (SignedDistance::
+  // Penetration): their work beyond the count, which grows with a profile's
+  // vertices.
+  std::uint64_t edge_tests = 0;
+
+  // The narrow phase's elementary tests: every point and rim query and every
+  // edge they examined. What a trial's contact work budget counts
+  // (simulation/max_contact_tests): unlike the count of queries it tracks the
+  // CPU they take whatever the profiles.
+  std::uint64_t Tests() const { return point_queries + rim_queries + edge_tests; }
 };
 
 class ContactModel {

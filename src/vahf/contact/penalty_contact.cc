@@ -48,8 +48,10 @@ struct Hit {
 
 // The moving-part point p (part frame) against obstacle o's exact field.
 std::optional<Hit> MovingPointInside(const Obstacle& o, const Eigen::Isometry3d& moving_in_obstacle,
-                                     const RigidMotion& m, const Eigen::Vector3d& p) {
-  const std::optional<Distance> d = o.field.Penetration(moving_in_obstacle * p);
+                                     const RigidMotion& m, const Eigen::Vector3d& p,
+                                     ContactCounters& counters) {
+  const std::optional<Distance> d =
+      o.field.Penetration(moving_in_obstacle * p, &counters.edge_tests);
   if (!d || !(-d->distance > 0)) return std::nullopt;
   const Eigen::Vector3d r = m.pose.linear() * p;  // origin to point, world
   return Hit{-d->distance, o.pose.linear() * d->normal, r,
@@ -221,7 +223,8 @@ ContactForces PenaltyContact::DoEvaluate(const RigidMotion& m, ContactCounters& 
       for (std::size_t k = node.begin; k < node.end; ++k) {
         const ShellPoint& s = shell_[k];
         ++counters.point_queries;
-        const std::optional<Hit> h = MovingPointInside(o, moving_in_obstacle, m, s.position);
+        const std::optional<Hit> h =
+            MovingPointInside(o, moving_in_obstacle, m, s.position, counters);
         if (!h || !AddPoint(h->r, h->v, h->n, h->depth, false, s.area, mu, PointFrame::kMoving,
                             m.angular_velocity, &out, jacobian))
           continue;
@@ -250,7 +253,8 @@ void PenaltyContact::EvaluateMovingRims(std::size_t index, const RigidMotion& m,
     for (std::size_t k = block.begin; k < block.end; ++k) {
       const RimPoint& q = moving_rim_[k];
       ++counters.rim_queries;
-      const std::optional<Hit> h = MovingPointInside(o, moving_in_obstacle, m, q.position);
+      const std::optional<Hit> h =
+          MovingPointInside(o, moving_in_obstacle, m, q.position, counters);
       if (!h || !AddPoint(h->r, h->v, h->n, h->depth, true, q.length, mu, PointFrame::kMoving,
                           m.angular_velocity, out, jacobian))
         continue;
@@ -284,7 +288,7 @@ void PenaltyContact::EvaluateRims(std::size_t index, const RigidMotion& m, doubl
       const RimPoint& q = o.rim[k];
       ++counters.rim_queries;
       const Eigen::Vector3d p_m = obstacle_in_moving * q.position;
-      const std::optional<Distance> d = moving_field_.Penetration(p_m);
+      const std::optional<Distance> d = moving_field_.Penetration(p_m, &counters.edge_tests);
       if (!d) continue;
       const double depth = -d->distance;
       if (!(depth > 0)) continue;

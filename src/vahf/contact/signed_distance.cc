@@ -52,7 +52,7 @@ SignedDistance::SignedDistance(const geometry::Shape& shape) {
   upper_ = {r_max, r_max, z_max};
 }
 
-bool SignedDistance::InsidePolygon(double r, double z) const {
+bool SignedDistance::InsidePolygon(double r, double z, std::uint64_t* edges) const {
   // Crossing number along +r. Edges on the axis (r = 0) are never crossed by a
   // ray from r >= 0, so the surface edges suffice, and of those only the ones
   // spanning z: the edges of z's slab. Below the lowest end or at or above the
@@ -60,6 +60,7 @@ bool SignedDistance::InsidePolygon(double r, double z) const {
   const auto above = std::upper_bound(slab_z_.begin(), slab_z_.end(), z);
   if (above == slab_z_.begin() || above == slab_z_.end()) return false;
   const std::size_t k = static_cast<std::size_t>(above - slab_z_.begin()) - 1;
+  if (edges) *edges += slab_begin_[k + 1] - slab_begin_[k];
   bool inside = false;
   for (std::size_t j = slab_begin_[k]; j < slab_begin_[k + 1]; ++j) {
     const Crossing& c = crossings_[j];
@@ -77,11 +78,13 @@ bool SignedDistance::InBounds(const Eigen::Vector3d& p) const {
   return (p.array() > lower_.array()).all() && (p.array() < upper_.array()).all();
 }
 
-std::optional<Distance> SignedDistance::Penetration(const Eigen::Vector3d& p) const {
+std::optional<Distance> SignedDistance::Penetration(const Eigen::Vector3d& p,
+                                                    std::uint64_t* edges) const {
   if (!InBounds(p)) return std::nullopt;
   if (is_box_) return OfBox(p);
   const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
-  if (!InsidePolygon(r, p.z())) return std::nullopt;
+  if (!InsidePolygon(r, p.z(), edges)) return std::nullopt;
+  if (edges) *edges += surface_.size();
   return OfRevolution(p, r, true);
 }
 

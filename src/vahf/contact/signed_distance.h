@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -34,7 +35,11 @@ class SignedDistance {
   bool FartherThan(const Eigen::Vector3d& p, double radius) const;
   // The contact query: At(p) when p is strictly inside the solid, nothing
   // otherwise. One inside test and, only for points inside, one distance pass.
-  std::optional<Distance> Penetration(const Eigen::Vector3d& p) const;
+  // `edges`, when given, gains the number of profile edges the two examined:
+  // the query's work, which grows with the profile's vertices (a trial's work
+  // budget counts it, simulation/max_contact_tests).
+  std::optional<Distance> Penetration(const Eigen::Vector3d& p,
+                                      std::uint64_t* edges = nullptr) const;
   // True when no point p with (|p_xy|, p_z) in the box lies inside the solid
   // (a solid of revolution; a box answers false, it cannot tell): no surface
   // edge of the profile meets the closed box, and the box's centre is outside
@@ -65,7 +70,7 @@ class SignedDistance {
   // and the copy of its result cost about 5 % of the queries' time.
   inline Distance OfRevolution(const Eigen::Vector3d& p, double r, bool inside) const;
   Distance OfBox(const Eigen::Vector3d& p) const;
-  inline bool InsidePolygon(double r, double z) const;
+  inline bool InsidePolygon(double r, double z, std::uint64_t* edges = nullptr) const;
   bool InBounds(const Eigen::Vector3d& p) const;
 
   bool is_box_ = false;

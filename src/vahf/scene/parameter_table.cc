@@ -112,6 +112,7 @@ std::vector<ParamSpec> MakeTable() {
       {"simulation", "velocity_time_scale", "s", R::kClosed, 1e-6, 1e3, "CVODE: velocity tolerance = accuracy / this (m/s)", VAHF_REAL(simulation.velocity_time_scale)},
       {"simulation", "step_floor", "s", R::kClosed, 1e-15, 1, "an accepted step shorter than this is a warning", VAHF_REAL(simulation.step_floor)},
       {"simulation", "max_steps", "steps", R::kCount, 1, 1e9, "work budget: a trial still running after this many accepted steps ends as step_budget", nullptr, VAHF_COUNT(simulation.max_steps)},
+      {"simulation", "max_contact_tests", "tests", R::kClosed, 1, 1e15, "work budget: a trial still running after this many contact tests (point and rim queries and the profile edges they examine) ends as step_budget", VAHF_REAL(simulation.max_contact_tests)},
   };
   return t;
 }

@@ -62,6 +62,22 @@ struct SimulationParams {
   // 0.188 s; the cylinder's rod under CVODE, 15 394 for 0.827 s), so 1e6
   // holds any of them for 30 s of simulated time.
   int max_steps = 1000000;
+  // The other half of the work budget: the contact's elementary tests (point
+  // and rim queries and the profile edges they examine, ContactCounters::
+  // Tests). The step count alone does not bound a step's cost, which grows
+  // with the points in contact and a profile's vertices: a 104-vertex
+  // sawtooth peg wedged in its bore spends about 7 ms a step (tests/fuzz/
+  // FINDINGS.md, mutant 48454). A trial past this many tests ends as status
+  // step_budget too; counted, not timed, so that where it ends never depends
+  // on the machine. The default is max_steps times the most tests a step of
+  // any shipped configuration takes, so on those the step count ends a trial
+  // first and only a far costlier step meets this budget. Measured with
+  // `vahf trial --seed 1`: the cylinder's rod under the precision reference
+  // (RungeKuttaMerson 1e-8) 28 500 tests a step (6.9e8 for 24 267 steps),
+  // the peg's 18 900, the scenes' own settings 6600-8100; the wedged sawtooth
+  // peg 1.1e6, which the budget ends after about 27 000 steps (200 s of CPU
+  // at its 1.5e8 tests a CPU second).
+  double max_contact_tests = 3e10;
 };
 
 struct Parameters {

@@ -25,6 +25,15 @@ bool StepChecks::Accepted(double t, const contact::RigidMotion& m, double depth,
                         accepted_, t, t / static_cast<double>(accepted_))});
     return false;
   }
+  const double tests = static_cast<double>(c_.contact_counters.Tests());
+  if (tests >= c_.params().simulation.max_contact_tests) {
+    c_.End({Status::kStepBudget,
+            fmt::format("{} contact tests (simulation/max_contact_tests {:g}) at t = {} s "
+                        "after {} accepted steps, {:.0f} tests a step on average",
+                        c_.contact_counters.Tests(), c_.params().simulation.max_contact_tests, t,
+                        accepted_, tests / static_cast<double>(accepted_))});
+    return false;
+  }
   const double floor = c_.params().simulation.step_floor;
   if (++steps_since_restart_ > kProbingSteps && h > 0 && h < floor)
     c_.warnings.Count(WarningKind::kStepSizeFloor, t, [&] {

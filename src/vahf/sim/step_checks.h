@@ -2,7 +2,8 @@
 // decision 12), without Simbody: the state is finite and not diverging, the
 // contact depth is within the penetration bound, the step is above the floor,
 // the integrator's retries since the last step are counted, and the trial is
-// within its work budget (simulation/max_steps accepted steps).
+// within its work budget (simulation/max_steps accepted steps and
+// max_contact_tests contact tests).
 #pragma once
 
 #include <cstdint>

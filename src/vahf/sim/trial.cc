@@ -109,6 +109,7 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key, const TrialOpt
     const contact::ContactCounters& cc = c.contact_counters;
     counters.contact_evaluations = static_cast<std::int64_t>(cc.evaluations);
     counters.contact_point_queries = static_cast<std::int64_t>(cc.point_queries);
+    counters.contact_tests = static_cast<std::int64_t>(cc.Tests());
     counters.broad_phase_skips = static_cast<std::int64_t>(cc.pairs_skipped);
     counters.clusters_skipped = static_cast<std::int64_t>(cc.clusters_skipped);
   }

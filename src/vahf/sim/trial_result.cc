@@ -39,10 +39,10 @@ std::string TrialResult::BriefReport() const {
     out += fmt::format("linear solver: {} Jacobian evaluations, {} nonlinear convergence failures\n",
                        c.jacobian_evaluations, c.convergence_failures);
   out += fmt::format(
-      "contact: {} shell points, {} evaluations, {} point queries, {} clusters and {} "
-      "pairs skipped by the broad phase\n",
-      c.shell_points, c.contact_evaluations, c.contact_point_queries, c.clusters_skipped,
-      c.broad_phase_skips);
+      "contact: {} shell points, {} evaluations, {} point queries, {} tests, {} clusters "
+      "and {} pairs skipped by the broad phase\n",
+      c.shell_points, c.contact_evaluations, c.contact_point_queries, c.contact_tests,
+      c.clusters_skipped, c.broad_phase_skips);
   out += fmt::format("decisions: {}, rays cast: {}\n", c.decisions, c.rays_cast);
   if (penetration_bound > 0)
     out += fmt::format("penetration: deepest {:.3g} um, bound {:.3g} um ({:.3g} um radial clearance)\n",

@@ -23,7 +23,8 @@ enum class Status {
   kJammed,            // in contact with no progress for jam_time
   kNumericalFailure,  // NaN in the state or the integrator failed: a failure of
                       // the computation, never counted as a failed assembly
-  kStepBudget,        // simulation/max_steps accepted steps before any other
+  kStepBudget,        // the work budget (simulation/max_steps accepted steps or
+                      // max_contact_tests contact tests) spent before any other
                       // ending: a failure of the computation, like kNumericalFailure
 };
 
@@ -61,6 +62,7 @@ struct TrialCounters {
   std::int64_t convergence_failures = 0;
   std::int64_t contact_evaluations = 0;
   std::int64_t contact_point_queries = 0;
+  std::int64_t contact_tests = 0;  // queries and edges examined, ContactCounters::Tests
   std::int64_t broad_phase_skips = 0;
   std::int64_t clusters_skipped = 0;
   std::int64_t rays_cast = 0;
