@@ -1438,12 +1438,13 @@ def main(argv=None):
         ap.error("--only takes mutant numbers separated by commas, not %r" % a.only)
 
     bases = Bases(a.time_limit, a.max_steps)
+    BUDGET[:] = []
     if a.max_steps > 0:
-        BUDGET[:] = ["--set", "simulation/max_steps=%d" % a.max_steps]
+        BUDGET.extend(["--set", "simulation/max_steps=%d" % a.max_steps])
     # On the command line only: written into the bases it would change every
     # mutant drawn from them, and earlier soaks' mutant numbers with them.
     if a.max_contact_tests > 0:
-        BUDGET += ["--set", "simulation/max_contact_tests=%.17g" % a.max_contact_tests]
+        BUDGET.extend(["--set", "simulation/max_contact_tests=%.17g" % a.max_contact_tests])
     indices = ([int(x) for x in a.only.split(",")] if a.only is not None else
                list(range(a.first, a.first + a.files)))
 
