@@ -25,13 +25,14 @@ bool StepChecks::Accepted(double t, const contact::RigidMotion& m, double depth,
                         accepted_, t, t / static_cast<double>(accepted_))});
     return false;
   }
-  const double tests = static_cast<double>(c_.contact_counters.Tests());
-  if (tests >= c_.params().simulation.max_contact_tests) {
+  const std::uint64_t tests = c_.contact_counters.Tests();
+  const double test_budget = c_.params().simulation.max_contact_tests;
+  if (static_cast<double>(tests) >= test_budget) {
     c_.End({Status::kStepBudget,
             fmt::format("{} contact tests (simulation/max_contact_tests {:g}) at t = {} s "
                         "after {} accepted steps, {:.0f} tests a step on average",
-                        c_.contact_counters.Tests(), c_.params().simulation.max_contact_tests, t,
-                        accepted_, tests / static_cast<double>(accepted_))});
+                        tests, test_budget, t, accepted_,
+                        static_cast<double>(tests) / static_cast<double>(accepted_))});
     return false;
   }
   const double floor = c_.params().simulation.step_floor;
