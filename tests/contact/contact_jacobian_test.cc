@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "vahf/contact/penalty_contact.h"
+#include "vahf/contact/point_load.h"
 #include "vahf/contact/point_shell.h"
 #include "vahf/contact/rim.h"
 #include "vahf/contact/signed_distance.h"
@@ -208,14 +209,14 @@ TEST(ContactJacobian, LawSlopesAgreeWithDifferencesAndChangeNoBit) {
                          Point{50e-6, 49.99e-6, 0.2}, Point{50e-6, 49.9e-6, -1.0},
                          Point{0, 5e-6, -3.0}}) {
     p.barrier_depth = q.barrier;
-    PenaltyContact::Slopes s;
-    const double value = PenaltyContact::Pressure(p, q.depth, q.rate, &s);
-    EXPECT_EQ(value, PenaltyContact::Pressure(p, q.depth, q.rate));
+    LawSlopes s;
+    const double value = Pressure(p, q.depth, q.rate, &s);
+    EXPECT_EQ(value, Pressure(p, q.depth, q.rate));
     const double hx = 1e-12, hr = 1e-7;
-    const double dx = (PenaltyContact::Pressure(p, q.depth + hx, q.rate) -
-                       PenaltyContact::Pressure(p, q.depth - hx, q.rate)) / (2 * hx);
-    const double dr = (PenaltyContact::Pressure(p, q.depth, q.rate + hr) -
-                       PenaltyContact::Pressure(p, q.depth, q.rate - hr)) / (2 * hr);
+    const double dx = (Pressure(p, q.depth + hx, q.rate) -
+                       Pressure(p, q.depth - hx, q.rate)) / (2 * hx);
+    const double dr = (Pressure(p, q.depth, q.rate + hr) -
+                       Pressure(p, q.depth, q.rate - hr)) / (2 * hr);
     EXPECT_NEAR(s.depth, dx, 1e-6 * std::abs(dx) + 1e-3) << q.depth;
     EXPECT_NEAR(s.rate, dr, 1e-6 * std::abs(dr) + 1e-9) << q.depth;
     if (1 + p.dissipation * q.rate < 0) {

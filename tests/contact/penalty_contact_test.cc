@@ -16,6 +16,7 @@
 // rotated and shifted world. The rim law against closed forms is in
 // rim_test.cc.
 #include "vahf/contact/penalty_contact.h"
+#include "vahf/contact/point_load.h"
 
 #include <gtest/gtest.h>
 
@@ -71,23 +72,23 @@ PenaltyContact Model(const Shape& part, double spacing, std::vector<Obstacle> ob
 
 TEST(ContactPressure, ZeroWithoutPenetration) {
   const ContactParams p;
-  EXPECT_EQ(PenaltyContact::Pressure(p, 0.0, 0.0), 0.0);
-  EXPECT_EQ(PenaltyContact::Pressure(p, -1e-6, 0.0), 0.0);
-  EXPECT_EQ(PenaltyContact::Pressure(p, -1e-3, 10.0), 0.0);
-  EXPECT_EQ(PenaltyContact::Pressure(p, 0.0, 10.0), 0.0);
+  EXPECT_EQ(Pressure(p, 0.0, 0.0), 0.0);
+  EXPECT_EQ(Pressure(p, -1e-6, 0.0), 0.0);
+  EXPECT_EQ(Pressure(p, -1e-3, 10.0), 0.0);
+  EXPECT_EQ(Pressure(p, 0.0, 10.0), 0.0);
 }
 
 TEST(ContactPressure, QuadraticOnsetIsC1AtZero) {
   const ContactParams p;
   const double k = p.stiffness, x0 = p.onset_depth;
   for (double x : {1e-9, 1e-8, 1e-7, 5e-7, 0.999e-6})
-    EXPECT_NEAR(PenaltyContact::Pressure(p, x, 0.0), k * x * x / (2 * x0), 1e-12 * k * x0)
+    EXPECT_NEAR(Pressure(p, x, 0.0), k * x * x / (2 * x0), 1e-12 * k * x0)
         << x;
   // The value and the forward-difference slope both vanish as the depth does:
   // slope(h) = k h / x0 (1 + 1/2 from the difference) shrinks linearly with h.
   for (double h : {1e-8, 1e-10, 1e-12}) {
-    const double value = PenaltyContact::Pressure(p, h, 0.0);
-    const double slope = (PenaltyContact::Pressure(p, 2 * h, 0.0) - value) / h;
+    const double value = Pressure(p, h, 0.0);
+    const double slope = (Pressure(p, 2 * h, 0.0) - value) / h;
     EXPECT_NEAR(slope, 1.5 * k * h / x0, 1e-6 * k * h / x0) << h;
     EXPECT_LT(slope, 2 * k * h / x0) << h;
     EXPECT_LE(value, k * h * h / x0) << h;
@@ -97,34 +98,34 @@ TEST(ContactPressure, QuadraticOnsetIsC1AtZero) {
 TEST(ContactPressure, ContinuousWithSlopeKAtTheOnsetDepthAndLinearBeyond) {
   const ContactParams p;
   const double k = p.stiffness, x0 = p.onset_depth;
-  EXPECT_NEAR(PenaltyContact::Pressure(p, x0, 0.0), k * x0 / 2, 1e-9 * k * x0);
+  EXPECT_NEAR(Pressure(p, x0, 0.0), k * x0 / 2, 1e-9 * k * x0);
   const double h = 1e-12;
-  const double below = PenaltyContact::Pressure(p, x0 - h, 0.0);
-  const double above = PenaltyContact::Pressure(p, x0 + h, 0.0);
+  const double below = Pressure(p, x0 - h, 0.0);
+  const double above = Pressure(p, x0 + h, 0.0);
   EXPECT_NEAR(below, k * x0 / 2, 2 * k * h);  // continuous
   EXPECT_NEAR(above, k * x0 / 2, 2 * k * h);
   // One-sided slopes over 1 nm: k (1 - h / (2 x0)) on the left, k on the right.
   const double d = 1e-9;
-  const double at = PenaltyContact::Pressure(p, x0, 0.0);
-  EXPECT_NEAR((at - PenaltyContact::Pressure(p, x0 - d, 0.0)) / d, k, 1e-3 * k);
-  EXPECT_NEAR((PenaltyContact::Pressure(p, x0 + d, 0.0) - at) / d, k, 1e-6 * k);
+  const double at = Pressure(p, x0, 0.0);
+  EXPECT_NEAR((at - Pressure(p, x0 - d, 0.0)) / d, k, 1e-3 * k);
+  EXPECT_NEAR((Pressure(p, x0 + d, 0.0) - at) / d, k, 1e-6 * k);
   // Linear beyond, with slope k and offset x0 / 2.
   for (double x : {2e-6, 1e-5, 1e-4, 1e-3})
-    EXPECT_NEAR(PenaltyContact::Pressure(p, x, 0.0), k * (x - x0 / 2), 1e-12 * k * x) << x;
+    EXPECT_NEAR(Pressure(p, x, 0.0), k * (x - x0 / 2), 1e-12 * k * x) << x;
 }
 
 TEST(ContactPressure, HuntCrossleyFactorClampedAtZero) {
   ContactParams p;
   p.dissipation = 0.5;
   for (double x : {5e-7, 2e-5}) {
-    const double elastic = PenaltyContact::Pressure(p, x, 0.0);
+    const double elastic = Pressure(p, x, 0.0);
     for (double rate : {0.3, 1.0, 10.0, -0.3, -1.0, -1.9})
-      EXPECT_NEAR(PenaltyContact::Pressure(p, x, rate), elastic * (1 + 0.5 * rate),
+      EXPECT_NEAR(Pressure(p, x, rate), elastic * (1 + 0.5 * rate),
                   1e-12 * elastic)
           << "depth " << x << ", rate " << rate;
     // Separating faster than 1/c = 2 m/s: no pull, exactly zero.
     for (double rate : {-2.0, -2.5, -100.0})
-      EXPECT_EQ(PenaltyContact::Pressure(p, x, rate), 0.0) << "rate " << rate;
+      EXPECT_EQ(Pressure(p, x, rate), 0.0) << "rate " << rate;
   }
 }
 
@@ -138,20 +139,20 @@ TEST(ContactPressure, BarrierHardensTowardItsDepthAndLeavesAlongTheTangent) {
   barrier.barrier_depth = b;
   for (double x : {0.5e-6, 2e-6, 4e-6, 4.9e-6}) {
     const double s = 1.0 / (1.0 - x / b);
-    EXPECT_NEAR(PenaltyContact::Pressure(barrier, x, 0.0),
-                PenaltyContact::Pressure(plain, x, 0.0) * s * s,
-                1e-12 * PenaltyContact::Pressure(barrier, x, 0.0))
+    EXPECT_NEAR(Pressure(barrier, x, 0.0),
+                Pressure(plain, x, 0.0) * s * s,
+                1e-12 * Pressure(barrier, x, 0.0))
         << "depth " << x;
   }
-  const double xc = b * (1.0 - PenaltyContact::kBarrierReserve), h = 1e-15;
-  const double at = PenaltyContact::Pressure(barrier, xc, 0.0);
-  EXPECT_NEAR(PenaltyContact::Pressure(barrier, xc + h, 0.0), at, 1e-6 * at);  // continuous
-  const double slope_in = (at - PenaltyContact::Pressure(barrier, xc - 1e-12, 0.0)) / 1e-12;
-  const double slope_out = (PenaltyContact::Pressure(barrier, xc + 1e-12, 0.0) - at) / 1e-12;
+  const double xc = b * (1.0 - kBarrierReserve), h = 1e-15;
+  const double at = Pressure(barrier, xc, 0.0);
+  EXPECT_NEAR(Pressure(barrier, xc + h, 0.0), at, 1e-6 * at);  // continuous
+  const double slope_in = (at - Pressure(barrier, xc - 1e-12, 0.0)) / 1e-12;
+  const double slope_out = (Pressure(barrier, xc + 1e-12, 0.0) - at) / 1e-12;
   EXPECT_NEAR(slope_out, slope_in, 1e-2 * slope_in);  // C1 at xc
-  EXPECT_NEAR(PenaltyContact::Pressure(barrier, xc + 1e-9, 0.0), at + slope_out * 1e-9,
+  EXPECT_NEAR(Pressure(barrier, xc + 1e-9, 0.0), at + slope_out * 1e-9,
               1e-6 * at);  // linear beyond
-  EXPECT_GT(at, 1e5 * PenaltyContact::Pressure(plain, xc, 0.0));  // 1/eps^2 = 1e6 stiffer
+  EXPECT_GT(at, 1e5 * Pressure(plain, xc, 0.0));  // 1/eps^2 = 1e6 stiffer
 }
 
 // ---------------------------------------------------------------- flat box on a floor
@@ -173,7 +174,7 @@ TEST(ContactModelFlat, NormalForceIsPressureTimesArea) {
   RigidMotion m;
   m.pose = FlatPose(kDepth);
   const ContactForces f = model.Evaluate(m);
-  const double n = PenaltyContact::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  const double n = Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
   EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
   EXPECT_NEAR(f.normal_force.x(), 0.0, 1e-12 * n);
   EXPECT_NEAR(f.normal_force.y(), 0.0, 1e-12 * n);
@@ -186,7 +187,7 @@ TEST(ContactModelFlat, NormalForceIsPressureTimesArea) {
 }
 
 TEST(ContactModelFlat, ForceDoesNotDependOnShellSpacing) {
-  const double n = PenaltyContact::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  const double n = Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
   for (double s : {4e-3, 3e-3, 7e-4}) {
     RigidMotion m;
     m.pose = FlatPose(kDepth);
@@ -200,7 +201,7 @@ TEST(ContactModelFlat, HuntCrossleyDampingFromTheApproachSpeed) {
   RigidMotion m;
   m.pose = FlatPose(kDepth);
   m.velocity = {0, 0, -0.2};  // pressing in at 0.2 m/s: factor 1 + 0.5 * 0.2
-  const double n = PenaltyContact::Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  const double n = Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
   EXPECT_NEAR(model.Evaluate(m).normal_force.z() / n, 1.1, 1e-9);
   m.velocity = {0, 0, 3.0};  // separating faster than 1/c: no force at all
   const ContactForces f = model.Evaluate(m);
@@ -219,7 +220,7 @@ TEST(ContactModelFlat, SlidingFrictionIsMuTimesNormalAgainstTheSlip) {
     const Eigen::Vector3d dir(std::cos(angle), std::sin(angle), 0);
     m.velocity = 0.05 * dir;
     const ContactForces f = model.Evaluate(m);
-    const double n = PenaltyContact::Pressure(params, kDepth, 0.0) * kBottomArea;
+    const double n = Pressure(params, kDepth, 0.0) * kBottomArea;
     EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
     EXPECT_NEAR((f.friction_force - (-kMu * n * dir)).norm(), 0.0, 1e-9 * kMu * n)
         << "friction (" << f.friction_force.transpose() << ")";
@@ -234,7 +235,7 @@ TEST(ContactModelFlat, FrictionIsLinearInSlipBelowTheTransitionSpeed) {
   const PenaltyContact model = Model(Box{kPartSize}, 1e-3, {Floor()});
   const ContactParams params;
   const double vs = params.friction_transition_speed;
-  const double n = PenaltyContact::Pressure(params, kDepth, 0.0) * kBottomArea;
+  const double n = Pressure(params, kDepth, 0.0) * kBottomArea;
   const Eigen::Vector3d dir(0.6, -0.8, 0);
   for (double speed : {1e-5, 2e-4, 4e-4, 0.999e-3}) {
     RigidMotion m;
@@ -289,7 +290,7 @@ double ContinuumPegForce(const ContactParams& params, const TiltedContact& c) {
   for (int i = 0; i < n; ++i) {
     const double y = -r + (i + 0.5) * a / n;
     const double depth = kPegDepth - (y + r) * std::sin(kTilt);
-    cap += 2 * std::sqrt(r * r - y * y) * PenaltyContact::Pressure(params, depth, 0.0);
+    cap += 2 * std::sqrt(r * r - y * y) * Pressure(params, depth, 0.0);
   }
   cap *= a / n;
   auto q = [&](double x) {
@@ -421,7 +422,7 @@ TEST(ContactModelBroadPhase, ContactAtTheEdgeOfTheBoundingSpheresIsKept) {
   const ContactForces f = model.Evaluate(m, &counters);
   EXPECT_EQ(counters.pairs_skipped, 0u);
   EXPECT_EQ(f.points_in_contact, 10 * 10);
-  const double n = PenaltyContact::Pressure(ContactParams(), kDepth, 0.0) * 0.01 * 0.01;
+  const double n = Pressure(ContactParams(), kDepth, 0.0) * 0.01 * 0.01;
   EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
 }
 
@@ -456,7 +457,7 @@ TEST(ContactModelBroadPhase, ShellTreeCullsWithoutLosingAContactPoint) {
   for (const ShellPoint& p : shell) {
     const Distance d = floor.field.At(to_floor * p.position);
     if (!(d.distance < 0)) continue;
-    brute += PenaltyContact::Pressure(ContactParams(), -d.distance, 0.0) * p.area *
+    brute += Pressure(ContactParams(), -d.distance, 0.0) * p.area *
              (floor.pose.linear() * d.normal);
     ++touching;
   }
@@ -552,7 +553,7 @@ TEST(ContactModelBroadPhase, RimBlocksCullWithoutChangingABit) {
     const Eigen::Vector3d u = -(rotation * d.normal);
     const Eigen::Vector3d r = rotation * p_m;
     const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);
-    const double fn = PenaltyContact::LineLoad(params, -d.distance, -v.dot(u)) * q.length;
+    const double fn = LineLoad(params, -d.distance, -v.dot(u)) * q.length;
     if (!(fn > 0)) continue;
     const Eigen::Vector3d v_t = v - v.dot(u) * u;
     const Eigen::Vector3d ft =
@@ -632,7 +633,7 @@ TEST(ContactModelBroadPhase, APegAgainstItsBoreWallIsQueriedOnlyNearTheWall) {
   for (const ShellPoint& p : model.shell()) {
     const Distance d = bore.field.At(to_bore * p.position);
     if (!(d.distance < 0)) continue;
-    brute += PenaltyContact::Pressure(ContactParams(), -d.distance, 0.0) * p.area * d.normal;
+    brute += Pressure(ContactParams(), -d.distance, 0.0) * p.area * d.normal;
     ++touching;
   }
   ASSERT_GT(touching, 100);

@@ -1,20 +1,26 @@
 #include "vahf/contact/contact_registry.h"
 
+#include <variant>
+
+#include "vahf/contact/composite_contact.h"
 #include "vahf/contact/penalty_contact.h"
+#include "vahf/contact/revolved_contact.h"
 #include "vahf/core/error.h"
 
 namespace vahf::contact {
 namespace {
 
-// The penalty contact of penalty_contact.h; with rims: both ways.
-BuiltContact Penalty(const ContactSetup& s, const ContactParams& params, bool rims) {
+// The penalty contact of penalty_contact.h between the moving part and
+// `fixed`; with rims: both ways.
+BuiltContact Penalty(const ContactSetup& s, const std::vector<const ContactBody*>& fixed,
+                     const ContactParams& params, bool rims) {
   const auto rims_of = [&](const geometry::Shape& shape) {
     return rims ? MakeRims(shape, params.rim_spacing) : std::vector<RimPoint>{};
   };
   std::vector<Obstacle> obstacles;
-  for (const ContactBody& f : s.fixed)
-    obstacles.push_back({SignedDistance(*f.shape), f.pose, f.friction, f.bounding_radius,
-                         rims_of(*f.shape)});
+  for (const ContactBody* f : fixed)
+    obstacles.push_back({SignedDistance(*f->shape), f->pose, f->friction, f->bounding_radius,
+                         rims_of(*f->shape)});
   std::vector<ShellPoint> shell = MakePointShell(*s.moving.shape, params.shell_spacing);
   BuiltContact out;
   out.shell_points = static_cast<std::int64_t>(shell.size());
@@ -26,13 +32,19 @@ BuiltContact Penalty(const ContactSetup& s, const ContactParams& params, bool ri
   return out;
 }
 
-BuiltContact Shell(const ContactSetup& s) { return Penalty(s, s.params, false); }
+std::vector<const ContactBody*> All(const ContactSetup& s) {
+  std::vector<const ContactBody*> out;
+  for (const ContactBody& f : s.fixed) out.push_back(&f);
+  return out;
+}
+
+BuiltContact Shell(const ContactSetup& s) { return Penalty(s, All(s), s.params, false); }
 
 // docs/physics.md, Contact stiffness: the largest steady load F sinks a
 // fraction q of the bound b over a short edge l,
 //   line_stiffness = F / (l q b), stiffness = line_stiffness / l,
 // and the hardening barrier stands at b. No radial fit: the scene's values.
-BuiltContact Resolving(const ContactSetup& s) {
+ContactParams BoundRule(const ContactSetup& s) {
   ContactParams p = s.params;
   if (s.penetration_bound > 0) {
     p.barrier_depth = s.penetration_bound;  // the bound it is checked against
@@ -40,7 +52,48 @@ BuiltContact Resolving(const ContactSetup& s) {
     p.line_stiffness = s.steady_load / (l * p.rule_depth_fraction * s.penetration_bound);
     p.stiffness = p.line_stiffness / l;
   }
-  return Penalty(s, p, true);
+  return p;
+}
+
+const geometry::RevolvedProfile* Revolved(const ContactBody& b) {
+  return std::get_if<geometry::RevolvedProfile>(b.shape);
+}
+
+// The bound rule's law; the exact revolved contact (revolved_contact.h) for
+// every fixed part that is, like the moving part, a solid of revolution, and
+// the general path (sampled shell and rims both ways) for the others.
+BuiltContact Resolving(const ContactSetup& s) {
+  const ContactParams p = BoundRule(s);
+  const geometry::RevolvedProfile* moving = Revolved(s.moving);
+  std::vector<RevolvedContact::Solid> revolved;
+  std::vector<const ContactBody*> general;
+  for (const ContactBody& f : s.fixed) {
+    const geometry::RevolvedProfile* profile = moving ? Revolved(f) : nullptr;
+    if (profile)
+      revolved.push_back(RevolvedContact::Make(*profile, f.pose, f.friction, f.bounding_radius));
+    else
+      general.push_back(&f);
+  }
+  if (revolved.empty()) return Penalty(s, general, p, true);
+  BuiltContact out;
+  out.stiffness = p.stiffness;
+  out.line_stiffness = p.line_stiffness;
+  out.model = std::make_shared<RevolvedContact>(
+      RevolvedContact::Make(*moving, Eigen::Isometry3d::Identity(), s.moving.friction,
+                            s.moving.bounding_radius),
+      std::move(revolved), p);
+  if (general.empty()) return out;
+  BuiltContact rest = Penalty(s, general, p, true);
+  out.shell_points = rest.shell_points;
+  out.model = std::make_shared<CompositeContact>(
+      std::vector<std::shared_ptr<const ContactModel>>{out.model, rest.model});
+  return out;
+}
+
+// The general path of "resolving" for every pair, revolved or not: what the
+// exact revolved contact is checked against, and a comparison for users.
+BuiltContact ResolvingSampled(const ContactSetup& s) {
+  return Penalty(s, All(s), BoundRule(s), true);
 }
 
 }  // namespace
@@ -48,7 +101,12 @@ BuiltContact Resolving(const ContactSetup& s) {
 const std::vector<ContactModelEntry>& ContactModels() {
   static const std::vector<ContactModelEntry> models = {
       {"shell", "point shell vs static fields, given stiffness", Shell},
-      {"resolving", "rims both ways, stiffness by the bound rule, barrier", Resolving},
+      {"resolving",
+       "stiffness by the bound rule, barrier; exact rim arcs both ways for revolved pairs",
+       Resolving},
+      {"resolving_sampled",
+       "resolving's law on sampled shell and rims both ways for every pair (the check)",
+       ResolvingSampled},
   };
   return models;
 }

@@ -10,8 +10,6 @@
 namespace vahf::contact {
 namespace {
 
-double PairFriction(double a, double b) { return a + b > 0 ? 2 * a * b / (a + b) : 0.0; }
-
 // True when no point of a cluster (its sphere: centre c in the field's frame
 // and radius; its sector bound in its own frame, carried to the field's frame
 // by `to_field`) can be inside the solid: the sphere lies outside the solid's
@@ -121,76 +119,6 @@ void PenaltyContact::BuildTree(std::size_t begin, std::size_t end) {
   nodes_[index].escape = static_cast<std::uint32_t>(nodes_.size());
 }
 
-double PenaltyContact::Law(double k, double x0, double c, double b, double depth,
-                           double depth_rate, Slopes* slopes) {
-  if (slopes) *slopes = Slopes{};
-  if (!(depth > 0)) return 0.0;
-  // The C1 elastic law and its slope.
-  const auto e = [&](double x) { return x < x0 ? k * x * x / (2 * x0) : k * (x - 0.5 * x0); };
-  const auto de = [&](double x) { return x < x0 ? k * x / x0 : k; };
-  double elastic;
-  double slope = 0;  // d elastic / d depth, when asked for
-  if (!(b > 0)) {
-    elastic = e(depth);
-    if (slopes) slope = de(depth);
-  } else {
-    const double xc = b * (1.0 - kBarrierReserve);
-    const double x = std::min(depth, xc);
-    const double s = 1.0 / (1.0 - x / b);  // 1 / (1 - x / b)
-    elastic = e(x) * s * s;
-    if (depth > xc)  // along the tangent at xc: d/dx [e h] = e' h + e h', h' = 2 s^3 / b
-      elastic += (de(xc) * s * s + e(xc) * 2.0 * s * s * s / b) * (depth - xc);
-    // The same product rule at x; past xc, x = xc: the tangent's slope.
-    if (slopes) slope = de(x) * s * s + e(x) * 2.0 * s * s * s / b;
-  }
-  const double factor = 1.0 + c * depth_rate;  // Hunt and Crossley
-  if (slopes && factor > 0) *slopes = Slopes{slope * factor, elastic * c};
-  return elastic * std::max(0.0, factor);
-}
-
-double PenaltyContact::Pressure(const ContactParams& p, double depth, double depth_rate,
-                                Slopes* slopes) {
-  return Law(p.stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth, depth_rate,
-             slopes);
-}
-
-double PenaltyContact::LineLoad(const ContactParams& p, double depth, double depth_rate,
-                                Slopes* slopes) {
-  return Law(p.line_stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth,
-             depth_rate, slopes);
-}
-
-bool PenaltyContact::AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
-                              const Eigen::Vector3d& u, double fn, double mu,
-                              ContactForces* out) const {
-  if (!(fn > 0)) return false;
-  const Eigen::Vector3d v_t = v - v.dot(u) * u;
-  const double slip = v_t.norm();
-  const Eigen::Vector3d ft = -mu * fn / std::max(slip, params_.friction_transition_speed) * v_t;
-  out->normal_force += fn * u;
-  out->friction_force += ft;
-  out->torque += r.cross(fn * u + ft);
-  return true;
-}
-
-bool PenaltyContact::AddPoint(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
-                              const Eigen::Vector3d& u, double depth, bool line, double size,
-                              double mu, PointFrame frame, const Eigen::Vector3d& w,
-                              ContactForces* out, ContactJacobian* jacobian) const {
-  Slopes slopes;
-  Slopes* const asked = jacobian ? &slopes : nullptr;
-  const double depth_rate = -v.dot(u);
-  const double fn = (line ? LineLoad(params_, depth, depth_rate, asked)
-                          : Pressure(params_, depth, depth_rate, asked)) *
-                    size;
-  if (!AddContact(r, v, u, fn, mu, out)) return false;
-  if (jacobian)
-    AddPointJacobian({r, v, u, w, fn, slopes.depth * size, slopes.rate * size, mu,
-                      params_.friction_transition_speed, frame},
-                     jacobian);
-  return true;
-}
-
 ContactForces PenaltyContact::DoEvaluate(const RigidMotion& m, ContactCounters& counters,
                                          ContactJacobian* jacobian) const {
   ++counters.evaluations;
@@ -225,8 +153,9 @@ ContactForces PenaltyContact::DoEvaluate(const RigidMotion& m, ContactCounters& 
         ++counters.point_queries;
         const std::optional<Hit> h =
             MovingPointInside(o, moving_in_obstacle, m, s.position, counters);
-        if (!h || !AddPoint(h->r, h->v, h->n, h->depth, false, s.area, mu, PointFrame::kMoving,
-                            m.angular_velocity, &out, jacobian))
+        if (!h || !AddPointLoad(params_,
+                                {h->r, h->v, h->n, h->depth, false, s.area, mu, PointFrame::kMoving},
+                                m.angular_velocity, &out, jacobian))
           continue;
         ++out.points_in_contact;
         out.max_depth = std::max(out.max_depth, h->depth);
@@ -255,8 +184,9 @@ void PenaltyContact::EvaluateMovingRims(std::size_t index, const RigidMotion& m,
       ++counters.rim_queries;
       const std::optional<Hit> h =
           MovingPointInside(o, moving_in_obstacle, m, q.position, counters);
-      if (!h || !AddPoint(h->r, h->v, h->n, h->depth, true, q.length, mu, PointFrame::kMoving,
-                          m.angular_velocity, out, jacobian))
+      if (!h || !AddPointLoad(params_,
+                              {h->r, h->v, h->n, h->depth, true, q.length, mu, PointFrame::kMoving},
+                              m.angular_velocity, out, jacobian))
         continue;
       ++out->rim_points_in_contact;
       out->max_depth = std::max(out->max_depth, h->depth);
@@ -296,8 +226,8 @@ void PenaltyContact::EvaluateRims(std::size_t index, const RigidMotion& m, doubl
       const Eigen::Vector3d u = -(r_world_moving * d->normal);
       const Eigen::Vector3d r = r_world_moving * p_m;  // origin to point, world
       const Eigen::Vector3d v = m.velocity + m.angular_velocity.cross(r);  // its material
-      if (!AddPoint(r, v, u, depth, true, q.length, mu, PointFrame::kFixed, m.angular_velocity,
-                    out, jacobian))
+      if (!AddPointLoad(params_, {r, v, u, depth, true, q.length, mu, PointFrame::kFixed},
+                        m.angular_velocity, out, jacobian))
         continue;
       ++out->rim_points_in_contact;
       out->max_depth = std::max(out->max_depth, depth);

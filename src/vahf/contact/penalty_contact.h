@@ -5,28 +5,7 @@
 // C1 at contact onset with Hunt-Crossley dissipation, and regularised Coulomb
 // friction.
 //
-// Normal pressure at penetration depth x (m), rate xdot (m/s):
-//   e(x) = k x^2 / (2 x0)          for x < x0   (C1 onset: e(0) = e'(0) = 0)
-//   e(x) = k (x - x0 / 2)          for x >= x0  (linear, slope k)
-//   p(x) = e(x) / (1 - x / b)^2                 (hardening barrier at depth b)
-//   p    *= max(0, 1 + c xdot)                  (Hunt and Crossley, 1975)
-// The barrier makes the stiffness rise without bound as the depth nears b, so
-// the penetration stays below b under any load the integrator resolves: the
-// energy stored by the time x reaches b (1 - eps) grows like k b^2 / eps (an
-// inverse-square barrier in the spirit of incremental potential contact: M.
-// Li et al., ACM Trans. Graph. 39(4) 49, 2020). Past x_c = b (1 - eps),
-// eps = kBarrierReserve, the law continues along its tangent (C1), for a
-// trial step that overshoots. b = 0: no barrier, the law stays linear. A
-// trial sets b to the penetration bound (contact_params.h).
-// A rim point x deep inside the moving part carries the same law per metre of
-// edge with line_stiffness for k (N/m per m), times the length it stands for,
-// and pushes the moving part along minus its outward normal there; xdot is
-// then the moving material's velocity there along that normal.
-// Friction on each point (shell or rim) opposes the moving material's slip
-// velocity v_t there:
-//   f = -mu |f_n| v_t / max(|v_t|, v_s)        (Coulomb above v_s, linear below)
-// with the pair coefficient mu = 2 mu1 mu2 / (mu1 + mu2), the combination
-// Simbody's contact forces use (SimTK ContactMaterial, HuntCrossleyForce).
+// The law of each point, face or edge, is point_load.h's.
 #pragma once
 
 #include <Eigen/Core>
@@ -37,6 +16,7 @@
 #include "vahf/contact/contact_jacobian.h"
 #include "vahf/contact/contact_model.h"
 #include "vahf/contact/contact_params.h"
+#include "vahf/contact/point_load.h"
 #include "vahf/contact/point_shell.h"
 #include "vahf/contact/rim.h"
 #include "vahf/contact/sector_bound.h"
@@ -71,22 +51,8 @@ class PenaltyContact final : public ContactModel {
   const std::vector<ShellPoint>& shell() const { return shell_; }
   std::size_t obstacle_count() const { return obstacles_.size(); }
 
-  // A law's slopes: per metre of depth and per m/s of depth rate.
-  struct Slopes {
-    double depth = 0, rate = 0;
-  };
-  // The normal pressure law alone (for tests), Pa; with `slopes`, also its
-  // derivatives (the value the same bits).
-  static double Pressure(const ContactParams& params, double depth, double depth_rate,
-                         Slopes* slopes = nullptr);
-  // The rim's line law alone (for tests), N/m: Pressure with line_stiffness.
-  static double LineLoad(const ContactParams& params, double depth, double depth_rate,
-                         Slopes* slopes = nullptr);
   // Rim points per culling block (see RimBlock).
   static constexpr std::size_t kRimBlockSize = 32;
-  // The barrier's reserve eps: the law leaves the barrier for its tangent at
-  // depth b (1 - eps), where it is 1 / eps^2 = 1e6 times the linear law.
-  static constexpr double kBarrierReserve = 1e-3;
 
  protected:
   ContactForces DoEvaluate(const RigidMotion& motion, ContactCounters& counters,
@@ -133,22 +99,6 @@ class PenaltyContact final : public ContactModel {
   };
   static RimSet BuildRimSet(const std::vector<RimPoint>& rim);
 
-  // The law shared by faces and rims: stiffness k, onset x0, dissipation c;
-  // its slopes too when `slopes` is given.
-  static double Law(double k, double x0, double c, double barrier, double depth,
-                    double depth_rate, Slopes* slopes);
-  // Adds a normal force fn pushing the moving part along the world unit vector
-  // u at r (world, from its origin), and the friction against the moving
-  // material's velocity v there; false (nothing added) when fn is not positive.
-  bool AddContact(const Eigen::Vector3d& r, const Eigen::Vector3d& v,
-                  const Eigen::Vector3d& u, double fn, double mu,
-                  ContactForces* out) const;
-  // One point at `depth` with its face (area, Pressure) or line (length,
-  // LineLoad) law: AddContact and, with `jacobian`, its derivative
-  // (contact_jacobian.h; w the part's angular velocity).
-  bool AddPoint(const Eigen::Vector3d& r, const Eigen::Vector3d& v, const Eigen::Vector3d& u,
-                double depth, bool line, double size, double mu, PointFrame frame,
-                const Eigen::Vector3d& w, ContactForces* out, ContactJacobian* jacobian) const;
   // The moving part's rims against obstacle `index`'s field, with the moving
   // frame in the obstacle's and its meridian map (DoEvaluate's, for the shell).
   void EvaluateMovingRims(std::size_t index, const RigidMotion& motion,

@@ -12,24 +12,14 @@ int Samples(double length, double spacing) {
 
 void RevolutionRims(const geometry::RevolvedProfile& p, double spacing,
                     std::vector<RimPoint>* out) {
-  const auto& v = p.vertices;
-  const std::size_t n = v.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const geometry::ProfilePoint a = v[(k + n - 1) % n], b = v[k], c = v[(k + 1) % n];
-    if (!(b.r > 0)) continue;  // on the axis: no circle
-    // Turn from the incoming to the outgoing edge: positive (left) is convex
-    // for a counter-clockwise polygon; the interior angle is pi minus it.
-    const double in_r = b.r - a.r, in_z = b.z - a.z;
-    const double out_r = c.r - b.r, out_z = c.z - b.z;
-    const double turn =
-        std::atan2(in_r * out_z - in_z * out_r, in_r * out_r + in_z * out_z);
-    if (!(turn > kMinRimTurnRad)) continue;
-    const double circumference = 2 * M_PI * b.r;
+  for (const RimCircle& rim : RimCircles(p)) {
+    const double circumference = 2 * M_PI * rim.radius;
     const int count = Samples(circumference, spacing);
     const double length = circumference / count;
     for (int j = 0; j < count; ++j) {
       const double phi = 2 * M_PI * (j + 0.5) / count;
-      out->push_back({{b.r * std::cos(phi), b.r * std::sin(phi), b.z}, length});
+      out->push_back(
+          {{rim.radius * std::cos(phi), rim.radius * std::sin(phi), rim.height}, length});
     }
   }
 }
@@ -56,6 +46,24 @@ void BoxRims(const geometry::Box& box, double spacing, std::vector<RimPoint>* ou
 }
 
 }  // namespace
+
+std::vector<RimCircle> RimCircles(const geometry::RevolvedProfile& p) {
+  const auto& v = p.vertices;
+  const std::size_t n = v.size();
+  std::vector<RimCircle> out;
+  for (std::size_t k = 0; k < n; ++k) {
+    const geometry::ProfilePoint a = v[(k + n - 1) % n], b = v[k], c = v[(k + 1) % n];
+    if (!(b.r > 0)) continue;  // on the axis: no circle
+    // Turn from the incoming to the outgoing edge: positive (left) is convex
+    // for a counter-clockwise polygon; the interior angle is pi minus it.
+    const double in_r = b.r - a.r, in_z = b.z - a.z;
+    const double out_r = c.r - b.r, out_z = c.z - b.z;
+    const double turn =
+        std::atan2(in_r * out_z - in_z * out_r, in_r * out_r + in_z * out_z);
+    if (turn > kMinRimTurnRad) out.push_back({b.r, b.z});
+  }
+  return out;
+}
 
 double RimSizeBound(const geometry::Shape& shape, double spacing) {
   const auto count = [&](double length) { return std::max(1.0, std::ceil(length / spacing)); };

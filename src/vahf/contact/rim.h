@@ -27,6 +27,15 @@ struct RimPoint {
 // (a profile edge split in two) must give no rim at all.
 inline constexpr double kMinRimTurnRad = M_PI / 180.0;
 
+// A solid of revolution's convex edge: the circle of a profile vertex off the
+// axis whose interior angle is below 179 deg, in the part frame.
+struct RimCircle {
+  double radius;  // m, > 0
+  double height;  // z, m
+};
+// The convex edges of a profile, in its vertex order.
+std::vector<RimCircle> RimCircles(const geometry::RevolvedProfile& profile);
+
 // For a solid of revolution: each profile vertex off the axis (r > 0) whose
 // interior angle is below 179 deg gives a circle of n = ceil(2 pi r / spacing)
 // samples at azimuths 2 pi (j + 1/2) / n, each of length 2 pi r / n. Straight

@@ -88,10 +88,12 @@ std::optional<Distance> SignedDistance::Penetration(const Eigen::Vector3d& p,
   return OfRevolution(p, r, true);
 }
 
-Distance SignedDistance::At(const Eigen::Vector3d& p) const {
+Distance SignedDistance::At(const Eigen::Vector3d& p, std::uint64_t* edges) const {
   if (is_box_) return OfBox(p);
   const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
-  return OfRevolution(p, r, InsidePolygon(r, p.z()));
+  const bool inside = InsidePolygon(r, p.z(), edges);
+  if (edges) *edges += surface_.size();
+  return OfRevolution(p, r, inside);
 }
 
 bool SignedDistance::FartherThan(const Eigen::Vector3d& p, double radius) const {

@@ -26,8 +26,9 @@ class SignedDistance {
  public:
   explicit SignedDistance(const geometry::Shape& shape);
 
-  // Distance from p, in the shape's frame.
-  Distance At(const Eigen::Vector3d& p) const;
+  // Distance from p, in the shape's frame; `edges`, when given, gains the
+  // profile edges it examined (as Penetration's).
+  Distance At(const Eigen::Vector3d& p, std::uint64_t* edges = nullptr) const;
   // At(p).distance > radius, the same answer to the bit, without the normal
   // and, for a solid of revolution, without the remaining edges once one is
   // within radius: the broad phase's test (a sphere of that radius about p

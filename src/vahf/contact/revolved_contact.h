@@ -1,0 +1,78 @@
+// Exact contact between a moving solid of revolution and fixed solids of
+// revolution (docs/design.md decision 15; docs/physics.md, Contact): the
+// point_load.h line law of each convex edge (rim circle, rim.h) of either
+// part where it lies inside the other, integrated as a line load over the
+// arcs in contact (rim_arcs.h), both ways: the moving part's rims against
+// each fixed solid and each fixed part's rims against the moving solid.
+// While the parts are rigid, two faces meet only through the rims that end
+// them, so no face points are sampled: the cost of an evaluation is a few
+// dozen profile queries, whatever the fit.
+//
+// Each arc is split at its deepest point (rim_arcs.h, DeepestAngle) and each
+// side integrated by 4-point Gauss-Radau quadrature whose fixed node is the
+// deepest point, so that the hardening barrier there is felt in full (7
+// nodes an arc); a whole circle by the trapezoidal rule over kCircleNodes
+// points from its deepest point. A node stands for its weight's length of
+// rim, so the nodes' loads, friction and Jacobian are the general path's
+// (penalty_contact.h) at those points.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "vahf/contact/contact_model.h"
+#include "vahf/contact/contact_params.h"
+#include "vahf/contact/rim.h"
+#include "vahf/contact/rim_arcs.h"
+#include "vahf/contact/signed_distance.h"
+
+namespace vahf::contact {
+
+class RevolvedContact final : public ContactModel {
+ public:
+  // A solid of revolution: its profile's exact field, its convex edges, and
+  // (fixed parts) where it stands; its Coulomb coefficient and the radius of
+  // a sphere about its frame origin holding it.
+  struct Solid {
+    SignedDistance field;
+    std::vector<RimCircle> rims;
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // fixed parts: part frame in the world
+    double friction = 0;
+    double bounding_radius = 0;
+  };
+  static Solid Make(const geometry::RevolvedProfile& profile, const Eigen::Isometry3d& pose,
+                    double friction, double bounding_radius);
+
+  RevolvedContact(Solid moving, std::vector<Solid> fixed, const ContactParams& params);
+
+  static constexpr int kCircleNodes = 16;
+
+ protected:
+  ContactForces DoEvaluate(const RigidMotion& motion, ContactCounters& counters,
+                           ContactJacobian* jacobian) const override;
+
+ private:
+  // One rim of `rims` (in `rim_to_field`'s source frame) against `field`:
+  // `moving_rim` says whose rim it is (the point frame of contact_jacobian.h).
+  struct Pass {
+    const Solid& rims;
+    const Solid& field;
+    Eigen::Isometry3d rim_to_field;     // the rim part's frame in the field part's
+    Eigen::Matrix3d field_to_world;     // rotation of the field part's frame
+    Eigen::Isometry3d field_to_moving;  // the field part's frame in the moving part's
+    bool moving_rim;
+    double mu;
+  };
+  void EvaluatePass(const Pass& pass, const RigidMotion& m, ContactCounters& counters,
+                    ContactForces* out, ContactJacobian* jacobian) const;
+  // The line load of one arc of `circle` (in the field's frame).
+  void IntegrateArc(const Pass& pass, const PlacedCircle& circle, const Arc& arc,
+                    const RigidMotion& m, ContactCounters& counters, ContactForces* out,
+                    ContactJacobian* jacobian) const;
+
+  Solid moving_;
+  std::vector<Solid> fixed_;
+  ContactParams params_;
+};
+
+}  // namespace vahf::contact

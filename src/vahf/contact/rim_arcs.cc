@@ -1,0 +1,208 @@
+#include "vahf/contact/rim_arcs.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vahf::contact {
+namespace {
+
+constexpr int kSamples = 8;     // f's first samples around the circle
+constexpr int kMaxLevels = 6;   // halvings of an interval that may hold a dip
+constexpr int kMaxNewton = 40;  // iterations of a bracketed root solve
+
+// The circle's points, signed distances and their slopes along the angle.
+class CircleField {
+ public:
+  CircleField(const PlacedCircle& c, const SignedDistance& solid, std::uint64_t* queries,
+              std::uint64_t* edges)
+      : c_(c), solid_(solid), queries_(queries), edges_(edges) {}
+
+  struct Value {
+    double f;      // signed distance, m
+    double slope;  // df/dphi, m/rad
+  };
+  Value operator()(double phi) const {
+    const double cs = std::cos(phi), sn = std::sin(phi);
+    const Eigen::Vector3d p = c_.centre + c_.radius * (cs * c_.x + sn * c_.y);
+    ++*queries_;
+    const Distance d = solid_.At(p, edges_);
+    return {d.distance, c_.radius * d.normal.dot(cn_dot(cs, sn))};
+  }
+
+ private:
+  Eigen::Vector3d cn_dot(double cs, double sn) const { return cs * c_.y - sn * c_.x; }
+  const PlacedCircle& c_;
+  const SignedDistance& solid_;
+  std::uint64_t* queries_;
+  std::uint64_t* edges_;
+};
+
+struct Sample {
+  double phi;
+  CircleField::Value v;
+  bool inside() const { return v.f < 0; }
+};
+
+// The crossing in [a, b], whose ends are on opposite sides: Newton's method
+// kept inside the bracket, halving where a step would leave it.
+double Crossing(const CircleField& field, Sample a, Sample b) {
+  const double width = b.phi - a.phi;
+  double phi = a.phi - a.v.f * width / (b.v.f - a.v.f);  // the chord's root
+  for (int i = 0; i < kMaxNewton; ++i) {
+    const CircleField::Value v = field(phi);
+    if (v.f == 0) return phi;
+    if ((v.f < 0) == a.inside())
+      a = {phi, v};
+    else
+      b = {phi, v};
+    if (b.phi - a.phi < 1e-13 * width + 1e-15) break;
+    double next = v.slope != 0 ? phi - v.f / v.slope : a.phi;
+    if (!(next > a.phi && next < b.phi)) next = 0.5 * (a.phi + b.phi);
+    if (std::abs(next - phi) < 1e-14) return next;
+    phi = next;
+  }
+  return 0.5 * (a.phi + b.phi);
+}
+
+// Bounds on f's travel along the circle (rim_arcs.h).
+struct Bounds {
+  double slope;      // |df/dphi|, m/rad
+  double curvature;  // |d2f/dphi2| of a plane face's distance, m/rad^2
+};
+
+struct Scan {
+  Scan(const CircleField& f, Bounds b) : field(f), bounds(b) {}
+  const CircleField& field;
+  Bounds bounds;
+  double crossings[4 * kMaxArcs] = {};
+  int count = 0;
+  bool full = false;
+
+  void Add(double phi) {
+    if (count < 4 * kMaxArcs)
+      crossings[count++] = phi;
+    else
+      full = true;
+  }
+  // The crossings in (a, b], in order.
+  void Interval(const Sample& a, const Sample& b, int level) {
+    if (a.inside() != b.inside()) {
+      Add(Crossing(field, a, b));
+      return;
+    }
+    // f cannot leave its side and come back over the interval: by its
+    // slope bound, or by its curvature bound (f stays within w^2 / 8 of the
+    // chord, w the interval's width).
+    const double w = b.phi - a.phi;
+    const double fa = std::abs(a.v.f), fb = std::abs(b.v.f);
+    if (fa + fb > bounds.slope * w || std::min(fa, fb) > 0.125 * bounds.curvature * w * w)
+      return;
+    if (level >= kMaxLevels) return;  // a dip shallower than the bound: left out
+    const double mid = 0.5 * (a.phi + b.phi);
+    const Sample m{mid, field(mid)};
+    Interval(a, m, level + 1);
+    Interval(m, b, level + 1);
+  }
+};
+
+// Bounds on |d(r, z)/dphi| and |d2(r, z)/dphi2| along the circle (rim_arcs.h),
+// with e = P_xy - centre_xy, |e'|^2 - |e|^2 <= rho^2 sin^2(theta) and
+// r r'' = |e'|^2 - |e|^2 - centre_xy . e - r'^2.
+Bounds TravelBounds(const PlacedCircle& c, double r_min) {
+  const Eigen::Vector3d n = c.x.cross(c.y);
+  const double sin2 = std::max(0.0, 1.0 - n.z() * n.z());
+  const double rho = c.radius, off = c.centre.head<2>().norm();
+  double dr = rho, ddr = rho + off;
+  if (r_min > 0) {
+    dr = std::min(rho, (off * rho + 0.5 * rho * rho * sin2) / r_min);
+    ddr = std::min(ddr, (rho * rho * sin2 + off * rho + dr * dr) / r_min);
+  }
+  const double dz = rho * std::sqrt(sin2);  // |z'| and |z''| alike
+  return {1.01 * std::hypot(dr, dz) + 1e-12 * rho, 1.01 * std::hypot(ddr, dz) + 1e-12 * rho};
+}
+
+}  // namespace
+
+bool Arc::whole() const { return end - begin >= 2 * M_PI; }
+
+MeridianBox TraceBox(const PlacedCircle& c) {
+  const Eigen::Vector3d n = c.x.cross(c.y);
+  const double sin_tilt = std::sqrt(std::max(0.0, 1.0 - n.z() * n.z()));
+  const double rho = c.radius, off = c.centre.head<2>().norm();
+  const double margin = 1e-9 + 1e-12 * (rho + c.centre.norm());
+  return {std::max(0.0, rho * std::abs(n.z()) - off) - margin, rho + off + margin,
+          c.centre.z() - rho * sin_tilt - margin, c.centre.z() + rho * sin_tilt + margin};
+}
+
+int InsideArcs(const PlacedCircle& c, const SignedDistance& solid, Arc arcs[kMaxArcs],
+               std::uint64_t* queries, std::uint64_t* edges) {
+  const MeridianBox box = TraceBox(c);
+  if (solid.MeridianBoxClear(box)) return 0;
+  const CircleField field(c, solid, queries, edges);
+  Scan scan(field, TravelBounds(c, std::max(0.0, box.r_min)));
+  const double step = 2 * M_PI / kSamples;
+  const Sample first{0.0, field(0.0)};
+  Sample a = first;
+  for (int k = 1; k <= kSamples; ++k) {
+    const Sample b = k == kSamples ? Sample{2 * M_PI, first.v} : Sample{k * step, field(k * step)};
+    scan.Interval(a, b, 0);
+    a = b;
+  }
+  if (scan.count == 0) {
+    if (!first.inside()) return 0;
+    arcs[0] = {0.0, 2 * M_PI};
+    return 1;
+  }
+  // Crossings alternate sides; an odd count means one was left out: then
+  // every span between crossings is judged at its middle.
+  const double* x = scan.crossings;
+  const int n = scan.count;
+  int out = 0;
+  const auto add = [&](double begin, double end) {
+    if (out < kMaxArcs && end > begin) arcs[out++] = {begin, end};
+  };
+  if (n % 2 == 0 && !scan.full) {
+    // Inside at 0: the spans (x[n-1] - 2 pi, x[0]), (x[1], x[2]), ...;
+    // outside: (x[0], x[1]), (x[2], x[3]), ...
+    if (first.inside()) {
+      add(x[n - 1] - 2 * M_PI, x[0]);
+      for (int i = 1; i + 1 < n; i += 2) add(x[i], x[i + 1]);
+    } else {
+      for (int i = 0; i + 1 < n; i += 2) add(x[i], x[i + 1]);
+    }
+    return out;
+  }
+  for (int i = 0; i < n; ++i) {
+    const double begin = x[i], end = i + 1 < n ? x[i + 1] : x[0] + 2 * M_PI;
+    if (field(0.5 * (begin + end)).f < 0) add(begin, end);
+  }
+  return out;
+}
+
+double DeepestAngle(const PlacedCircle& c, const SignedDistance& solid, const Arc& arc,
+                    std::uint64_t* queries, std::uint64_t* edges) {
+  const CircleField field(c, solid, queries, edges);
+  double lo = arc.begin, hi = arc.end, x0 = 0.5 * (lo + hi);
+  if (arc.whole()) {
+    double least = field(x0).f;
+    for (int k = 1; k < kSamples; ++k) {
+      const double phi = arc.begin + 2 * M_PI * k / kSamples;
+      const double f = field(phi).f;
+      if (f < least) least = f, x0 = phi;
+    }
+    lo = x0 - M_PI / kSamples, hi = x0 + M_PI / kSamples;
+  }
+  const double width = hi - lo;
+  double s0 = field(x0).slope;
+  double x1 = std::clamp(x0 - std::copysign(0.01 * width, s0), lo, hi);
+  for (int i = 0; i < 8; ++i) {
+    const double s1 = field(x1).slope;
+    if (s1 == s0) break;
+    const double x2 = std::clamp(x1 - s1 * (x1 - x0) / (s1 - s0), lo, hi);
+    x0 = x1, s0 = s1, x1 = x2;
+    if (std::abs(x1 - x0) < 1e-12 * width) break;
+  }
+  return x1;
+}
+
+}  // namespace vahf::contact

@@ -1,0 +1,69 @@
+// A convex edge of one solid of revolution against another solid of
+// revolution (docs/design.md decision 15): the rim circle, placed in the
+// other solid's frame, meets the solid along arcs, found by a 1-D solve on
+// the circle's angle, and its line load is integrated over each arc by
+// Gauss-Legendre quadrature. What the exact revolved contact
+// (revolved_contact.h) is made of.
+//
+// The circle is P(phi) = centre + radius (x cos phi + y sin phi). The signed
+// distance f(phi) of P(phi) to the solid depends only on P's meridian
+// coordinates (r, z) = (|P_xy|, P_z), which move slowly along the circle when
+// the two axes nearly coincide: |dz/dphi| <= radius sin(theta) and
+// |dr/dphi| <= (|centre_xy| radius + radius^2 sin^2(theta) / 2) / r_min
+// (theta the tilt between the circle's axis and the solid's, r_min the least
+// radius of the circle's meridian trace), and f is 1-Lipschitz in (r, z). So
+// f is sampled at kSamples angles; an interval whose ends lie farther from
+// the surface than this bound lets f travel holds no crossing, an interval
+// whose ends have opposite signs holds one, found by Newton's method inside
+// the bracket (f' = n . P', n the surface normal), and any other interval is
+// halved, at most kMaxLevels times (below that an excursion into the solid
+// is shallower than the bound over the last interval, about 0.1 um at the
+// scenes' tilts, and is left out).
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+#include <cstdint>
+
+#include "vahf/contact/sector_bound.h"
+#include "vahf/contact/signed_distance.h"
+
+namespace vahf::contact {
+
+// A circle in the frame of the solid it is tested against.
+struct PlacedCircle {
+  Eigen::Vector3d centre;
+  Eigen::Vector3d x, y;  // orthonormal: the circle's own x and y axes
+  double radius = 0;     // m
+  Eigen::Vector3d At(double phi) const {
+    return centre + radius * (std::cos(phi) * x + std::sin(phi) * y);
+  }
+};
+
+// An arc of angles [begin, end], end > begin, end - begin <= 2 pi (a whole
+// circle when equal to it); begin may be negative.
+struct Arc {
+  double begin = 0, end = 0;
+  bool whole() const;
+};
+
+// The least box (r, z) holding the circle's meridian trace in the solid's
+// frame, widened by a margin far above the rounding of its sums.
+MeridianBox TraceBox(const PlacedCircle& c);
+
+inline constexpr int kMaxArcs = 8;
+
+// The arcs of the circle inside the solid, in increasing angle, at most
+// kMaxArcs (more are left out; two parts touch along at most a few). Adds the
+// signed-distance queries it made to *queries and the profile edges they
+// examined to *edges.
+int InsideArcs(const PlacedCircle& c, const SignedDistance& solid, Arc arcs[kMaxArcs],
+               std::uint64_t* queries, std::uint64_t* edges);
+
+// The angle of an arc's deepest point, the least signed distance: the secant
+// method on the distance's slope, from the arc's middle (a whole circle: from
+// the least of kSamples samples), kept inside the arc. Counts as InsideArcs.
+double DeepestAngle(const PlacedCircle& c, const SignedDistance& solid, const Arc& arc,
+                    std::uint64_t* queries, std::uint64_t* edges);
+
+}  // namespace vahf::contact
