@@ -3,7 +3,7 @@
 // - closed forms: the depth of a circle tilted in a cylindrical bore and on a
 //   45 deg cone (the bore's chamfer), at several tilts, and the load of a
 //   circle pressed uniformly into the cone (2 pi rho times the line law);
-// - the general path (penalty_contact.h, contact model "resolving_sampled")
+// - the general path (penalty_contact.h, contact model "resolving")
 //   with its rim spacing refined until it converges, over 1 000 random poses
 //   and motions of the peg near and inside its bore: the same line law,
 //   integrated by sampling instead of quadrature over exact arcs;

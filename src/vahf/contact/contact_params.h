@@ -61,6 +61,11 @@ struct ContactParams {
   //     sinks `rule_depth_fraction` of the bound b:
   //       line_stiffness = F / (l q b),  stiffness = line_stiffness / l,
   //     and impacts are the barrier's. Stiff: CPodes integrates it.
+  //   "revolved": resolving's law and stiffness; for a fixed part that is,
+  //     like the moving part, a solid of revolution, the exact rim arcs both
+  //     ways instead of sampled points (revolved_contact.h); the general path
+  //     for other pairs. Not yet the default of "resolving": its trials fail
+  //     more often at the chamfer impact (docs/physics.md, Contact).
   std::string model = "shell";
   // l of the rule, m: 2 mm of edge, a short arc of a rim in line contact.
   double rule_contact_length = 2e-3;

@@ -55,20 +55,24 @@ ContactParams BoundRule(const ContactSetup& s) {
   return p;
 }
 
-const geometry::RevolvedProfile* Revolved(const ContactBody& b) {
+const geometry::RevolvedProfile* ProfileOf(const ContactBody& b) {
   return std::get_if<geometry::RevolvedProfile>(b.shape);
 }
 
+// The bound rule's law on the general path: the moving shell and every
+// part's rims, sampled, both ways.
+BuiltContact Resolving(const ContactSetup& s) { return Penalty(s, All(s), BoundRule(s), true); }
+
 // The bound rule's law; the exact revolved contact (revolved_contact.h) for
 // every fixed part that is, like the moving part, a solid of revolution, and
-// the general path (sampled shell and rims both ways) for the others.
-BuiltContact Resolving(const ContactSetup& s) {
+// the general path for the others.
+BuiltContact Revolved(const ContactSetup& s) {
   const ContactParams p = BoundRule(s);
-  const geometry::RevolvedProfile* moving = Revolved(s.moving);
+  const geometry::RevolvedProfile* moving = ProfileOf(s.moving);
   std::vector<RevolvedContact::Solid> revolved;
   std::vector<const ContactBody*> general;
   for (const ContactBody& f : s.fixed) {
-    const geometry::RevolvedProfile* profile = moving ? Revolved(f) : nullptr;
+    const geometry::RevolvedProfile* profile = moving ? ProfileOf(f) : nullptr;
     if (profile)
       revolved.push_back(RevolvedContact::Make(*profile, f.pose, f.friction, f.bounding_radius));
     else
@@ -90,23 +94,13 @@ BuiltContact Resolving(const ContactSetup& s) {
   return out;
 }
 
-// The general path of "resolving" for every pair, revolved or not: what the
-// exact revolved contact is checked against, and a comparison for users.
-BuiltContact ResolvingSampled(const ContactSetup& s) {
-  return Penalty(s, All(s), BoundRule(s), true);
-}
-
 }  // namespace
 
 const std::vector<ContactModelEntry>& ContactModels() {
   static const std::vector<ContactModelEntry> models = {
       {"shell", "point shell vs static fields, given stiffness", Shell},
-      {"resolving",
-       "stiffness by the bound rule, barrier; exact rim arcs both ways for revolved pairs",
-       Resolving},
-      {"resolving_sampled",
-       "resolving's law on sampled shell and rims both ways for every pair (the check)",
-       ResolvingSampled},
+      {"resolving", "rims both ways, stiffness by the bound rule, barrier", Resolving},
+      {"revolved", "resolving's law on exact rim arcs both ways for revolved pairs", Revolved},
   };
   return models;
 }

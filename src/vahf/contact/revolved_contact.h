@@ -1,5 +1,5 @@
 // Exact contact between a moving solid of revolution and fixed solids of
-// revolution (docs/design.md decision 15; docs/physics.md, Contact): the
+// revolution (docs/design.md decision 14; docs/physics.md, Contact): the
 // point_load.h line law of each convex edge (rim circle, rim.h) of either
 // part where it lies inside the other, integrated as a line load over the
 // arcs in contact (rim_arcs.h), both ways: the moving part's rims against

@@ -1,5 +1,5 @@
 // A convex edge of one solid of revolution against another solid of
-// revolution (docs/design.md decision 15): the rim circle, placed in the
+// revolution (docs/design.md decision 14): the rim circle, placed in the
 // other solid's frame, meets the solid along arcs, found by a 1-D solve on
 // the circle's angle, and its line load is integrated over each arc by
 // Gauss-Legendre quadrature. What the exact revolved contact
