@@ -100,8 +100,19 @@ FORMATS = ["vahf-scene/1", "vahf-experiment/1", "vahf-lab/1", "vahf-overrides/1"
            "vahf-synthetic/1", "vahf-scene/2", "vahf-scene", "VAHF-SCENE/1", "", "scene"]
 KINDS = ["table1", "assembly_time", "human_factors_groups", "fatigue", "precision", "paper",
          "calibrate", "compare", "stability", "", "Table1"]
-INTEGRATORS = ["RungeKuttaMerson", "RungeKutta3", "RungeKuttaFeldberg", "CPodes", "Verlet",
-               "SemiExplicitEuler2", "FixedStep", "CVODE"]
+
+
+def stepper_names():
+    """The steppers' names as `vahf params` lists them in simulation/integrator's rule
+    (docs/parameters.md, its output): the registry's, src/vahf/scene/steppers.def."""
+    with open(os.path.join(REPO, "docs", "parameters.md"), encoding="utf-8") as f:
+        m = re.search(r"^\| `simulation/integrator` \| [^|]* \| ([^|]*) \|", f.read(), re.M)
+    if not m:
+        sys.exit("fuzz_inputs.py: docs/parameters.md has no simulation/integrator row")
+    return [name.strip() for name in m.group(1).split(",")]
+
+
+INTEGRATORS = stepper_names()
 ENUMS = {
     "role": ["base", "assembling", "assembled", "fixed", ""],
     "sex": ["male", "female", "unspecified", "other", ""],

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "support/free_fall.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/sim/trace_csv.h"
 #include "vahf/sim/trial.h"
@@ -33,28 +34,10 @@ TrialResult RunSeed1(const scene::Scene& s, int position = 0, double sample = 0.
 }
 
 TEST(CvodeStepper, FreeFallWithinItsTolerance) {
-  const nlohmann::json doc = {
-      {"format", "vahf-scene/1"},
-      {"name", "fall"},
-      {"operator",
-       {{"height", 1.75}, {"arm_length", 0.74}, {"position", {0.0, -0.35}}, {"facing_deg", 90}}},
-      {"parts",
-       {{{"name", "block"},
-         {"role", "assembling"},
-         {"geometry", {{"type", "box"}, {"size", {0.04, 0.04, 0.04}}}},
-         {"density", 2700},
-         {"friction", 0.2},
-         {"pose", {{"position", {0.0, 0.0, 1.0}}}},
-         {"target", {{"position", {0.0, 0.0, -5.0}}}}}}},
-      {"sequence", {"block"}},
-      {"parameters",
-       {{"guidance", {{"mode", "none"}}},
-        {"visibility", {{"mode", "off"}}},
-        {"simulation",
-         {{"time_limit", 0.5},
-          {"decision_interval", 0.05},
-          {"integrator", "CVODE"},
-          {"accuracy", 1e-10}}}}}};
+  const nlohmann::json doc = testing::FreeFallScene({{"time_limit", 0.5},
+                                                     {"decision_interval", 0.05},
+                                                     {"integrator", "CVODE"},
+                                                     {"accuracy", 1e-10}});
   const TrialResult r = RunTrial(scene::ParseScene(doc, "fall.json"), {1, 0});
   ASSERT_EQ(r.status, Status::kTimeout) << r.detail;
   ASSERT_EQ(r.trace.size(), 10u);

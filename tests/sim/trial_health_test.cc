@@ -10,8 +10,8 @@
 #include <cmath>
 #include <string>
 
-#include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
+#include "vahf/scene/stepper_catalogue.h"
 #include "vahf/sim/trace_csv.h"
 #include "vahf/sim/trial.h"
 
@@ -99,7 +99,7 @@ TEST(TrialHealth, AnEndingAtTheFirstDecisionReadsNoIntegratorCounters) {
   s.op.position = {0.0, -3.0};  // out of reach at the first decision
   // Every stepper: Simbody's integrators and CVODE (cvode_stepper.cc) end
   // the trial on different paths.
-  for (const std::string& integrator : scene::IntegratorNames()) {
+  for (const std::string& integrator : scene::StepperNames()) {
     SCOPED_TRACE(integrator);
     s.params.simulation.integrator = integrator;
     const TrialResult r = RunTrial(s, {1, 0});

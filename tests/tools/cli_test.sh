@@ -12,7 +12,7 @@
 # a value nested 100 000 deep (exit 2, one line);
 # a scene accuracy of 1 (exit 2);
 # `trial` ending unreachable at its first decision (exit 1, zero integrator
-# counts, one line on stderr);
+# counts, one line on stderr), under every stepper `vahf params` lists;
 # strict command-line numbers for `trial` and `run` (exit 2, one line);
 # `trial` on another kind of vahf file (exit 2, the kind named);
 # `--help`; and bad options (exit 2); `run`: the same results digest on 1 and
@@ -357,6 +357,8 @@ expect_status "trial with an unwritable trace path" 2
 expect_in "trial with an unwritable trace path" "$err" "no_such_dir/peg.csv"
 run trial "$scene" --seed 1 --integrator NoSuchIntegrator
 expect_status "trial with an unknown integrator" 2
+expect_in "trial with an unknown integrator" "$err" "--integrator: NoSuchIntegrator not in {RungeKuttaMerson,"
+expect_lines "trial with an unknown integrator" "$err" 1
 # --- trial --sample: dense rows with a trace; without one, or not positive: exit 2, one line.
 run trial "$scene" --seed 1 --trace "$tmp/sampled.csv" --sample 0.001
 expect_status "trial --sample 0.001" 0
@@ -398,6 +400,20 @@ expect_in "trial unreachable" "$err" "vahf: trial ended unreachable: "
 run trial "$unreachable" --seed 1 --integrator RungeKuttaMerson
 expect_status "trial unreachable (RungeKuttaMerson)" 1
 expect_in "trial unreachable (RungeKuttaMerson)" "$out" ": 0 steps taken, 0 attempted, 0 error-test failures, 0 realizations"
+# Every stepper of the registry, as `vahf params` lists them in
+# simulation/integrator's rule, is one of --integrator's choices.
+run params
+steppers=$(grep -F '| `simulation/integrator` |' "$out" | cut -d'|' -f4 | tr -d ' ' | tr ',' ' ')
+if [[ -n "$steppers" ]]; then
+  pass "params: simulation/integrator lists the steppers ($steppers)"
+else
+  fail "params: no steppers in simulation/integrator's rule"
+fi
+for stepper in $steppers; do
+  run trial "$unreachable" --seed 1 --integrator "$stepper"
+  expect_status "trial unreachable (--integrator $stepper)" 1
+  expect_in "trial unreachable (--integrator $stepper)" "$out" "integrator: $stepper at accuracy"
+done
 
 # --- trial and run: command-line numbers are read strictly (CLI11 once
 # wrapped --seed -1 to 2^64 - 1); a leading zero is decimal, not octal.

@@ -28,6 +28,7 @@
 #include "vahf/scene/overrides.h"
 #include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
+#include "vahf/scene/stepper_catalogue.h"
 #include "vahf/sim/trace_csv.h"
 #include "vahf/sim/trial.h"
 
@@ -285,7 +286,7 @@ int main(int argc, char** argv) {
   trial
       ->add_option("--integrator", trial_args.integrator,
                    "override simulation/integrator")
-      ->check(CLI::IsMember(vahf::scene::IntegratorNames()));
+      ->check(CLI::IsMember(vahf::scene::StepperNames()));
   trial->add_option("--accuracy", trial_args.accuracy,
                     "override simulation/accuracy (its rule: `vahf params`)");
   trial

@@ -15,6 +15,7 @@
 #include "vahf/scene/json_reader.h"
 #include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
+#include "vahf/scene/stepper_catalogue.h"
 
 namespace vahf::scene {
 
@@ -407,7 +408,7 @@ std::vector<std::string> ReadIntegrators(const JsonNode& list) {
   std::vector<std::string> out;
   const std::size_t n = list.ArraySize(1);
   for (std::size_t k = 0; k < n; ++k) {
-    const std::string name = list.At(k).Choice(IntegratorNames());
+    const std::string name = list.At(k).Choice(StepperNames());
     if (std::find(out.begin(), out.end(), name) != out.end())
       list.At(k).Fail("an integrator is listed once");
     out.push_back(name);

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "vahf/contact/contact_registry.h"
+#include "vahf/scene/stepper_catalogue.h"
 
 namespace vahf::scene {
 namespace {
@@ -27,14 +28,22 @@ std::string RuleText(const ParamSpec& s) {
   return "";
 }
 
-// "name: description; ..." of every registered contact model.
+// "name: description; ..." of a registry's entries, for the meaning of its choice.
+template <class Entries>
+std::string NamesAndDescriptions(const Entries& entries) {
+  std::string text;
+  for (const auto& e : entries)
+    text += fmt::format("{}{}: {}", text.empty() ? "" : "; ", e.name, e.description);
+  return text;
+}
+
 const std::string& ContactModelHelp() {
-  static const std::string help = [] {
-    std::string text;
-    for (const contact::ContactModelEntry& e : contact::ContactModels())
-      text += fmt::format("{}{}: {}", text.empty() ? "" : "; ", e.name, e.description);
-    return text;
-  }();
+  static const std::string help = NamesAndDescriptions(contact::ContactModels());
+  return help;
+}
+
+const std::string& StepperHelp() {
+  static const std::string help = NamesAndDescriptions(StepperCatalogue());
   return help;
 }
 
@@ -103,7 +112,7 @@ std::vector<ParamSpec> MakeTable() {
       {"simulation", "jam_time", "s", R::kClosed, 1e-3, 1e5, "in contact this long without progress: jammed", VAHF_REAL(simulation.jam_time)},
       {"simulation", "jam_progress", "m", R::kClosed, 1e-9, 1, "approach to the target that counts as progress", VAHF_REAL(simulation.jam_progress)},
       {"simulation", "divergence_speed", "m/s", R::kClosed, 1e-3, 1e5, "a part point faster than this: the integration diverged (numerical_failure)", VAHF_REAL(simulation.divergence_speed)},
-      {"simulation", "integrator", "-", R::kChoice, 0, 0, "Simbody integrator, or CVODE (SUNDIALS BDF, without Simbody)", nullptr, nullptr, VAHF_TEXT(simulation.integrator), IntegratorNames()},
+      {"simulation", "integrator", "-", R::kChoice, 0, 0, StepperHelp().c_str(), nullptr, nullptr, VAHF_TEXT(simulation.integrator), StepperNames()},
       // Simbody's Integrator::setAccuracy asserts 0 < accuracy < 1; below
       // 1e-12 a relative error test nears the rounding of double (2.2e-16)
       // times the state's size and the step size collapses.
@@ -122,13 +131,6 @@ std::vector<ParamSpec> MakeTable() {
 #undef VAHF_TEXT
 
 }  // namespace
-
-const std::vector<std::string>& IntegratorNames() {
-  static const std::vector<std::string> names = {
-      "RungeKuttaMerson", "RungeKutta3", "RungeKuttaFeldberg", "CPodes",
-      "Verlet",           "SemiExplicitEuler2", "FixedStep",          "CVODE"};
-  return names;
-}
 
 const std::vector<ParamSpec>& ParameterTable() {
   static const std::vector<ParamSpec> table = MakeTable();

@@ -57,7 +57,4 @@ std::string ParamValueText(const ParamSpec& spec, const Parameters& p);
 // A Markdown table of every parameter with its default.
 std::string ParameterTableMarkdown();
 
-// Integrator names a scene may choose.
-const std::vector<std::string>& IntegratorNames();
-
 }  // namespace vahf::scene

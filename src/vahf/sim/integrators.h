@@ -1,24 +1,39 @@
-// The Simbody integrators a trial may use, by name (scene parameter
-// simulation/integrator, or `vahf trial --integrator`).
+// Simbody's integrators, one factory each (their entries in scene/steppers.def):
+// the SimTK::Integrator the Simbody driver (trial.cc) steps between decisions,
+// set from the scene's simulation parameters. Internal to src/vahf/sim.
 #pragma once
 
 #include <memory>
-#include <string>
+
+#include "vahf/scene/parameters.h"
 
 namespace SimTK {
 class Integrator;
 class System;
 }  // namespace SimTK
 
-namespace vahf::sim {
+namespace vahf::sim::internal {
 
-// RungeKuttaMerson, RungeKutta3, RungeKuttaFeldberg (explicit, error
-// controlled); CPodes (BDF with Newton iteration: for stiff contact); Verlet,
-// SemiExplicitEuler2 (error controlled, for second-order systems); FixedStep
-// (Runge-Kutta-Merson with error control off, step `fixed_step`). `accuracy`
-// is the relative accuracy of the error-controlled ones.
-std::unique_ptr<SimTK::Integrator> MakeIntegrator(const std::string& name,
-                                                  const SimTK::System& system,
-                                                  double accuracy, double fixed_step);
+using IntegratorFactory = std::unique_ptr<SimTK::Integrator> (*)(
+    const SimTK::System& system, const scene::SimulationParams& settings);
 
-}  // namespace vahf::sim
+// Explicit and error controlled at relative accuracy settings.accuracy.
+std::unique_ptr<SimTK::Integrator> MakeRungeKuttaMerson(
+    const SimTK::System& system, const scene::SimulationParams& settings);
+std::unique_ptr<SimTK::Integrator> MakeRungeKutta3(
+    const SimTK::System& system, const scene::SimulationParams& settings);
+std::unique_ptr<SimTK::Integrator> MakeRungeKuttaFeldberg(
+    const SimTK::System& system, const scene::SimulationParams& settings);
+// BDF with Newton iteration (for stiff contact), at settings.accuracy.
+std::unique_ptr<SimTK::Integrator> MakeCPodes(const SimTK::System& system,
+                                              const scene::SimulationParams& settings);
+// Error controlled, for second-order systems, at settings.accuracy.
+std::unique_ptr<SimTK::Integrator> MakeVerlet(const SimTK::System& system,
+                                              const scene::SimulationParams& settings);
+std::unique_ptr<SimTK::Integrator> MakeSemiExplicitEuler2(
+    const SimTK::System& system, const scene::SimulationParams& settings);
+// Runge-Kutta-Merson with error control off, step settings.fixed_step.
+std::unique_ptr<SimTK::Integrator> MakeFixedStep(const SimTK::System& system,
+                                                 const scene::SimulationParams& settings);
+
+}  // namespace vahf::sim::internal

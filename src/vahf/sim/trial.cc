@@ -8,10 +8,9 @@
 
 #include "vahf/core/thread_cpu.h"
 #include "vahf/core/warnings.h"
-#include "vahf/sim/cvode_stepper.h"
-#include "vahf/sim/integrators.h"
 #include "vahf/sim/internal/trial_context.h"
 #include "vahf/sim/simbody_trial.h"
+#include "vahf/sim/stepper_registry.h"
 #include "vahf/sim/stepping.h"
 
 namespace vahf::sim {
@@ -19,19 +18,20 @@ namespace {
 
 using namespace internal;  // the trial context, its Simbody model, the stepping loop
 
-// Steps the trial through Simbody from its first decision to its end: the
-// time reached and the row at the end, the trial ending in numerical failure
-// if the integrator stops early or throws.
-double IntegrateWithSimbody(TrialContext& c, double sample_interval,
-                            std::optional<TraceRow>* final_row, TrialCounters* counters) {
+// The Simbody driver: steps the trial through Simbody with the stepper's
+// integrator from its first decision to its end: the time reached and the row
+// at the end, the trial ending in numerical failure if the integrator stops
+// early or throws.
+double IntegrateWithSimbody(IntegratorFactory make_integrator, TrialContext& c,
+                            double sample_interval, std::optional<TraceRow>* final_row,
+                            TrialCounters* counters) {
   SimbodyTrial t(c);  // makes the decision at t = 0
   if (c.ended) {      // ended at the first decision
     SimTK::State initial = t.initial_state();
     *final_row = t.FinalRow(initial);
     return 0.0;
   }
-  const auto& sim = c.params().simulation;
-  const auto integ = MakeIntegrator(sim.integrator, t.system(), sim.accuracy, sim.fixed_step);
+  const auto integ = make_integrator(t.system(), c.params().simulation);
   double end_time = 0;
   try {
     end_time = Integrate(t, *integ, sample_interval);
@@ -64,15 +64,14 @@ double IntegrateWithSimbody(TrialContext& c, double sample_interval,
   return end_time;
 }
 
-// A stepper: makes the decision at t = 0, then steps the trial to its end
-// (the contract of IntegrateWithCvode).
-using Stepper = double (*)(TrialContext& c, double sample_interval,
-                           std::optional<TraceRow>* final_row, TrialCounters* counters);
-
-// The stepper of an integrator name (scene::IntegratorNames): CVODE's own,
-// or Simbody's for its integrators.
-Stepper StepperFor(const std::string& integrator) {
-  return integrator == "CVODE" ? IntegrateWithCvode : IntegrateWithSimbody;
+// Runs the stepper: a Simbody one's integrator under the Simbody driver, or
+// one of the trial model's own right-hand side as its own driver.
+double RunStepper(const StepperEntry& stepper, TrialContext& c, double sample_interval,
+                  std::optional<TraceRow>* final_row, TrialCounters* counters) {
+  if (stepper.needs == scene::StepperNeeds::kSimbodySystem)
+    return IntegrateWithSimbody(stepper.make_integrator, c, sample_interval, final_row,
+                                counters);
+  return stepper.integrate(c, sample_interval, final_row, counters);
 }
 
 }  // namespace
@@ -88,8 +87,8 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key, const TrialOpt
   TrialResult result;
   TrialCounters counters;
   std::optional<TraceRow> final_row;
-  const double end_time = StepperFor(params.simulation.integrator)(
-      c, options.sample_interval, &final_row, &counters);
+  const double end_time = RunStepper(FindStepper(params.simulation.integrator), c,
+                                     options.sample_interval, &final_row, &counters);
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.cpu_seconds = ThreadCpuSeconds() - cpu_start;
