@@ -42,10 +42,11 @@ std::vector<RigidMotion> ContactStates(const vahf::sim::TrialModel& model) {
 
 void Evaluations(benchmark::State& state, const std::string& scene_file, int position,
                  const std::string& model_name) {
-  vahf::scene::Scene scene =
-      vahf::scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + scene_file);
+  vahf::scene::Scene scene = vahf::scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
+                                                    "/experiments/scenes/" + scene_file);
   scene.params.contact.model = "resolving";
-  scene.params.simulation.max_steps = 50000;  // the cylinder parts' trials may stall at impacts
+  scene.params.simulation.max_steps =
+      50000;  // the cylinder parts' trials may stall at impacts
   const auto states = ContactStates(*vahf::sim::BuildTrialModel(scene, position));
   scene.params.contact.model = model_name;
   const auto model = vahf::sim::BuildTrialModel(scene, position);
@@ -62,8 +63,8 @@ void Evaluations(benchmark::State& state, const std::string& scene_file, int pos
       const auto start = std::chrono::steady_clock::now();
       for (int i = 0; i < kRepeats; ++i)
         benchmark::DoNotOptimize(contact.Evaluate(states[k], nullptr, &j));
-      micros[k] = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() -
-                                                            start)
+      micros[k] = std::chrono::duration<double, std::micro>(
+                      std::chrono::steady_clock::now() - start)
                       .count() /
                   kRepeats;
     }
@@ -74,14 +75,14 @@ void Evaluations(benchmark::State& state, const std::string& scene_file, int pos
   state.counters["p90_us"] = micros[micros.size() * 9 / 10];
 }
 
-#define VAHF_CONTACT_CASE(name, file, position)                                           \
-  BENCHMARK_CAPTURE(Evaluations, name##_revolved, std::string(file), position,            \
-                    std::string("revolved"))                                              \
-      ->Unit(benchmark::kMillisecond)                                                     \
-      ->Iterations(1);                                                                    \
-  BENCHMARK_CAPTURE(Evaluations, name##_resolving, std::string(file), position,           \
-                    std::string("resolving"))                                             \
-      ->Unit(benchmark::kMillisecond)                                                     \
+#define VAHF_CONTACT_CASE(name, file, position)                                 \
+  BENCHMARK_CAPTURE(Evaluations, name##_revolved, std::string(file), position,  \
+                    std::string("revolved"))                                    \
+      ->Unit(benchmark::kMillisecond)                                           \
+      ->Iterations(1);                                                          \
+  BENCHMARK_CAPTURE(Evaluations, name##_resolving, std::string(file), position, \
+                    std::string("resolving"))                                   \
+      ->Unit(benchmark::kMillisecond)                                           \
       ->Iterations(1)
 
 VAHF_CONTACT_CASE(Peg, "peg_in_hole_resolved.json", 0);

@@ -36,7 +36,9 @@ using geometry::RevolvedProfile;
 using geometry::Shape;
 
 const RevolvedProfile& ProfileOf(const Shape& s) { return std::get<RevolvedProfile>(s); }
-double Radius(const Shape& s) { return geometry::ComputeMassProperties(s).bounding_radius; }
+double Radius(const Shape& s) {
+  return geometry::ComputeMassProperties(s).bounding_radius;
+}
 
 // The bound rule of the resolved peg scene: 5 um bound (10 % of its 50 um
 // clearance), a steady load of kLoad carried by 2 mm of edge at a quarter of
@@ -51,8 +53,8 @@ ContactParams RuleParams() {
   return p;
 }
 
-RevolvedContact Exact(const Shape& moving, const Shape& fixed, const Eigen::Isometry3d& at,
-                      const ContactParams& p) {
+RevolvedContact Exact(const Shape& moving, const Shape& fixed,
+                      const Eigen::Isometry3d& at, const ContactParams& p) {
   return RevolvedContact(
       RevolvedContact::Make(ProfileOf(moving), Eigen::Isometry3d::Identity(), 0.15,
                             Radius(moving)),
@@ -60,8 +62,9 @@ RevolvedContact Exact(const Shape& moving, const Shape& fixed, const Eigen::Isom
 }
 
 // The general path with rims both ways at `spacing` and no face points.
-PenaltyContact Sampled(const Shape& moving, const Shape& fixed, const Eigen::Isometry3d& at,
-                       const ContactParams& p, double spacing) {
+PenaltyContact Sampled(const Shape& moving, const Shape& fixed,
+                       const Eigen::Isometry3d& at, const ContactParams& p,
+                       double spacing) {
   return PenaltyContact({}, SignedDistance(moving), Radius(moving), 0.15,
                         {Obstacle{SignedDistance(fixed), at, 0.15, Radius(fixed),
                                   MakeRims(fixed, spacing)}},
@@ -88,16 +91,17 @@ Shape Disc(double rho) { return testing::Revolved({{0, 0}, {rho, 0}, {0, 0.005}}
 //   r_max^2 = rho^2 (1 - s^2) + (e + rho C s)^2.
 TEST(RevolvedContact, TiltedCircleInACylinderMatchesTheClosedForm) {
   const double rho = 0.01, Rb = 0.01005;
-  const Shape bore = testing::Revolved({{0, -0.05}, {0.03, -0.05}, {0.03, 0.0}, {Rb, 0.0},
-                                        {Rb, -0.04}, {0, -0.04}});
-  const RevolvedContact model = Exact(Disc(rho), bore, Eigen::Isometry3d::Identity(),
-                                      ContactParams());
+  const Shape bore = testing::Revolved(
+      {{0, -0.05}, {0.03, -0.05}, {0.03, 0.0}, {Rb, 0.0}, {Rb, -0.04}, {0, -0.04}});
+  const RevolvedContact model =
+      Exact(Disc(rho), bore, Eigen::Isometry3d::Identity(), ContactParams());
   for (double deg : {0.0, 0.5, 2.0, 5.0, 10.0}) {
     for (double e : {52e-6, 60e-6, 80e-6}) {
       const double theta = deg * M_PI / 180, C = std::cos(theta), S = std::sin(theta);
       // Tilted widening of the rim: keep it just past the wall.
       const double s = S > 0 ? std::min(1.0, C * e / (rho * S * S)) : 1.0;
-      const double r_max = std::sqrt(rho * rho * (1 - s * s) + std::pow(e + rho * C * s, 2));
+      const double r_max =
+          std::sqrt(rho * rho * (1 - s * s) + std::pow(e + rho * C * s, 2));
       RigidMotion m;
       m.pose = Pose({0, e, -0.02}, theta);
       const ContactForces f = model.Evaluate(m);
@@ -120,8 +124,8 @@ TEST(RevolvedContact, TiltedCircleInACylinderMatchesTheClosedForm) {
 TEST(RevolvedContact, TiltedCircleOnTheChamferMatchesTheClosedForm) {
   const Shape bore = testing::ChamferedBore();
   const double rho = 0.0105;
-  const RevolvedContact model = Exact(Disc(rho), bore, Eigen::Isometry3d::Identity(),
-                                      ContactParams());
+  const RevolvedContact model =
+      Exact(Disc(rho), bore, Eigen::Isometry3d::Identity(), ContactParams());
   for (double deg : {0.0, 0.5, 2.0, 5.0}) {
     for (double d : {0.5e-6, 2e-6, 10e-6}) {
       const double theta = deg * M_PI / 180, C = std::cos(theta), S = std::sin(theta);
@@ -169,9 +173,10 @@ RigidMotion RandomPegMotion(std::mt19937_64& rng) {
   const double a = pi2 * unit(rng), b = pi2 * unit(rng);
   const double e = 60e-6 * std::sqrt(unit(rng)), tilt = 3e-3 * unit(rng);
   RigidMotion m;
-  m.pose.linear() = Eigen::AngleAxisd(tilt, Vector3d(std::cos(b), std::sin(b), 0))
-                        .toRotationMatrix();
-  m.pose.translation() = Vector3d(e * std::cos(a), e * std::sin(a), 0.001 - 0.031 * unit(rng));
+  m.pose.linear() =
+      Eigen::AngleAxisd(tilt, Vector3d(std::cos(b), std::sin(b), 0)).toRotationMatrix();
+  m.pose.translation() =
+      Vector3d(e * std::cos(a), e * std::sin(a), 0.001 - 0.031 * unit(rng));
   const auto v = [&](double scale) {
     return Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5) * 2 * scale;
   };
@@ -216,7 +221,8 @@ Agreement Compare(const ContactModel& exact, const ContactModel& sampled, int po
     ++out.capped;
     if (difference / kLoad > out.worst)
       std::printf("  worst so far: pose %d (seed %llu), load %.3g N, depth %.3g um\n",
-                  out.poses, static_cast<unsigned long long>(seed), load, a.max_depth * 1e6);
+                  out.poses, static_cast<unsigned long long>(seed), load,
+                  a.max_depth * 1e6);
     out.worst = std::max(out.worst, difference / kLoad);
   }
   return out;
@@ -238,12 +244,14 @@ TEST(RevolvedContact, AgreesWithTheRefinedGeneralPathOverRandomPoses) {
   const double arm = Radius(peg);
   double coarsest = 0, finest = 0;
   for (double spacing : {0.5e-3, 0.1e-3, 0.02e-3}) {
-    const PenaltyContact sampled = Sampled(peg, bore, Eigen::Isometry3d::Identity(), p, spacing);
+    const PenaltyContact sampled =
+        Sampled(peg, bore, Eigen::Isometry3d::Identity(), p, spacing);
     const Agreement a = Compare(exact, sampled, 5000, kLoad, Seed(), arm);
-    std::printf("rim spacing %.2f mm: %d poses in contact within the bound, %d at loads up to "
-                "the steady load: largest difference %.3g %% of the steady load there; "
-                "%.3g %% of the load (or of the steady load if larger) over all\n",
-                spacing * 1e3, a.poses, a.capped, 100 * a.worst, 100 * a.relative);
+    std::printf(
+        "rim spacing %.2f mm: %d poses in contact within the bound, %d at loads up to "
+        "the steady load: largest difference %.3g %% of the steady load there; "
+        "%.3g %% of the load (or of the steady load if larger) over all\n",
+        spacing * 1e3, a.poses, a.capped, 100 * a.worst, 100 * a.relative);
     EXPECT_GT(a.capped, 1000);
     if (coarsest == 0) coarsest = a.worst;
     finest = a.worst;
@@ -270,7 +278,8 @@ Eigen::VectorXd Stacked(const ContactForces& f) {
 // 0.5 % and 0.25 %.
 TEST(RevolvedContact, AnalyticJacobianAgreesWithCentralDifferences) {
   const Shape peg = testing::ChamferedPeg(), bore = testing::ChamferedBore();
-  const RevolvedContact model = Exact(peg, bore, Eigen::Isometry3d::Identity(), RuleParams());
+  const RevolvedContact model =
+      Exact(peg, bore, Eigen::Isometry3d::Identity(), RuleParams());
   std::mt19937_64 rng(Seed());
   int checked = 0;
   while (checked < 40) {
@@ -278,8 +287,10 @@ TEST(RevolvedContact, AnalyticJacobianAgreesWithCentralDifferences) {
     ContactJacobian j;
     const ContactForces f = model.Evaluate(m, nullptr, &j);
     const double load = (f.normal_force + f.friction_force).norm();
-    if (!f.in_contact() || f.max_depth > kBound || load > kLoad || load < 0.05 * kLoad) continue;
-    if (checked % 2) m.velocity *= 1e-3, m.angular_velocity *= 1e-3;  // below the transition
+    if (!f.in_contact() || f.max_depth > kBound || load > kLoad || load < 0.05 * kLoad)
+      continue;
+    if (checked % 2)
+      m.velocity *= 1e-3, m.angular_velocity *= 1e-3;  // below the transition
     const ContactForces at = model.Evaluate(m, nullptr, &j);
     EXPECT_EQ(Stacked(at), Stacked(model.Evaluate(m)));  // asking for it changes no bit
     Eigen::MatrixXd analytic(9, 12);

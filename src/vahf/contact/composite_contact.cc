@@ -7,12 +7,14 @@ namespace vahf::contact {
 CompositeContact::CompositeContact(std::vector<std::shared_ptr<const ContactModel>> parts)
     : parts_(std::move(parts)) {}
 
-ContactForces CompositeContact::DoEvaluate(const RigidMotion& m, ContactCounters& counters,
+ContactForces CompositeContact::DoEvaluate(const RigidMotion& m,
+                                           ContactCounters& counters,
                                            ContactJacobian* jacobian) const {
   ContactForces out;
   ContactJacobian part_jacobian;
   for (const auto& part : parts_) {
-    const ContactForces f = part->Evaluate(m, &counters, jacobian ? &part_jacobian : nullptr);
+    const ContactForces f =
+        part->Evaluate(m, &counters, jacobian ? &part_jacobian : nullptr);
     out.normal_force += f.normal_force;
     out.friction_force += f.friction_force;
     out.torque += f.torque;
@@ -25,7 +27,8 @@ ContactForces CompositeContact::DoEvaluate(const RigidMotion& m, ContactCounters
       jacobian->torque += part_jacobian.torque;
     }
   }
-  if (!parts_.empty()) counters.evaluations -= parts_.size() - 1;  // one evaluation of the whole
+  if (!parts_.empty())
+    counters.evaluations -= parts_.size() - 1;  // one evaluation of the whole
   return out;
 }
 

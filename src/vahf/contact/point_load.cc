@@ -9,7 +9,9 @@ double NormalLaw(double k, double x0, double c, double b, double depth, double d
   if (slopes) *slopes = LawSlopes{};
   if (!(depth > 0)) return 0.0;
   // The C1 elastic law and its slope.
-  const auto e = [&](double x) { return x < x0 ? k * x * x / (2 * x0) : k * (x - 0.5 * x0); };
+  const auto e = [&](double x) {
+    return x < x0 ? k * x * x / (2 * x0) : k * (x - 0.5 * x0);
+  };
   const auto de = [&](double x) { return x < x0 ? k * x / x0 : k; };
   double elastic;
   double slope = 0;  // d elastic / d depth, when asked for
@@ -31,20 +33,23 @@ double NormalLaw(double k, double x0, double c, double b, double depth, double d
   return elastic * std::max(0.0, factor);
 }
 
-double Pressure(const ContactParams& p, double depth, double depth_rate, LawSlopes* slopes) {
+double Pressure(const ContactParams& p, double depth, double depth_rate,
+                LawSlopes* slopes) {
   return NormalLaw(p.stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth,
                    depth_rate, slopes);
 }
 
-double LineLoad(const ContactParams& p, double depth, double depth_rate, LawSlopes* slopes) {
+double LineLoad(const ContactParams& p, double depth, double depth_rate,
+                LawSlopes* slopes) {
   return NormalLaw(p.line_stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth,
                    depth_rate, slopes);
 }
 
 double PairFriction(double a, double b) { return a + b > 0 ? 2 * a * b / (a + b) : 0.0; }
 
-bool AddPointLoad(const ContactParams& params, const PointLoad& p, const Eigen::Vector3d& w,
-                  ContactForces* out, ContactJacobian* jacobian) {
+bool AddPointLoad(const ContactParams& params, const PointLoad& p,
+                  const Eigen::Vector3d& w, ContactForces* out,
+                  ContactJacobian* jacobian) {
   LawSlopes slopes;
   LawSlopes* const asked = jacobian ? &slopes : nullptr;
   const double depth_rate = -p.v.dot(p.u);
@@ -60,8 +65,8 @@ bool AddPointLoad(const ContactParams& params, const PointLoad& p, const Eigen::
   out->friction_force += ft;
   out->torque += p.r.cross(fn * p.u + ft);
   if (jacobian)
-    AddPointJacobian({p.r, p.v, p.u, w, fn, slopes.depth * p.size, slopes.rate * p.size, p.mu,
-                      params.friction_transition_speed, p.frame},
+    AddPointJacobian({p.r, p.v, p.u, w, fn, slopes.depth * p.size, slopes.rate * p.size,
+                      p.mu, params.friction_transition_speed, p.frame},
                      jacobian);
   return true;
 }

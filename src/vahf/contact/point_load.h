@@ -61,9 +61,10 @@ struct PointLoad {
   Eigen::Vector3d v;  // the moving material's velocity there, world
   Eigen::Vector3d u;  // unit vector along which the normal force pushes the moving part
   double depth = 0;   // m
-  bool line = false;  // an edge point (LineLoad per length) or a face point (Pressure per area)
-  double size = 0;    // its length (m) or area (m^2)
-  double mu = 0;      // pair Coulomb coefficient
+  bool line =
+      false;  // an edge point (LineLoad per length) or a face point (Pressure per area)
+  double size = 0;  // its length (m) or area (m^2)
+  double mu = 0;    // pair Coulomb coefficient
   PointFrame frame = PointFrame::kMoving;
 };
 
@@ -71,7 +72,8 @@ struct PointLoad {
 // origin to `out` and, with `jacobian`, their derivative (contact_jacobian.h;
 // w the part's angular velocity). False, nothing added, when the normal force
 // is not positive.
-bool AddPointLoad(const ContactParams& params, const PointLoad& p, const Eigen::Vector3d& w,
-                  ContactForces* out, ContactJacobian* jacobian);
+bool AddPointLoad(const ContactParams& params, const PointLoad& p,
+                  const Eigen::Vector3d& w, ContactForces* out,
+                  ContactJacobian* jacobian);
 
 }  // namespace vahf::contact

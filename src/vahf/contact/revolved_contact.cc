@@ -19,8 +19,8 @@ constexpr double kRadauWeight[4] = {0.125, 0.657688639960120, 0.776386937686344,
 }  // namespace
 
 RevolvedContact::Solid RevolvedContact::Make(const geometry::RevolvedProfile& profile,
-                                             const Eigen::Isometry3d& pose, double friction,
-                                             double bounding_radius) {
+                                             const Eigen::Isometry3d& pose,
+                                             double friction, double bounding_radius) {
   return {SignedDistance(geometry::Shape(profile)), RimCircles(profile), pose, friction,
           bounding_radius};
 }
@@ -43,10 +43,11 @@ ContactForces RevolvedContact::DoEvaluate(const RigidMotion& m, ContactCounters&
     const double mu = PairFriction(moving_.friction, f.friction);
     const Eigen::Isometry3d moving_in_fixed = f.pose.inverse() * m.pose;
     const Eigen::Isometry3d fixed_in_moving = moving_in_fixed.inverse();
-    EvaluatePass({moving_, f, moving_in_fixed, f.pose.linear(), fixed_in_moving, true, mu}, m,
-                 counters, &out, jacobian);
-    EvaluatePass({f, moving_, fixed_in_moving, m.pose.linear(), Eigen::Isometry3d::Identity(),
-                  false, mu},
+    EvaluatePass(
+        {moving_, f, moving_in_fixed, f.pose.linear(), fixed_in_moving, true, mu}, m,
+        counters, &out, jacobian);
+    EvaluatePass({f, moving_, fixed_in_moving, m.pose.linear(),
+                  Eigen::Isometry3d::Identity(), false, mu},
                  m, counters, &out, jacobian);
   }
   return out;
@@ -57,8 +58,8 @@ void RevolvedContact::EvaluatePass(const Pass& pass, const RigidMotion& m,
                                    ContactJacobian* jacobian) const {
   const Eigen::Matrix3d& R = pass.rim_to_field.linear();
   for (const RimCircle& rim : pass.rims.rims) {
-    const PlacedCircle circle{pass.rim_to_field * Eigen::Vector3d(0, 0, rim.height), R.col(0),
-                              R.col(1), rim.radius};
+    const PlacedCircle circle{pass.rim_to_field * Eigen::Vector3d(0, 0, rim.height),
+                              R.col(0), R.col(1), rim.radius};
     Arc arcs[kMaxArcs];
     const int n = InsideArcs(circle, pass.field.field, arcs, &counters.rim_queries,
                              &counters.edge_tests);
@@ -108,9 +109,10 @@ void RevolvedContact::IntegrateArc(const Pass& pass, const PlacedCircle& circle,
     deepest = node(peak, circle.radius * kRadauWeight[0] * (left + right));
     for (int i = 1; i < 4; ++i) {
       const double x = 1.0 + kRadauNode[i];
-      deepest = std::max(deepest, node(peak - x * left, circle.radius * kRadauWeight[i] * left));
-      deepest =
-          std::max(deepest, node(peak + x * right, circle.radius * kRadauWeight[i] * right));
+      deepest = std::max(deepest,
+                         node(peak - x * left, circle.radius * kRadauWeight[i] * left));
+      deepest = std::max(deepest,
+                         node(peak + x * right, circle.radius * kRadauWeight[i] * right));
     }
   }
   out->max_depth = std::max(out->max_depth, deepest);

@@ -36,12 +36,14 @@ class RevolvedContact final : public ContactModel {
   struct Solid {
     SignedDistance field;
     std::vector<RimCircle> rims;
-    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // fixed parts: part frame in the world
+    Eigen::Isometry3d pose =
+        Eigen::Isometry3d::Identity();  // fixed parts: part frame in the world
     double friction = 0;
     double bounding_radius = 0;
   };
-  static Solid Make(const geometry::RevolvedProfile& profile, const Eigen::Isometry3d& pose,
-                    double friction, double bounding_radius);
+  static Solid Make(const geometry::RevolvedProfile& profile,
+                    const Eigen::Isometry3d& pose, double friction,
+                    double bounding_radius);
 
   RevolvedContact(Solid moving, std::vector<Solid> fixed, const ContactParams& params);
 

@@ -118,7 +118,8 @@ Bounds TravelBounds(const PlacedCircle& c, double r_min) {
     ddr = std::min(ddr, (rho * rho * sin2 + off * rho + dr * dr) / r_min);
   }
   const double dz = rho * std::sqrt(sin2);  // |z'| and |z''| alike
-  return {1.01 * std::hypot(dr, dz) + 1e-12 * rho, 1.01 * std::hypot(ddr, dz) + 1e-12 * rho};
+  return {1.01 * std::hypot(dr, dz) + 1e-12 * rho,
+          1.01 * std::hypot(ddr, dz) + 1e-12 * rho};
 }
 
 }  // namespace
@@ -144,7 +145,8 @@ int InsideArcs(const PlacedCircle& c, const SignedDistance& solid, Arc arcs[kMax
   const Sample first{0.0, field(0.0)};
   Sample a = first;
   for (int k = 1; k <= kSamples; ++k) {
-    const Sample b = k == kSamples ? Sample{2 * M_PI, first.v} : Sample{k * step, field(k * step)};
+    const Sample b =
+        k == kSamples ? Sample{2 * M_PI, first.v} : Sample{k * step, field(k * step)};
     scan.Interval(a, b, 0);
     a = b;
   }
