@@ -31,7 +31,8 @@ int SeedCount() {
 
 // The q quantile of sorted values, nearest rank.
 double Quantile(const std::vector<double>& sorted, double q) {
-  const std::size_t k = static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1) + 0.5);
+  const std::size_t k =
+      static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1) + 0.5);
   return sorted[std::min(k, sorted.size() - 1)];
 }
 
@@ -41,8 +42,8 @@ double Quantile(const std::vector<double>& sorted, double q) {
 // step_budget in about 2 s instead of 20 s).
 void Seeds(benchmark::State& state, const std::string& scene_file, int position,
            const std::string& integrator, const std::string& contact_model = "") {
-  vahf::scene::Scene scene =
-      vahf::scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + scene_file);
+  vahf::scene::Scene scene = vahf::scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
+                                                    "/experiments/scenes/" + scene_file);
   if (!contact_model.empty()) {
     scene.params.contact.model = contact_model;
     scene.params.simulation.max_steps = 100000;
@@ -50,7 +51,8 @@ void Seeds(benchmark::State& state, const std::string& scene_file, int position,
   if (!integrator.empty()) {
     scene.params.simulation.integrator = integrator;
     scene.params.simulation.accuracy = 1e-4;
-    scene.params.simulation.velocity_time_scale = vahf::scene::SimulationParams().velocity_time_scale;
+    scene.params.simulation.velocity_time_scale =
+        vahf::scene::SimulationParams().velocity_time_scale;
   }
   const auto model = vahf::sim::BuildTrialModel(scene, position);
   const int n = SeedCount();
@@ -61,14 +63,15 @@ void Seeds(benchmark::State& state, const std::string& scene_file, int position,
     rtf.clear();
     for (int k = 0; k < n; ++k) {
       const double start = vahf::ThreadCpuSeconds();
-      const vahf::sim::TrialResult r =
-          vahf::sim::RunTrial(*model, {1, static_cast<std::uint64_t>(k)}, {0, 0.0, false});
+      const vahf::sim::TrialResult r = vahf::sim::RunTrial(
+          *model, {1, static_cast<std::uint64_t>(k)}, {0, 0.0, false});
       const double seconds = vahf::ThreadCpuSeconds() - start;
       cpu.push_back(seconds);
       rtf.push_back(r.end_time / seconds);
       evaluations += static_cast<double>(r.counters.contact_evaluations);
       steps += static_cast<double>(r.counters.steps_taken);
-      rejected += static_cast<double>(r.counters.steps_attempted - r.counters.steps_taken);
+      rejected +=
+          static_cast<double>(r.counters.steps_attempted - r.counters.steps_taken);
       completed += r.status == vahf::sim::Status::kCompleted ? 1 : 0;
     }
   }
@@ -88,16 +91,16 @@ void Seeds(benchmark::State& state, const std::string& scene_file, int position,
 
 // One benchmark: `name` over the seeds of `file`'s part `position` with
 // `integrator` (the empty string: the scene's own setting).
-#define VAHF_SEEDS_ONE(name, file, position, integrator)                        \
+#define VAHF_SEEDS_ONE(name, file, position, integrator)                               \
   BENCHMARK_CAPTURE(Seeds, name, std::string(file), position, std::string(integrator)) \
-      ->Iterations(1)                                                           \
+      ->Iterations(1)                                                                  \
       ->Unit(benchmark::kSecond);
 // Each part with RungeKuttaMerson and CVODE at 1e-4, and at its scene's own
 // setting (what experiments/precision_peg.json and precision_cylinder.json
 // recommend, and the paper run uses).
-#define VAHF_SEEDS(name, file, position)                               \
+#define VAHF_SEEDS(name, file, position)                                      \
   VAHF_SEEDS_ONE(name##_RungeKuttaMerson, file, position, "RungeKuttaMerson") \
-  VAHF_SEEDS_ONE(name##_CVODE, file, position, "CVODE")                \
+  VAHF_SEEDS_ONE(name##_CVODE, file, position, "CVODE")                       \
   VAHF_SEEDS_ONE(name##_scene_setting, file, position, "")
 
 VAHF_SEEDS(peg, "peg_in_hole.json", 0)
@@ -114,8 +117,9 @@ BENCHMARK_CAPTURE(Seeds, peg_revolved_CVODE, std::string("peg_in_hole_resolved.j
                   std::string("CVODE"), std::string("revolved"))
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(Seeds, piston_rod_revolved_CVODE, std::string("hydraulic_cylinder.json"), 0,
-                  std::string(""), std::string("revolved"))
+BENCHMARK_CAPTURE(Seeds, piston_rod_revolved_CVODE,
+                  std::string("hydraulic_cylinder.json"), 0, std::string(""),
+                  std::string("revolved"))
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 

@@ -19,8 +19,8 @@ BuiltContact Penalty(const ContactSetup& s, const std::vector<const ContactBody*
   };
   std::vector<Obstacle> obstacles;
   for (const ContactBody* f : fixed)
-    obstacles.push_back({SignedDistance(*f->shape), f->pose, f->friction, f->bounding_radius,
-                         rims_of(*f->shape)});
+    obstacles.push_back({SignedDistance(*f->shape), f->pose, f->friction,
+                         f->bounding_radius, rims_of(*f->shape)});
   std::vector<ShellPoint> shell = MakePointShell(*s.moving.shape, params.shell_spacing);
   BuiltContact out;
   out.shell_points = static_cast<std::int64_t>(shell.size());
@@ -61,7 +61,9 @@ const geometry::RevolvedProfile* ProfileOf(const ContactBody& b) {
 
 // The bound rule's law on the general path: the moving shell and every
 // part's rims, sampled, both ways.
-BuiltContact Resolving(const ContactSetup& s) { return Penalty(s, All(s), BoundRule(s), true); }
+BuiltContact Resolving(const ContactSetup& s) {
+  return Penalty(s, All(s), BoundRule(s), true);
+}
 
 // The bound rule's law; the exact revolved contact (revolved_contact.h) for
 // every fixed part that is, like the moving part, a solid of revolution, and
@@ -74,7 +76,8 @@ BuiltContact Revolved(const ContactSetup& s) {
   for (const ContactBody& f : s.fixed) {
     const geometry::RevolvedProfile* profile = moving ? ProfileOf(f) : nullptr;
     if (profile)
-      revolved.push_back(RevolvedContact::Make(*profile, f.pose, f.friction, f.bounding_radius));
+      revolved.push_back(
+          RevolvedContact::Make(*profile, f.pose, f.friction, f.bounding_radius));
     else
       general.push_back(&f);
   }
@@ -100,7 +103,8 @@ const std::vector<ContactModelEntry>& ContactModels() {
   static const std::vector<ContactModelEntry> models = {
       {"shell", "point shell vs static fields, given stiffness", Shell},
       {"resolving", "rims both ways, stiffness by the bound rule, barrier", Resolving},
-      {"revolved", "resolving's law on exact rim arcs both ways for revolved pairs", Revolved},
+      {"revolved", "resolving's law on exact rim arcs both ways for revolved pairs",
+       Revolved},
   };
   return models;
 }

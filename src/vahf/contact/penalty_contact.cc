@@ -45,7 +45,8 @@ struct Hit {
 };
 
 // The moving-part point p (part frame) against obstacle o's exact field.
-std::optional<Hit> MovingPointInside(const Obstacle& o, const Eigen::Isometry3d& moving_in_obstacle,
+std::optional<Hit> MovingPointInside(const Obstacle& o,
+                                     const Eigen::Isometry3d& moving_in_obstacle,
                                      const RigidMotion& m, const Eigen::Vector3d& p,
                                      ContactCounters& counters) {
   const std::optional<Distance> d =
@@ -59,9 +60,10 @@ std::optional<Hit> MovingPointInside(const Obstacle& o, const Eigen::Isometry3d&
 }  // namespace
 
 PenaltyContact::PenaltyContact(std::vector<ShellPoint> shell, SignedDistance moving_field,
-                           double moving_bounding_radius, double moving_friction,
-                           std::vector<Obstacle> obstacles, const ContactParams& params,
-                           std::vector<RimPoint> moving_rim)
+                               double moving_bounding_radius, double moving_friction,
+                               std::vector<Obstacle> obstacles,
+                               const ContactParams& params,
+                               std::vector<RimPoint> moving_rim)
     : shell_(std::move(shell)),
       moving_field_(std::move(moving_field)),
       shell_radius_(moving_bounding_radius),
@@ -81,16 +83,17 @@ PenaltyContact::RimSet PenaltyContact::BuildRimSet(const std::vector<RimPoint>& 
   RimSet set;
   if (rim.empty()) return set;
   const auto position = [](const RimPoint& q) { return q.position; };
-  const geometry::BoundingSphere all = geometry::BoundPoints(rim.begin(), rim.end(), position);
+  const geometry::BoundingSphere all =
+      geometry::BoundPoints(rim.begin(), rim.end(), position);
   set.centre = all.centre;
   set.radius = all.radius;
   for (std::size_t begin = 0; begin < rim.size(); begin += kRimBlockSize) {
     const std::size_t end = std::min(rim.size(), begin + kRimBlockSize);
     const geometry::BoundingSphere b =
         geometry::BoundPoints(rim.begin() + begin, rim.begin() + end, position);
-    set.blocks.push_back({b.centre, b.radius,
-                          SectorOf(rim.begin() + begin, rim.begin() + end, position),
-                          static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end)});
+    set.blocks.push_back(
+        {b.centre, b.radius, SectorOf(rim.begin() + begin, rim.begin() + end, position),
+         static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end)});
   }
   return set;
 }
@@ -102,7 +105,8 @@ void PenaltyContact::BuildTree(std::size_t begin, std::size_t end) {
   const std::size_t index = nodes_.size();
   nodes_.push_back({bound.centre, bound.radius,
                     SectorOf(shell_.begin() + begin, shell_.begin() + end, position),
-                    static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end), 0});
+                    static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end),
+                    0});
   if (end - begin > kLeafSize) {
     int axis;
     (bound.hi - bound.lo).maxCoeff(&axis);
@@ -154,14 +158,16 @@ ContactForces PenaltyContact::DoEvaluate(const RigidMotion& m, ContactCounters& 
         const std::optional<Hit> h =
             MovingPointInside(o, moving_in_obstacle, m, s.position, counters);
         if (!h || !AddPointLoad(params_,
-                                {h->r, h->v, h->n, h->depth, false, s.area, mu, PointFrame::kMoving},
+                                {h->r, h->v, h->n, h->depth, false, s.area, mu,
+                                 PointFrame::kMoving},
                                 m.angular_velocity, &out, jacobian))
           continue;
         ++out.points_in_contact;
         out.max_depth = std::max(out.max_depth, h->depth);
       }
     }
-    EvaluateMovingRims(index, m, moving_in_obstacle, to_obstacle, mu, counters, &out, jacobian);
+    EvaluateMovingRims(index, m, moving_in_obstacle, to_obstacle, mu, counters, &out,
+                       jacobian);
     EvaluateRims(index, m, mu, counters, &out, jacobian);
   }
   return out;
@@ -184,9 +190,10 @@ void PenaltyContact::EvaluateMovingRims(std::size_t index, const RigidMotion& m,
       ++counters.rim_queries;
       const std::optional<Hit> h =
           MovingPointInside(o, moving_in_obstacle, m, q.position, counters);
-      if (!h || !AddPointLoad(params_,
-                              {h->r, h->v, h->n, h->depth, true, q.length, mu, PointFrame::kMoving},
-                              m.angular_velocity, out, jacobian))
+      if (!h || !AddPointLoad(
+                    params_,
+                    {h->r, h->v, h->n, h->depth, true, q.length, mu, PointFrame::kMoving},
+                    m.angular_velocity, out, jacobian))
         continue;
       ++out->rim_points_in_contact;
       out->max_depth = std::max(out->max_depth, h->depth);
@@ -218,7 +225,8 @@ void PenaltyContact::EvaluateRims(std::size_t index, const RigidMotion& m, doubl
       const RimPoint& q = o.rim[k];
       ++counters.rim_queries;
       const Eigen::Vector3d p_m = obstacle_in_moving * q.position;
-      const std::optional<Distance> d = moving_field_.Penetration(p_m, &counters.edge_tests);
+      const std::optional<Distance> d =
+          moving_field_.Penetration(p_m, &counters.edge_tests);
       if (!d) continue;
       const double depth = -d->distance;
       if (!(depth > 0)) continue;

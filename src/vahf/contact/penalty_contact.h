@@ -44,9 +44,9 @@ class PenaltyContact final : public ContactModel {
   // edges are seen where they are and not only by shell points half a
   // spacing inside them.
   PenaltyContact(std::vector<ShellPoint> shell, SignedDistance moving_field,
-               double moving_bounding_radius, double moving_friction,
-               std::vector<Obstacle> obstacles, const ContactParams& params,
-               std::vector<RimPoint> moving_rim = {});
+                 double moving_bounding_radius, double moving_friction,
+                 std::vector<Obstacle> obstacles, const ContactParams& params,
+                 std::vector<RimPoint> moving_rim = {});
 
   const std::vector<ShellPoint>& shell() const { return shell_; }
   std::size_t obstacle_count() const { return obstacles_.size(); }
@@ -103,8 +103,9 @@ class PenaltyContact final : public ContactModel {
   // frame in the obstacle's and its meridian map (DoEvaluate's, for the shell).
   void EvaluateMovingRims(std::size_t index, const RigidMotion& motion,
                           const Eigen::Isometry3d& moving_in_obstacle,
-                          const MeridianMap& to_obstacle, double mu, ContactCounters& counters,
-                          ContactForces* out, ContactJacobian* jacobian) const;
+                          const MeridianMap& to_obstacle, double mu,
+                          ContactCounters& counters, ContactForces* out,
+                          ContactJacobian* jacobian) const;
   // The obstacle's rim points against the moving part, after its shell points.
   void EvaluateRims(std::size_t index, const RigidMotion& motion, double mu,
                     ContactCounters& counters, ContactForces* out,

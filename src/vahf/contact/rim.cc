@@ -66,11 +66,14 @@ std::vector<RimCircle> RimCircles(const geometry::RevolvedProfile& p) {
 }
 
 double RimSizeBound(const geometry::Shape& shape, double spacing) {
-  const auto count = [&](double length) { return std::max(1.0, std::ceil(length / spacing)); };
+  const auto count = [&](double length) {
+    return std::max(1.0, std::ceil(length / spacing));
+  };
   double n = 0;
   if (const auto* p = std::get_if<geometry::RevolvedProfile>(&shape)) {
     for (const geometry::ProfilePoint& v : p->vertices)
-      if (v.r > 0) n += count(2 * M_PI * v.r);  // every vertex off the axis, convex or not
+      if (v.r > 0)
+        n += count(2 * M_PI * v.r);  // every vertex off the axis, convex or not
     return n;
   }
   const Eigen::Vector3d& size = std::get<geometry::Box>(shape).size;

@@ -76,7 +76,8 @@ double RunStepper(const StepperEntry& stepper, TrialContext& c, double sample_in
 
 }  // namespace
 
-TrialResult RunTrial(const TrialModel& model, rng::StreamKey key, const TrialOptions& options) {
+TrialResult RunTrial(const TrialModel& model, rng::StreamKey key,
+                     const TrialOptions& options) {
   const auto& params = model.scene->params;
   TrialContext c(model, key);
   c.work = options.initial_work;
