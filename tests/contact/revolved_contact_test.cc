@@ -23,6 +23,7 @@
 
 #include "peg_in_bore.h"
 #include "support/motion_differences.h"
+#include "vahf/contact/contact_registry.h"
 #include "vahf/contact/penalty_contact.h"
 #include "vahf/contact/point_load.h"
 #include "vahf/contact/rim.h"
@@ -305,6 +306,43 @@ TEST(RevolvedContact, AnalyticJacobianAgreesWithCentralDifferences) {
         << "pose " << checked << ", load " << load << " N";
     ++checked;
   }
+}
+
+// Model "revolved" on a scene that mixes a revolved seat and a box: the exact
+// path for the bore, the general path for the box, their loads summed
+// (CompositeContact), one evaluation counted.
+TEST(RevolvedContact, MixedSceneSumsTheExactAndTheGeneralPath) {
+  const Shape peg = testing::ChamferedPeg(), bore = testing::ChamferedBore();
+  const Shape block = geometry::Box{{0.02, 0.02, 0.02}};
+  Eigen::Isometry3d block_at = Eigen::Isometry3d::Identity();
+  // A 20 mm cube whose face x = 9.5 mm cuts into the bore (fixed parts may overlap).
+  block_at.translation() = Vector3d(0.0195, 0, -0.01);
+  ContactSetup s;
+  s.moving = {&peg, Eigen::Isometry3d::Identity(), 0.15, Radius(peg)};
+  s.fixed = {{&bore, Eigen::Isometry3d::Identity(), 0.15, Radius(bore)},
+             {&block, block_at, 0.15, Radius(block)}};
+  const BuiltContact mixed = BuildContact("revolved", s);
+  s.fixed.pop_back();
+  const BuiltContact exact = BuildContact("revolved", s);
+  s.fixed = {{&block, block_at, 0.15, Radius(block)}};
+  const BuiltContact general = BuildContact("revolved", s);
+  EXPECT_GT(mixed.shell_points, 0);
+  EXPECT_EQ(exact.shell_points, 0);
+  RigidMotion m;
+  // 60 um off the axis towards +y, tilted 1 mrad: into the bore's wall; and
+  // 0.3 mm towards +x: 0.8 mm into the cube's face.
+  m.pose = Pose({0.0003, 60e-6, -0.02}, 1e-3);
+  m.velocity = {0.01, 0.0, -0.02};
+  ContactCounters counters;
+  const ContactForces a = mixed.model->Evaluate(m, &counters);
+  const ContactForces b = exact.model->Evaluate(m), c = general.model->Evaluate(m);
+  ASSERT_GT(b.rim_points_in_contact, 0);
+  ASSERT_TRUE(c.in_contact());
+  EXPECT_TRUE((a.normal_force - b.normal_force - c.normal_force).norm() <=
+              1e-12 * a.normal_force.norm());
+  EXPECT_TRUE((a.torque - b.torque - c.torque).norm() <= 1e-12 * a.torque.norm());
+  EXPECT_EQ(a.max_depth, std::max(b.max_depth, c.max_depth));
+  EXPECT_EQ(counters.evaluations, 1u);
 }
 
 }  // namespace
