@@ -347,3 +347,86 @@ TEST(RevolvedContact, MixedSceneSumsTheExactAndTheGeneralPath) {
 
 }  // namespace
 }  // namespace vahf::contact
+
+namespace vahf::contact {
+namespace {
+
+// The deepest point of every rim circle of both passes, by brute force:
+// `samples` equally spaced angles on each circle.
+double BruteDepth(const Shape& peg, const Shape& bore, const Eigen::Isometry3d& bore_pose,
+                  const Eigen::Isometry3d& peg_pose, int samples) {
+  const Eigen::Isometry3d peg_in_bore = bore_pose.inverse() * peg_pose;
+  double deepest = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    const Eigen::Isometry3d t = pass == 0 ? peg_in_bore : peg_in_bore.inverse();
+    const SignedDistance field(pass == 0 ? bore : peg);
+    for (const RimCircle& rim : RimCircles(ProfileOf(pass == 0 ? peg : bore))) {
+      const PlacedCircle c{t * Vector3d(0, 0, rim.height), t.linear().col(0),
+                           t.linear().col(1), rim.radius};
+      for (int k = 0; k < samples; ++k)
+        deepest = std::max(deepest, -field.At(c.At(2 * M_PI * k / samples)).distance);
+    }
+  }
+  return deepest;
+}
+
+}  // namespace
+
+// A rim circle that passes a corner of the other part's profile: there the
+// distance along the circle bends sharply (outside, the distance to the
+// corner point; inside, a kink where the two faces meet), and a scan that
+// bounded the bend by the circle's own missed whole arcs. The first pose is
+// a state of a resolved peg trial (peg_in_hole_resolved.json, contact model
+// revolved, CVODE, seed 1000, t = 0.0317 s) where the peg's chamfer edge and
+// the bore's chamfer-to-wall edge cross 18.5 um deep and the scan found
+// neither; the CVODE stepper then accepted the state and the peg ran through
+// the barrier. The rest are random poses of the peg's chamfer at the bore's
+// corners. The exact contact's deepest point must be the brute-force one, to
+// within what the two resolve: the scan leaves out dips shallower than its
+// slope bound over its finest interval (rim_arcs.cc, about 0.2 um here) and
+// 10 000 samples a circle miss at most about 0.2 um of a dip's bottom.
+TEST(RevolvedContact, FindsTheArcsWhereARimPassesACorner) {
+  const Shape peg = testing::ChamferedPeg(), bore = testing::ChamferedBore();
+  const ContactParams p = RuleParams();
+  Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
+  at.translation() = Vector3d(0, 0, 0.95);
+  const RevolvedContact exact = Exact(peg, bore, at, p);
+  std::vector<Eigen::Isometry3d> poses;
+  {
+    Eigen::Isometry3d trial = Eigen::Isometry3d::Identity();
+    trial.linear() = Eigen::Quaterniond(0.99978182381585157, -0.018773385269841028,
+                                        -0.010305786230274902, -0.00094287975813951762)
+                         .normalized()
+                         .toRotationMatrix();
+    trial.translation() =
+        Vector3d(-3.1256053046334646e-05, -0.0001284095517360187, 0.94859421663689503);
+    poses.push_back(trial);
+  }
+  std::mt19937_64 random(20261126);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  while (poses.size() < 150) {
+    // The peg's chamfer edge (z = 0.5 mm) from 0.5 mm above the bore's mouth
+    // to 1.5 mm below it, up to 0.2 mm off the axis, tilted up to 3 deg.
+    const Vector3d axis = Vector3d(unit(random), unit(random), 0).normalized();
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.linear() = Eigen::AngleAxisd(3.0 * M_PI / 180 * 0.5 * (1 + unit(random)), axis)
+                        .toRotationMatrix();
+    pose.translation() = Vector3d(2e-4 * unit(random), 2e-4 * unit(random),
+                                  0.95 - 0.0005 - 5e-4 + 1e-3 * unit(random));
+    poses.push_back(pose);
+  }
+  int deep = 0;
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    RigidMotion m;
+    m.pose = poses[i];
+    ContactCounters counters;
+    const double depth = exact.Evaluate(m, &counters).max_depth;
+    const double brute = BruteDepth(peg, bore, at, poses[i], 10000);
+    if (brute > 1e-6) ++deep;
+    EXPECT_GE(depth, brute - 0.25e-6) << "pose " << i;
+    EXPECT_LE(depth, brute + 0.25e-6) << "pose " << i;
+  }
+  EXPECT_GT(deep, 30);  // the poses do reach into the corners
+}
+
+}  // namespace vahf::contact

@@ -2,13 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vahf::contact {
 namespace {
 
 constexpr int kSamples = 8;     // f's first samples around the circle
-constexpr int kMaxLevels = 6;   // halvings of an interval that may hold a dip
+constexpr int kMaxLevels = 10;  // halvings of an interval that may hold a dip
 constexpr int kMaxNewton = 40;  // iterations of a bracketed root solve
+constexpr int kMaxDeepest = 40;  // iterations of the deepest point's search
+// The deepest point's search stops when f can change by less than this over
+// its bracket (m): far below the micrometre bounds the barrier holds.
+constexpr double kDeepestTolerance = 1e-10;
 
 // The circle's points, signed distances and their slopes along the angle.
 class CircleField {
@@ -67,7 +72,7 @@ double Crossing(const CircleField& field, Sample a, Sample b) {
 // Bounds on f's travel along the circle (rim_arcs.h).
 struct Bounds {
   double slope;      // |df/dphi|, m/rad
-  double curvature;  // |d2f/dphi2| of a plane face's distance, m/rad^2
+  double curvature;  // an upper bound of d2f/dphi2, m/rad^2 (TravelBounds)
 };
 
 struct Scan {
@@ -91,8 +96,8 @@ struct Scan {
       return;
     }
     // f cannot leave its side and come back over the interval: by its
-    // slope bound, or by its curvature bound (f stays within w^2 / 8 of the
-    // chord, w the interval's width).
+    // slope bound, or by its curvature bound (f stays within K w^2 / 8 of
+    // the chord, w the interval's width, K >= |f''| on it: TravelBounds).
     const double w = b.phi - a.phi;
     const double fa = std::abs(a.v.f), fb = std::abs(b.v.f);
     if (fa + fb > bounds.slope * w || std::min(fa, fb) > 0.125 * bounds.curvature * w * w)
@@ -107,8 +112,13 @@ struct Scan {
 
 // Bounds on |d(r, z)/dphi| and |d2(r, z)/dphi2| along the circle (rim_arcs.h),
 // with e = P_xy - centre_xy, |e'|^2 - |e|^2 <= rho^2 sin^2(theta) and
-// r r'' = |e'|^2 - |e|^2 - centre_xy . e - r'^2.
-Bounds TravelBounds(const PlacedCircle& c, double r_min) {
+// r r'' = |e'|^2 - |e|^2 - centre_xy . e - r'^2. f = D(r, z), D the profile's
+// signed distance, so f'' = (r, z)'^T H (r, z)' + grad D . (r, z)'': along
+// a face H = 0; `corner` (m) from the nearest corner of the profile, the
+// distance to a corner point adds at most |(r, z)'|^2 / corner either way
+// (SignedDistance::CornerDistance), and a trace that reaches a corner meets
+// D's kink there, which no curvature bounds (infinity).
+Bounds TravelBounds(const PlacedCircle& c, double r_min, double corner) {
   const Eigen::Vector3d n = c.x.cross(c.y);
   const double sin2 = std::max(0.0, 1.0 - n.z() * n.z());
   const double rho = c.radius, off = c.centre.head<2>().norm();
@@ -118,8 +128,11 @@ Bounds TravelBounds(const PlacedCircle& c, double r_min) {
     ddr = std::min(ddr, (rho * rho * sin2 + off * rho + dr * dr) / r_min);
   }
   const double dz = rho * std::sqrt(sin2);  // |z'| and |z''| alike
-  return {1.01 * std::hypot(dr, dz) + 1e-12 * rho,
-          1.01 * std::hypot(ddr, dz) + 1e-12 * rho};
+  const double slope = 1.01 * std::hypot(dr, dz) + 1e-12 * rho;
+  const double curvature =
+      corner > 0 ? 1.01 * std::hypot(ddr, dz) + 1e-12 * rho + slope * slope / corner
+                 : std::numeric_limits<double>::infinity();
+  return {slope, curvature};
 }
 
 }  // namespace
@@ -140,7 +153,7 @@ int InsideArcs(const PlacedCircle& c, const SignedDistance& solid, Arc arcs[kMax
   const MeridianBox box = TraceBox(c);
   if (solid.MeridianBoxClear(box)) return 0;
   const CircleField field(c, solid, queries, edges);
-  Scan scan(field, TravelBounds(c, std::max(0.0, box.r_min)));
+  Scan scan(field, TravelBounds(c, std::max(0.0, box.r_min), solid.CornerDistance(box)));
   const double step = 2 * M_PI / kSamples;
   const Sample first{0.0, field(0.0)};
   Sample a = first;
@@ -184,27 +197,41 @@ int InsideArcs(const PlacedCircle& c, const SignedDistance& solid, Arc arcs[kMax
 double DeepestAngle(const PlacedCircle& c, const SignedDistance& solid, const Arc& arc,
                     std::uint64_t* queries, std::uint64_t* edges) {
   const CircleField field(c, solid, queries, edges);
-  double lo = arc.begin, hi = arc.end, x0 = 0.5 * (lo + hi);
-  if (arc.whole()) {
-    double least = field(x0).f;
+  double lo = arc.begin, hi = arc.end;
+  if (arc.whole()) {  // bracket the least of kSamples samples
+    double x0 = lo, least = field(lo).f;
     for (int k = 1; k < kSamples; ++k) {
       const double phi = arc.begin + 2 * M_PI * k / kSamples;
       const double f = field(phi).f;
       if (f < least) least = f, x0 = phi;
     }
-    lo = x0 - M_PI / kSamples, hi = x0 + M_PI / kSamples;
+    lo = x0 - 2 * M_PI / kSamples, hi = x0 + 2 * M_PI / kSamples;
   }
-  const double width = hi - lo;
-  double s0 = field(x0).slope;
-  double x1 = std::clamp(x0 - std::copysign(0.01 * width, s0), lo, hi);
-  for (int i = 0; i < 8; ++i) {
-    const double s1 = field(x1).slope;
-    if (s1 == s0) break;
-    const double x2 = std::clamp(x1 - s1 * (x1 - x0) / (s1 - s0), lo, hi);
-    x0 = x1, s0 = s1, x1 = x2;
-    if (std::abs(x1 - x0) < 1e-12 * width) break;
+  CircleField::Value a = field(lo), b = field(hi);
+  const auto lower = [&] { return a.f <= b.f ? lo : hi; };
+  if (!(a.slope < 0 && b.slope > 0)) return lower();  // no interior minimum bracketed
+  // The slope changes sign at the minimum, also where two faces meet in a
+  // kink (a corner), where the slope jumps: regula falsi on the slope with
+  // the Illinois halving, which keeps the bracket and converges on both.
+  int kept = 0;  // -1: lo moved last, +1: hi moved last
+  for (int i = 0; i < kMaxDeepest; ++i) {
+    if ((hi - lo) * std::max(-a.slope, b.slope) < kDeepestTolerance) break;
+    double x = lo - a.slope * (hi - lo) / (b.slope - a.slope);
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    const CircleField::Value v = field(x);
+    if (v.slope < 0) {
+      lo = x, a = v;
+      if (kept == -1) b.slope *= 0.5;
+      kept = -1;
+    } else if (v.slope > 0) {
+      hi = x, b = v;
+      if (kept == 1) a.slope *= 0.5;
+      kept = 1;
+    } else {
+      return x;
+    }
   }
-  return x1;
+  return lower();
 }
 
 }  // namespace vahf::contact

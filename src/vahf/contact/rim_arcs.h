@@ -17,8 +17,9 @@
 // whose ends have opposite signs holds one, found by Newton's method inside
 // the bracket (f' = n . P', n the surface normal), and any other interval is
 // halved, at most kMaxLevels times (below that an excursion into the solid
-// is shallower than the bound over the last interval, about 0.1 um at the
-// scenes' tilts, and is left out).
+// is shallower than the bound over the last interval, about 0.2 um at the
+// scenes' tilts, and is left out). The curvature bound adds the bend of
+// the distance near the profile's corners (rim_arcs.cc, TravelBounds).
 #pragma once
 
 #include <Eigen/Core>
@@ -60,9 +61,11 @@ inline constexpr int kMaxArcs = 8;
 int InsideArcs(const PlacedCircle& c, const SignedDistance& solid, Arc arcs[kMaxArcs],
                std::uint64_t* queries, std::uint64_t* edges);
 
-// The angle of an arc's deepest point, the least signed distance: the secant
-// method on the distance's slope, from the arc's middle (a whole circle: from
-// the least of kSamples samples), kept inside the arc. Counts as InsideArcs.
+// The angle of an arc's deepest point, the least signed distance: where the
+// distance's slope changes sign, by regula falsi (Illinois) from the arc's
+// ends (a whole circle: from the samples either side of the least of
+// kSamples), which also finds a kink where two faces meet. Counts as
+// InsideArcs.
 double DeepestAngle(const PlacedCircle& c, const SignedDistance& solid, const Arc& arc,
                     std::uint64_t* queries, std::uint64_t* edges);
 

@@ -35,6 +35,14 @@ SignedDistance::SignedDistance(const geometry::Shape& shape) {
     slab_z_.push_back(a.y());
     slab_z_.push_back(b.y());
   }
+  // The corners: vertices off the axis where the surface turns.
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const geometry::ProfilePoint a = v[(k + v.size() - 1) % v.size()], b = v[k],
+                                 c = v[(k + 1) % v.size()];
+    if (!(b.r > 0)) continue;
+    if ((b.r - a.r) * (c.z - b.z) - (b.z - a.z) * (c.r - b.r) != 0)
+      corners_.emplace_back(b.r, b.z);
+  }
   std::sort(slab_z_.begin(), slab_z_.end());
   slab_z_.erase(std::unique(slab_z_.begin(), slab_z_.end()), slab_z_.end());
   // No edge end lies inside a slab, so an edge spans every height of a slab
@@ -155,6 +163,17 @@ bool SignedDistance::MeridianBoxClear(const MeridianBox& box) const {
   // No surface edge meets the box, and in r > 0 the profile's boundary is all
   // surface edges: the box lies wholly inside the solid or wholly outside it.
   return !InsidePolygon(0.5 * (lo.x() + hi.x()), 0.5 * (lo.y() + hi.y()));
+}
+
+double SignedDistance::CornerDistance(const MeridianBox& box) const {
+  if (is_box_) return 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector2d& c : corners_) {
+    const double dr = std::max({box.r_min - c.x(), c.x() - box.r_max, 0.0});
+    const double dz = std::max({box.z_min - c.y(), c.y() - box.z_max, 0.0});
+    best = std::min(best, std::hypot(dr, dz));
+  }
+  return best;
 }
 
 Distance SignedDistance::OfRevolution(const Eigen::Vector3d& p, double r,

@@ -47,6 +47,15 @@ class SignedDistance {
   // the profile. The broad phase's test for parts turning about a common axis
   // (sector_bound.h).
   bool MeridianBoxClear(const MeridianBox& box) const;
+  // The least distance in the meridian half-plane from the box to a corner
+  // of the profile (a vertex off the axis where the surface turns): infinity
+  // when there is none, 0 when the box holds one, and for a box shape. Away
+  // from corners the distance along a path has the curvature of the path's
+  // own bend; near one it does not: on the side where the corner point is
+  // the nearest (outside a convex corner, inside a concave one) it adds
+  // s^2 / d for a path at speed s, d from the corner, and on the other two
+  // faces meet in a kink. rim_arcs.cc bounds the distance's bend with it.
+  double CornerDistance(const MeridianBox& box) const;
 
   // Axis-aligned bounds of the solid in its frame, m.
   const Eigen::Vector3d& lower() const { return lower_; }
@@ -77,6 +86,7 @@ class SignedDistance {
   bool is_box_ = false;
   Eigen::Vector3d half_;       // box half extents
   std::vector<Edge> surface_;  // edges not on the axis, counter-clockwise
+  std::vector<Eigen::Vector2d> corners_;  // (r, z) of CornerDistance's corners
   // The distinct heights of the surface edges' ends, ascending. Every height of
   // slab k = [slab_z_[k], slab_z_[k + 1]) is spanned by the same edges:
   // crossings_[slab_begin_[k]] up to crossings_[slab_begin_[k + 1]].
