@@ -137,6 +137,46 @@ struct ForceCase {
   }
 };
 
+// The push that overcomes friction is Eq. 8's friction itself up to half of
+// max_push, then bends with equal slope towards max_push and never passes it:
+// a wedged part whose friction grows with the push cannot drive it without
+// bound.
+TEST(FrictionPush, EqualsTheFrictionThenBendsTowardsTheBound) {
+  const double m = 100.0;
+  for (double f : {0.0, 1.0, 25.0, 50.0}) {
+    EXPECT_EQ(FrictionPush(f, m), f);
+    EXPECT_EQ(FrictionPushSlope(f, m), 1.0);
+  }
+  EXPECT_NEAR(FrictionPush(50.0 + 1e-9, m), 50.0 + 1e-9, 1e-12);  // continuous
+  EXPECT_NEAR(FrictionPushSlope(50.0 + 1e-9, m), 1.0, 1e-9);      // and its slope
+  double last = 50.0;
+  for (double f : {60.0, 100.0, 1e3, 1e4}) {
+    const double p = FrictionPush(f, m);
+    EXPECT_GT(p, last);
+    EXPECT_LT(p, m);
+    EXPECT_NEAR(
+        FrictionPushSlope(f, m),
+        (FrictionPush(f * (1 + 1e-6), m) - FrictionPush(f * (1 - 1e-6), m)) / (2e-6 * f),
+        1e-6);
+    last = p;
+  }
+  EXPECT_NEAR(FrictionPush(1e12, m), m, 1e-8);
+  EXPECT_LE(FrictionPush(1e300, m), m);
+  EXPECT_EQ(FrictionPush(1e12, 0.0), 1e12);  // 0: unbounded, the paper's Eq. 8
+  EXPECT_EQ(FrictionPushSlope(1e12, 0.0), 1.0);
+}
+
+TEST(ImpedanceForce, FrictionPushIsBoundedByMaxPush) {
+  ForceCase k;
+  k.params.max_push = 10.0;
+  const Eigen::Vector3d n = Eigen::Vector3d(0.3, 0.0, 1.0).normalized();
+  const Eigen::Vector3d light = k.Force({2.0 * n, 1.0});
+  const Eigen::Vector3d wedged = k.Force({2.0 * n, 1e9});
+  // Only the friction push differs, along P (T' - T), by less than max_push.
+  EXPECT_LT((wedged - light).norm(), k.params.max_push);
+  EXPECT_GT((wedged - light).norm(), 0.5 * k.params.max_push);
+}
+
 TEST(ImpedanceForce, FreeIsEq7WithWeightSupportAndDamping) {
   const ForceCase k;
   const double b = 2.0 * k.params.damping_ratio * std::sqrt(k.params.kappa * k.psi * k.mass);

@@ -78,6 +78,20 @@ TEST(GuidanceJacobian, ImpedanceForceAcrossTheBlend) {
     }
 }
 
+// The friction push past half of max_push, where FrictionPush bends towards
+// its bound: 0.8 and 1.5 times max_push of friction.
+TEST(GuidanceJacobian, ImpedanceForceWithTheFrictionPushBounded) {
+  GuidanceParams g;
+  g.max_push = 2.0 * kBlend;
+  const Vector3d direction = Vector3d(0.3, -0.2, 1.0).normalized();
+  for (double friction : {0.8 * g.max_push, 1.5 * g.max_push}) {
+    const Felt s{Vector3d(0.001, -0.002, 0.003), Vector3d(0.002, 0.0005, -0.01),
+                 Vector3d(0.05, -0.02, -0.3), 3.0 * kBlend * direction, friction};
+    EXPECT_TRUE(vahf::testing::BlocksAgree(Analytic(g, s), Differences(g, s), 1e-6))
+        << "friction " << friction;
+  }
+}
+
 TEST(GuidanceJacobian, InverseRightJacobianLinearisesTheLog) {
   for (const Vector3d& theta : {Vector3d(1e-7, -2e-7, 0.0), Vector3d(0.2, -0.1, 0.25),
                                Vector3d(1.5, 1.2, -1.0)}) {

@@ -73,6 +73,21 @@ Eigen::Vector3d ContactAssemblyForce(double kappa, double psi,
   return (kappa * psi * size + friction) * (direction / size);
 }
 
+double FrictionPush(double friction, double max_push) {
+  const double knee = 0.5 * max_push;
+  if (!(max_push > 0 && friction > knee)) return friction;
+  const double u = (friction - knee) / (max_push - knee);
+  return knee + (max_push - knee) * u / std::cbrt(1.0 + u * u * u);
+}
+
+double FrictionPushSlope(double friction, double max_push) {
+  const double knee = 0.5 * max_push;
+  if (!(max_push > 0 && friction > knee)) return 1.0;
+  const double u = (friction - knee) / (max_push - knee);
+  const double c = std::cbrt(1.0 + u * u * u);
+  return 1.0 / (c * c * c * c);  // (1 + u^3)^(-4/3)
+}
+
 double ContactBlend(double normal_force, double blend_force) {
   const double s = std::clamp(normal_force / blend_force, 0.0, 1.0);
   return s * s * (3.0 - 2.0 * s);
@@ -94,7 +109,7 @@ Eigen::Vector3d ImpedanceForce(const GuidanceParams& params, double psi, double 
     const Eigen::Vector3d n = contact.normal_force / fn;
     const Eigen::Vector3d along = to_target - to_target.dot(n) * n;  // P (T' - T)
     force += -w * params.kappa * psi * to_target.dot(n) * n +
-             w * contact.friction * along /
+             w * FrictionPush(contact.friction, params.max_push) * along /
                  std::sqrt(along.squaredNorm() + fade_length * fade_length);
   }
   return force - b * velocity;

@@ -51,13 +51,15 @@ ImpedancePartials ImpedanceForceJacobian(const GuidanceParams& params, double ps
   const Matrix3d dn_dF = P / fn;
   const Eigen::RowVector3d dw_dF = BlendSlope(fn, blend_force) * n.transpose();
   const Matrix3d da_dF = -(dn_ * I + n * d.transpose()) * dn_dF;
+  const double push = FrictionPush(contact.friction, params.max_push);
   // Position: dd = -dT.
-  out.position += w * kp * n * n.transpose() - w * contact.friction * da_unit * P;
+  out.position += w * kp * n * n.transpose() - w * push * da_unit * P;
   // Normal force: through w, n and a.
-  out.normal_force = params.weight_support * weight * dw_dF -
-                     kp * (dn_ * n * dw_dF + w * dn_ * dn_dF + w * n * d.transpose() * dn_dF) +
-                     contact.friction * (a / g) * dw_dF + w * contact.friction * da_unit * da_dF;
-  out.friction = w * a / g;
+  out.normal_force =
+      params.weight_support * weight * dw_dF -
+      kp * (dn_ * n * dw_dF + w * dn_ * dn_dF + w * n * d.transpose() * dn_dF) +
+      push * (a / g) * dw_dF + w * push * da_unit * da_dF;
+  out.friction = w * FrictionPushSlope(contact.friction, params.max_push) * a / g;
   return out;
 }
 

@@ -45,6 +45,16 @@ struct SimulationParams {
   // interesting things happen"). Its error is measured by the precision
   // experiment like any other setting.
   double velocity_time_scale = 1.0;
+  // CVODE only: the highest order its BDF formulas may use (1-5; 5 is
+  // CVODE's own default). BDF1 and BDF2 are A-stable; no linear multistep
+  // method of higher order is (Dahlquist's second barrier: G. Dahlquist, BIT
+  // 3 (1963) 27-43), and BDF3-5 lose a wedge about the imaginary axis
+  // (Hairer and Wanner, Solving Ordinary Differential Equations II, 2nd ed.
+  // 1996, Sec. V.2), where a lightly damped stiff oscillation lies: a part
+  // rattling on a contact held to micrometres by the hardening barrier. There
+  // order 3-5 grows the oscillation until the part diverges (measured on the
+  // resolved peg: docs/physics.md, Integrators); order 2 holds it.
+  int max_order = 5;
   // An accepted step shorter than this, s, is recorded as a warning
   // (step_size_floor): the integrator is resolving something far faster than
   // the contact oscillation (about 1e-4 s) or sticking friction (a few

@@ -147,6 +147,7 @@ double IntegrateWithCvode(TrialContext& c, double sample_interval,
     int falling = -1;
     ok(CVodeSetRootDirection(cv.mem, &falling), "root direction");
     ok(CVodeSetMaxNumSteps(cv.mem, 1000000), "step limit");
+    ok(CVodeSetMaxOrd(cv.mem, sim.max_order), "maximum order");
     c.integrated = true;
 
     // CVODE's counters restart with it: the totals of the runs before.
