@@ -7,9 +7,9 @@
 namespace vahf::contact {
 namespace {
 
-constexpr int kSamples = 8;     // f's first samples around the circle
-constexpr int kMaxLevels = 10;  // halvings of an interval that may hold a dip
-constexpr int kMaxNewton = 40;  // iterations of a bracketed root solve
+constexpr int kSamples = 8;      // f's first samples around the circle
+constexpr int kMaxLevels = 10;   // halvings of an interval that may hold a dip
+constexpr int kMaxNewton = 40;   // iterations of a bracketed root solve
 constexpr int kMaxDeepest = 40;  // iterations of the deepest point's search
 // The deepest point's search stops when f can change by less than this over
 // its bracket (m): far below the micrometre bounds the barrier holds.

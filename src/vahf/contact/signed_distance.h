@@ -84,8 +84,8 @@ class SignedDistance {
   bool InBounds(const Eigen::Vector3d& p) const;
 
   bool is_box_ = false;
-  Eigen::Vector3d half_;       // box half extents
-  std::vector<Edge> surface_;  // edges not on the axis, counter-clockwise
+  Eigen::Vector3d half_;                  // box half extents
+  std::vector<Edge> surface_;             // edges not on the axis, counter-clockwise
   std::vector<Eigen::Vector2d> corners_;  // (r, z) of CornerDistance's corners
   // The distinct heights of the surface edges' ends, ascending. Every height of
   // slab k = [slab_z_[k], slab_z_[k + 1]) is spanned by the same edges:

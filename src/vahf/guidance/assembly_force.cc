@@ -30,11 +30,10 @@ Eigen::Vector3d VisionError(double eta, const Eigen::Vector3d& sight_direction,
 }
 
 Eigen::Vector3d DrawEstimatedTarget(const GuidanceParams& params, rng::StreamKey key,
-                                    std::uint64_t decision,
-                                    const Eigen::Vector3d& target,
+                                    std::uint64_t decision, const Eigen::Vector3d& target,
                                     const Eigen::Vector3d& position,
-                                    const Eigen::Vector3d& sight_direction,
-                                    double eta, double lambda_c, double psi) {
+                                    const Eigen::Vector3d& sight_direction, double eta,
+                                    double lambda_c, double psi) {
   rng::Stream cs(key, decision, rng::Purpose::kTargetEstimate);
   const double c1 = cs.Uniform();
   const double c2 = cs.Uniform();
@@ -96,15 +95,15 @@ double ContactBlend(double normal_force, double blend_force) {
 Eigen::Vector3d ImpedanceForce(const GuidanceParams& params, double psi, double mass,
                                const Eigen::Vector3d& position,
                                const Eigen::Vector3d& estimated_target,
-                               const Eigen::Vector3d& velocity, const FeltContact& contact,
-                               double blend_force, const Eigen::Vector3d& weight,
-                               double fade_length) {
+                               const Eigen::Vector3d& velocity,
+                               const FeltContact& contact, double blend_force,
+                               const Eigen::Vector3d& weight, double fade_length) {
   const double b = 2.0 * params.damping_ratio * std::sqrt(params.kappa * psi * mass);
   const Eigen::Vector3d to_target = estimated_target - position;
   const double fn = contact.normal_force.norm();
   const double w = ContactBlend(fn, blend_force);
-  Eigen::Vector3d force = params.kappa * psi * to_target - (1.0 - w) * params.weight_support *
-                                                               weight;
+  Eigen::Vector3d force =
+      params.kappa * psi * to_target - (1.0 - w) * params.weight_support * weight;
   if (w > 0) {  // fn > 0, so the normal is defined
     const Eigen::Vector3d n = contact.normal_force / fn;
     const Eigen::Vector3d along = to_target - to_target.dot(n) * n;  // P (T' - T)

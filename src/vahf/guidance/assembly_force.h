@@ -87,11 +87,10 @@ Eigen::Vector3d VisionError(double eta, const Eigen::Vector3d& sight_direction,
 // Eq. 5 with its random numbers drawn from the trial's streams at this
 // decision: c1..c3 from Purpose::kTargetEstimate, E_i from Purpose::kVisionError.
 Eigen::Vector3d DrawEstimatedTarget(const GuidanceParams& params, rng::StreamKey key,
-                                    std::uint64_t decision,
-                                    const Eigen::Vector3d& target,
+                                    std::uint64_t decision, const Eigen::Vector3d& target,
                                     const Eigen::Vector3d& position,
-                                    const Eigen::Vector3d& sight_direction,
-                                    double eta, double lambda_c, double psi);
+                                    const Eigen::Vector3d& sight_direction, double eta,
+                                    double lambda_c, double psi);
 
 // Eq. 7: F_AF = kappa Psi_c D_i, directed from T_i to T'_{i+1}; the vector.
 Eigen::Vector3d FreeAssemblyForce(double kappa, double psi,
@@ -109,8 +108,8 @@ Eigen::Vector3d ContactAssemblyForce(double kappa, double psi,
 
 // The push the operator adds to overcome the friction f (N) of Eq. 8,
 // bounded by what a person can push, M = max_push > 0 (0: f, unbounded):
-// f itself up to M / 2,
-// then M / 2 + (M / 2) u / (1 + u^3)^(1/3) with u = (f - M / 2) / (M / 2),
+// f itself up to M / 2, then M / 2 + (M / 2) u / (1 + u^3)^(1/3) with
+// u = (f - M / 2) / (M / 2),
 // which meets f with its first three derivatives (1, 0, 0) and rises
 // towards M: smooth enough that the integrators converge through the bend
 // as they do elsewhere (a bend with a jump in the second derivative cost
@@ -148,8 +147,8 @@ double ContactBlend(double normal_force, double blend_force);
 Eigen::Vector3d ImpedanceForce(const GuidanceParams& params, double psi, double mass,
                                const Eigen::Vector3d& position,
                                const Eigen::Vector3d& estimated_target,
-                               const Eigen::Vector3d& velocity, const FeltContact& contact,
-                               double blend_force, const Eigen::Vector3d& weight,
-                               double fade_length);
+                               const Eigen::Vector3d& velocity,
+                               const FeltContact& contact, double blend_force,
+                               const Eigen::Vector3d& weight, double fade_length);
 
 }  // namespace vahf::guidance

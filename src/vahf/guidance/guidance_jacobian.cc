@@ -27,8 +27,8 @@ double BlendSlope(double normal_force, double blend_force) {
 //   F = kappa Psi d - (1 - w) s W - w kappa Psi (d . n) n + w f a / g - b v
 // and dn = (I - n n^T) dF_n / |F_n|, dw = w' n^T dF_n,
 // da = P dd - ((d . n) I + n d^T) dn, d(a / g) = (I / g - a a^T / g^3) da.
-ImpedancePartials ImpedanceForceJacobian(const GuidanceParams& params, double psi, double mass,
-                                         const Vector3d& position,
+ImpedancePartials ImpedanceForceJacobian(const GuidanceParams& params, double psi,
+                                         double mass, const Vector3d& position,
                                          const Vector3d& estimated_target,
                                          const Vector3d&, const FeltContact& contact,
                                          double blend_force, const Vector3d& weight,
@@ -66,9 +66,9 @@ ImpedancePartials ImpedanceForceJacobian(const GuidanceParams& params, double ps
 Matrix3d InverseRightJacobian(const Vector3d& theta) {
   const double t = theta.norm();
   // The coefficient's Taylor series 1/12 + t^2/720 near 0, where it cancels.
-  const double c =
-      t < 1e-4 ? 1.0 / 12.0 + t * t / 720.0
-               : 1.0 / (t * t) - (1.0 + std::cos(t)) / (2.0 * t * std::sin(t));
+  const double c = t < 1e-4
+                       ? 1.0 / 12.0 + t * t / 720.0
+                       : 1.0 / (t * t) - (1.0 + std::cos(t)) / (2.0 * t * std::sin(t));
   const Matrix3d k = CrossMatrix(theta);
   return Matrix3d::Identity() + 0.5 * k + c * k * k;
 }
@@ -77,12 +77,14 @@ Matrix3d InverseRightJacobian(const Vector3d& theta) {
 // R -> exp([dtheta]x) R, H R^T -> (H R^T) exp(-[dtheta]x), so
 // dtheta_err = -J_r^-1(theta) dtheta, and I_w -> I_w + [dtheta]x I_w - I_w [dtheta]x.
 TorquePartials AssemblyTorqueJacobian(const GuidanceParams& params, double psi,
-                                      const Matrix3d& inertia_world, const Matrix3d& rotation,
-                                      const Matrix3d& held, const Vector3d& omega) {
+                                      const Matrix3d& inertia_world,
+                                      const Matrix3d& rotation, const Matrix3d& held,
+                                      const Vector3d& omega) {
   const Eigen::AngleAxisd error(held * rotation.transpose());
   const Vector3d theta = error.angle() * error.axis();
   const double w0 = params.torque_frequency;
-  const Vector3d y = psi * w0 * w0 * theta - 2.0 * params.torque_damping_ratio * w0 * omega;
+  const Vector3d y =
+      psi * w0 * w0 * theta - 2.0 * params.torque_damping_ratio * w0 * omega;
   TorquePartials out;
   out.rotation = -CrossMatrix(inertia_world * y) + inertia_world * CrossMatrix(y) -
                  psi * w0 * w0 * inertia_world * InverseRightJacobian(theta);

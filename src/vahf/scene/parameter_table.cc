@@ -14,8 +14,10 @@ namespace {
 std::string RuleText(const ParamSpec& s) {
   const std::string lo = NumberText(s.lo), hi = NumberText(s.hi);  // json_reader.h
   switch (s.rule) {
-    case ParamRule::kClosed: return fmt::format("in [{}, {}]", lo, hi);
-    case ParamRule::kOpenBelow: return fmt::format("in ({}, {}]", lo, hi);
+    case ParamRule::kClosed:
+      return fmt::format("in [{}, {}]", lo, hi);
+    case ParamRule::kOpenBelow:
+      return fmt::format("in ({}, {}]", lo, hi);
     case ParamRule::kCount:
       return fmt::format("integer in [{}, {}]", static_cast<std::int64_t>(s.lo),
                          static_cast<std::int64_t>(s.hi));
@@ -58,72 +60,179 @@ std::vector<ParamSpec> MakeTable() {
   // value, and exist so that no accepted value overflows the model's
   // arithmetic or stalls its integration; where a bound has a source, it says so.
   std::vector<ParamSpec> t = {
-      {"sight", "value_at_0", "1", R::kClosed, 0, 1, "f at Ang = 0 deg (Fig. 3)", VAHF_REAL(sight.value_at_0)},
-      {"sight", "plateau_from_deg", "deg", R::kClosed, 0, 180, "f = 1 from this Ang (Sec. 3.2.1: 30)", VAHF_REAL(sight.plateau_from_deg)},
-      {"sight", "plateau_to_deg", "deg", R::kClosed, 0, 180, "f = 1 up to this Ang (Sec. 3.2.1: 45)", VAHF_REAL(sight.plateau_to_deg)},
-      {"sight", "value_at_180", "1", R::kClosed, 0, 1, "f at Ang = 180 deg", VAHF_REAL(sight.value_at_180)},
-      {"glance", "value_at_0", "1", R::kClosed, 0, 1, "g at Anp = 0 deg (looking straight down, Fig. 5)", VAHF_REAL(glance.value_at_0)},
-      {"glance", "plateau_from_deg", "deg", R::kClosed, 0, 180, "g = 1 from this Anp (Sec. 3.2.2: 30)", VAHF_REAL(glance.plateau_from_deg)},
-      {"glance", "plateau_to_deg", "deg", R::kClosed, 0, 180, "g = 1 up to this Anp (Sec. 3.2.2: 90)", VAHF_REAL(glance.plateau_to_deg)},
-      {"glance", "value_at_180", "1", R::kClosed, 0, 1, "g at Anp = 180 deg (looking straight up)", VAHF_REAL(glance.value_at_180)},
+      {"sight", "value_at_0", "1", R::kClosed, 0, 1, "f at Ang = 0 deg (Fig. 3)",
+       VAHF_REAL(sight.value_at_0)},
+      {"sight", "plateau_from_deg", "deg", R::kClosed, 0, 180,
+       "f = 1 from this Ang (Sec. 3.2.1: 30)", VAHF_REAL(sight.plateau_from_deg)},
+      {"sight", "plateau_to_deg", "deg", R::kClosed, 0, 180,
+       "f = 1 up to this Ang (Sec. 3.2.1: 45)", VAHF_REAL(sight.plateau_to_deg)},
+      {"sight", "value_at_180", "1", R::kClosed, 0, 1, "f at Ang = 180 deg",
+       VAHF_REAL(sight.value_at_180)},
+      {"glance", "value_at_0", "1", R::kClosed, 0, 1,
+       "g at Anp = 0 deg (looking straight down, Fig. 5)", VAHF_REAL(glance.value_at_0)},
+      {"glance", "plateau_from_deg", "deg", R::kClosed, 0, 180,
+       "g = 1 from this Anp (Sec. 3.2.2: 30)", VAHF_REAL(glance.plateau_from_deg)},
+      {"glance", "plateau_to_deg", "deg", R::kClosed, 0, 180,
+       "g = 1 up to this Anp (Sec. 3.2.2: 90)", VAHF_REAL(glance.plateau_to_deg)},
+      {"glance", "value_at_180", "1", R::kClosed, 0, 1,
+       "g at Anp = 180 deg (looking straight up)", VAHF_REAL(glance.value_at_180)},
       // A reach breakpoint past twice the arm or the stature is a unit mistake.
-      {"reach", "d1_arm_fraction", "1", R::kOpenBelow, 0, 2, "D1 = this * arm length (Sec. 3.2.2: 0.85)", VAHF_REAL(reach.d1_arm_fraction)},
-      {"reach", "d2_height_fraction", "1", R::kOpenBelow, 0, 2, "D2 = this * height (Sec. 3.2.2: 0.39)", VAHF_REAL(reach.d2_height_fraction)},
-      {"reach", "d3_height_fraction", "1", R::kOpenBelow, 0, 2, "D3 = this * height (Sec. 3.2.2: 0.68)", VAHF_REAL(reach.d3_height_fraction)},
-      {"reach", "value_at_d2", "1", R::kClosed, 0, 1, "r at D2 (Fig. 4); r = 1 up to D1, 0 at D3", VAHF_REAL(reach.value_at_d2)},
-      {"fatigue", "k", "1", R::kOpenBelow, 0, 1e3, "K of Eq. 4 (Sec. 3.2.3: 6)", VAHF_REAL(fatigue.k)},
+      {"reach", "d1_arm_fraction", "1", R::kOpenBelow, 0, 2,
+       "D1 = this * arm length (Sec. 3.2.2: 0.85)", VAHF_REAL(reach.d1_arm_fraction)},
+      {"reach", "d2_height_fraction", "1", R::kOpenBelow, 0, 2,
+       "D2 = this * height (Sec. 3.2.2: 0.39)", VAHF_REAL(reach.d2_height_fraction)},
+      {"reach", "d3_height_fraction", "1", R::kOpenBelow, 0, 2,
+       "D3 = this * height (Sec. 3.2.2: 0.68)", VAHF_REAL(reach.d3_height_fraction)},
+      {"reach", "value_at_d2", "1", R::kClosed, 0, 1,
+       "r at D2 (Fig. 4); r = 1 up to D1, 0 at D3", VAHF_REAL(reach.value_at_d2)},
+      {"fatigue", "k", "1", R::kOpenBelow, 0, 1e3, "K of Eq. 4 (Sec. 3.2.3: 6)",
+       VAHF_REAL(fatigue.k)},
       // Eq. 6's 1600 kcal is 6.69e6 J; 1e10 J leaves three orders above it.
-      {"fatigue", "a_max", "J", R::kOpenBelow, 0, 1e10, "A at which Psi_c = 0 (Eq. 6: 1600 kcal)", VAHF_REAL(fatigue.a_max)},
-      {"fatigue", "psi_floor", "1", R::kClosed, 0, 1, "Psi_c at or below which the operator is exhausted", VAHF_REAL(fatigue.psi_floor)},
-      {"guidance", "kappa", "N/m", R::kOpenBelow, 0, 1e6, "assembly force coefficient kappa (Eqs. 7, 8)", VAHF_REAL(guidance.kappa)},
-      {"guidance", "mode", "-", R::kChoice, 0, 0, "operator: assembly force and torque act; none: they do not", nullptr, nullptr, VAHF_TEXT(guidance.mode), {"operator", "none"}},
-      {"guidance", "damping_ratio", "1", R::kClosed, 0, 100, "damping of the force impedance, fraction of critical", VAHF_REAL(guidance.damping_ratio)},
-      {"guidance", "weight_support", "1", R::kClosed, 0, 1, "fraction of the weight the operator carries in free motion", VAHF_REAL(guidance.weight_support)},
+      {"fatigue", "a_max", "J", R::kOpenBelow, 0, 1e10,
+       "A at which Psi_c = 0 (Eq. 6: 1600 kcal)", VAHF_REAL(fatigue.a_max)},
+      {"fatigue", "psi_floor", "1", R::kClosed, 0, 1,
+       "Psi_c at or below which the operator is exhausted", VAHF_REAL(fatigue.psi_floor)},
+      {"guidance", "kappa", "N/m", R::kOpenBelow, 0, 1e6,
+       "assembly force coefficient kappa (Eqs. 7, 8)", VAHF_REAL(guidance.kappa)},
+      {"guidance",
+       "mode",
+       "-",
+       R::kChoice,
+       0,
+       0,
+       "operator: assembly force and torque act; none: they do not",
+       nullptr,
+       nullptr,
+       VAHF_TEXT(guidance.mode),
+       {"operator", "none"}},
+      {"guidance", "damping_ratio", "1", R::kClosed, 0, 100,
+       "damping of the force impedance, fraction of critical",
+       VAHF_REAL(guidance.damping_ratio)},
+      {"guidance", "weight_support", "1", R::kClosed, 0, 1,
+       "fraction of the weight the operator carries in free motion",
+       VAHF_REAL(guidance.weight_support)},
       // Hand and forearm are about 2.2 % of body mass (Winter, Biomechanics and
       // Motor Control of Human Movement, 4th ed., 2009, Table 4.1): under 3 kg.
-      {"guidance", "hand_mass", "kg", R::kClosed, 0, 20, "hand and forearm mass moving with the grasped part", VAHF_REAL(guidance.hand_mass)},
-      {"guidance", "torque_frequency", "rad/s", R::kOpenBelow, 0, 1e4, "natural frequency of the assembly torque impedance", VAHF_REAL(guidance.torque_frequency)},
-      {"guidance", "torque_damping_ratio", "1", R::kClosed, 0, 100, "damping of the torque impedance, fraction of critical", VAHF_REAL(guidance.torque_damping_ratio)},
-      {"guidance", "torque_sigma_deg", "deg", R::kClosed, 0, 180, "error of the held orientation per axis at eta = 1", VAHF_REAL(guidance.torque_sigma_deg)},
-      {"guidance", "contact_blend", "1", R::kClosed, 1e-3, 1e3, "contact normal force, in part weights, over which Eq. 7 passes into Eq. 8", VAHF_REAL(guidance.contact_blend)},
-      {"guidance", "max_push", "N", R::kClosed, 0, 1e5, "largest push the operator adds to overcome friction (Eq. 8); 0: unbounded, the paper's", VAHF_REAL(guidance.max_push)},
-      {"guidance", "vision_sigma_depth", "m", R::kClosed, 0, 10, "E_i scale along the sight line at eta = 1 (Eq. 5)", VAHF_REAL(guidance.vision_sigma_depth)},
-      {"guidance", "vision_sigma_lateral", "m", R::kClosed, 0, 10, "E_i scale across the sight line at eta = 1", VAHF_REAL(guidance.vision_sigma_lateral)},
-      {"contact", "stiffness", "Pa/m", R::kClosed, 1, 1e13, "normal pressure per metre of penetration", VAHF_REAL(contact.stiffness)},
-      {"contact", "onset_depth", "m", R::kClosed, 1e-9, 1e-2, "depth of the C1 quadratic onset of the normal law", VAHF_REAL(contact.onset_depth)},
-      {"contact", "dissipation", "s/m", R::kClosed, 0, 1e3, "Hunt-Crossley dissipation", VAHF_REAL(contact.dissipation)},
-      {"contact", "friction_transition_speed", "m/s", R::kClosed, 1e-6, 1, "slip speed of the regularised Coulomb law", VAHF_REAL(contact.friction_transition_speed)},
-      {"contact", "shell_spacing", "m", R::kClosed, 1e-5, 1, "point spacing of the moving part's contact shell (at most 1e6 points: see scene rules)", VAHF_REAL(contact.shell_spacing)},
-      {"contact", "line_stiffness", "Pa", R::kClosed, 1, 1e13, "line load per metre of penetration per metre of a static part's convex edge", VAHF_REAL(contact.line_stiffness)},
-      {"contact", "rim_spacing", "m", R::kClosed, 1e-5, 1, "sample spacing along the parts' convex edges (rims; at most 1e6 samples)", VAHF_REAL(contact.rim_spacing)},
-      {"contact", "penetration_fraction", "1", R::kOpenBelow, 0, 10, "penetration bound as a fraction of the smallest radial clearance (a warning past it)", VAHF_REAL(contact.penetration_fraction)},
-      {"contact", "model", "-", R::kChoice, 0, 0, ContactModelHelp().c_str(), nullptr, nullptr, VAHF_TEXT(contact.model), contact::ContactModelNames()},
-      {"contact", "rule_contact_length", "m", R::kClosed, 1e-4, 10, "edge length that carries the largest steady load (resolving model)", VAHF_REAL(contact.rule_contact_length)},
-      {"contact", "rule_depth_fraction", "1", R::kOpenBelow, 0, 1, "share of the bound the largest steady load may sink (resolving model)", VAHF_REAL(contact.rule_depth_fraction)},
-      {"visibility", "mode", "-", R::kChoice, 0, 0, "raycast (Eq. 1), constant, or off (V = 1)", nullptr, nullptr, VAHF_TEXT(visibility.mode), {"raycast", "constant", "off"}},
-      {"visibility", "value", "1", R::kClosed, 0, 1, "V when mode is constant", VAHF_REAL(visibility.value)},
-      {"visibility", "grid", "rays", R::kCount, 1, visibility::kMaxGrid, "N of the N x N ray grid", nullptr, VAHF_COUNT(visibility.grid)},
-      {"visibility", "tessellation_tolerance", "m", R::kClosed, 1e-6, 0.1, "chord error of part meshes", VAHF_REAL(visibility.tessellation_tolerance)},
+      {"guidance", "hand_mass", "kg", R::kClosed, 0, 20,
+       "hand and forearm mass moving with the grasped part",
+       VAHF_REAL(guidance.hand_mass)},
+      {"guidance", "torque_frequency", "rad/s", R::kOpenBelow, 0, 1e4,
+       "natural frequency of the assembly torque impedance",
+       VAHF_REAL(guidance.torque_frequency)},
+      {"guidance", "torque_damping_ratio", "1", R::kClosed, 0, 100,
+       "damping of the torque impedance, fraction of critical",
+       VAHF_REAL(guidance.torque_damping_ratio)},
+      {"guidance", "torque_sigma_deg", "deg", R::kClosed, 0, 180,
+       "error of the held orientation per axis at eta = 1",
+       VAHF_REAL(guidance.torque_sigma_deg)},
+      {"guidance", "contact_blend", "1", R::kClosed, 1e-3, 1e3,
+       "contact normal force, in part weights, over which Eq. 7 passes into Eq. 8",
+       VAHF_REAL(guidance.contact_blend)},
+      {"guidance", "max_push", "N", R::kClosed, 0, 1e5,
+       "largest push the operator adds to overcome friction (Eq. 8); 0: unbounded, the "
+       "paper's",
+       VAHF_REAL(guidance.max_push)},
+      {"guidance", "vision_sigma_depth", "m", R::kClosed, 0, 10,
+       "E_i scale along the sight line at eta = 1 (Eq. 5)",
+       VAHF_REAL(guidance.vision_sigma_depth)},
+      {"guidance", "vision_sigma_lateral", "m", R::kClosed, 0, 10,
+       "E_i scale across the sight line at eta = 1",
+       VAHF_REAL(guidance.vision_sigma_lateral)},
+      {"contact", "stiffness", "Pa/m", R::kClosed, 1, 1e13,
+       "normal pressure per metre of penetration", VAHF_REAL(contact.stiffness)},
+      {"contact", "onset_depth", "m", R::kClosed, 1e-9, 1e-2,
+       "depth of the C1 quadratic onset of the normal law",
+       VAHF_REAL(contact.onset_depth)},
+      {"contact", "dissipation", "s/m", R::kClosed, 0, 1e3, "Hunt-Crossley dissipation",
+       VAHF_REAL(contact.dissipation)},
+      {"contact", "friction_transition_speed", "m/s", R::kClosed, 1e-6, 1,
+       "slip speed of the regularised Coulomb law",
+       VAHF_REAL(contact.friction_transition_speed)},
+      {"contact", "shell_spacing", "m", R::kClosed, 1e-5, 1,
+       "point spacing of the moving part's contact shell (at most 1e6 points: see scene "
+       "rules)",
+       VAHF_REAL(contact.shell_spacing)},
+      {"contact", "line_stiffness", "Pa", R::kClosed, 1, 1e13,
+       "line load per metre of penetration per metre of a static part's convex edge",
+       VAHF_REAL(contact.line_stiffness)},
+      {"contact", "rim_spacing", "m", R::kClosed, 1e-5, 1,
+       "sample spacing along the parts' convex edges (rims; at most 1e6 samples)",
+       VAHF_REAL(contact.rim_spacing)},
+      {"contact", "penetration_fraction", "1", R::kOpenBelow, 0, 10,
+       "penetration bound as a fraction of the smallest radial clearance (a warning past "
+       "it)",
+       VAHF_REAL(contact.penetration_fraction)},
+      {"contact", "model", "-", R::kChoice, 0, 0, ContactModelHelp().c_str(), nullptr,
+       nullptr, VAHF_TEXT(contact.model), contact::ContactModelNames()},
+      {"contact", "rule_contact_length", "m", R::kClosed, 1e-4, 10,
+       "edge length that carries the largest steady load (resolving model)",
+       VAHF_REAL(contact.rule_contact_length)},
+      {"contact", "rule_depth_fraction", "1", R::kOpenBelow, 0, 1,
+       "share of the bound the largest steady load may sink (resolving model)",
+       VAHF_REAL(contact.rule_depth_fraction)},
+      {"visibility",
+       "mode",
+       "-",
+       R::kChoice,
+       0,
+       0,
+       "raycast (Eq. 1), constant, or off (V = 1)",
+       nullptr,
+       nullptr,
+       VAHF_TEXT(visibility.mode),
+       {"raycast", "constant", "off"}},
+      {"visibility", "value", "1", R::kClosed, 0, 1, "V when mode is constant",
+       VAHF_REAL(visibility.value)},
+      {"visibility", "grid", "rays", R::kCount, 1, visibility::kMaxGrid,
+       "N of the N x N ray grid", nullptr, VAHF_COUNT(visibility.grid)},
+      {"visibility", "tessellation_tolerance", "m", R::kClosed, 1e-6, 0.1,
+       "chord error of part meshes", VAHF_REAL(visibility.tessellation_tolerance)},
       // 1 ms to 10 s: the range issue 13's stability suite spans; the paper's
       // operator decides about every 0.1 s (parameters.h).
-      {"simulation", "decision_interval", "s", R::kClosed, 1e-3, 10, "time between the operator's decisions", VAHF_REAL(simulation.decision_interval)},
-      {"simulation", "time_limit", "s", R::kOpenBelow, 0, 1e5, "a trial still running then ends as timeout", VAHF_REAL(simulation.time_limit)},
-      {"simulation", "completion_distance", "m", R::kClosed, 1e-7, 1, "d_th: complete when |T - T_t| is below it (Sec. 3.1)", VAHF_REAL(simulation.completion_distance)},
-      {"simulation", "completion_angle_deg", "deg", R::kOpenBelow, 0, 180, "and the angle to the target orientation is below it", VAHF_REAL(simulation.completion_angle_deg)},
-      {"simulation", "jam_time", "s", R::kClosed, 1e-3, 1e5, "in contact this long without progress: jammed", VAHF_REAL(simulation.jam_time)},
-      {"simulation", "jam_progress", "m", R::kClosed, 1e-9, 1, "approach to the target that counts as progress", VAHF_REAL(simulation.jam_progress)},
-      {"simulation", "divergence_speed", "m/s", R::kClosed, 1e-3, 1e5, "a part point faster than this: the integration diverged (numerical_failure)", VAHF_REAL(simulation.divergence_speed)},
-      {"simulation", "integrator", "-", R::kChoice, 0, 0, StepperHelp().c_str(), nullptr, nullptr, VAHF_TEXT(simulation.integrator), StepperNames()},
+      {"simulation", "decision_interval", "s", R::kClosed, 1e-3, 10,
+       "time between the operator's decisions", VAHF_REAL(simulation.decision_interval)},
+      {"simulation", "time_limit", "s", R::kOpenBelow, 0, 1e5,
+       "a trial still running then ends as timeout", VAHF_REAL(simulation.time_limit)},
+      {"simulation", "completion_distance", "m", R::kClosed, 1e-7, 1,
+       "d_th: complete when |T - T_t| is below it (Sec. 3.1)",
+       VAHF_REAL(simulation.completion_distance)},
+      {"simulation", "completion_angle_deg", "deg", R::kOpenBelow, 0, 180,
+       "and the angle to the target orientation is below it",
+       VAHF_REAL(simulation.completion_angle_deg)},
+      {"simulation", "jam_time", "s", R::kClosed, 1e-3, 1e5,
+       "in contact this long without progress: jammed", VAHF_REAL(simulation.jam_time)},
+      {"simulation", "jam_progress", "m", R::kClosed, 1e-9, 1,
+       "approach to the target that counts as progress",
+       VAHF_REAL(simulation.jam_progress)},
+      {"simulation", "divergence_speed", "m/s", R::kClosed, 1e-3, 1e5,
+       "a part point faster than this: the integration diverged (numerical_failure)",
+       VAHF_REAL(simulation.divergence_speed)},
+      {"simulation", "integrator", "-", R::kChoice, 0, 0, StepperHelp().c_str(), nullptr,
+       nullptr, VAHF_TEXT(simulation.integrator), StepperNames()},
       // Simbody's Integrator::setAccuracy asserts 0 < accuracy < 1; below
       // 1e-12 a relative error test nears the rounding of double (2.2e-16)
       // times the state's size and the step size collapses.
-      {"simulation", "accuracy", "1", R::kClosed, 1e-12, 0.5, "integrator relative accuracy", VAHF_REAL(simulation.accuracy)},
-      {"simulation", "fixed_step", "s", R::kClosed, 1e-7, 1, "step of the FixedStep integrator", VAHF_REAL(simulation.fixed_step)},
-      {"simulation", "velocity_time_scale", "s", R::kClosed, 1e-6, 1e3, "CVODE: velocity tolerance = accuracy / this (m/s)", VAHF_REAL(simulation.velocity_time_scale)},
-      {"simulation", "max_order", "-", R::kCount, 1, 5, "CVODE: highest BDF order (2 and below are A-stable)", nullptr, VAHF_COUNT(simulation.max_order)},
-      {"simulation", "step_floor", "s", R::kClosed, 1e-15, 1, "an accepted step shorter than this is a warning", VAHF_REAL(simulation.step_floor)},
-      {"simulation", "max_steps", "steps", R::kCount, 1, 1e9, "work budget: a trial still running after this many accepted steps ends as step_budget", nullptr, VAHF_COUNT(simulation.max_steps)},
-      {"simulation", "max_contact_tests", "tests", R::kClosed, 1, 1e15, "work budget: a trial still running after this many contact tests (point and rim queries and the profile edges they examine) ends as step_budget", VAHF_REAL(simulation.max_contact_tests)},
+      {"simulation", "accuracy", "1", R::kClosed, 1e-12, 0.5,
+       "integrator relative accuracy", VAHF_REAL(simulation.accuracy)},
+      {"simulation", "fixed_step", "s", R::kClosed, 1e-7, 1,
+       "step of the FixedStep integrator", VAHF_REAL(simulation.fixed_step)},
+      {"simulation", "velocity_time_scale", "s", R::kClosed, 1e-6, 1e3,
+       "CVODE: velocity tolerance = accuracy / this (m/s)",
+       VAHF_REAL(simulation.velocity_time_scale)},
+      {"simulation", "max_order", "-", R::kCount, 1, 5,
+       "CVODE: highest BDF order (2 and below are A-stable)", nullptr,
+       VAHF_COUNT(simulation.max_order)},
+      {"simulation", "step_floor", "s", R::kClosed, 1e-15, 1,
+       "an accepted step shorter than this is a warning",
+       VAHF_REAL(simulation.step_floor)},
+      {"simulation", "max_steps", "steps", R::kCount, 1, 1e9,
+       "work budget: a trial still running after this many accepted steps ends as "
+       "step_budget",
+       nullptr, VAHF_COUNT(simulation.max_steps)},
+      {"simulation", "max_contact_tests", "tests", R::kClosed, 1, 1e15,
+       "work budget: a trial still running after this many contact tests (point and rim "
+       "queries and the profile edges they examine) ends as step_budget",
+       VAHF_REAL(simulation.max_contact_tests)},
   };
   return t;
 }
@@ -157,13 +266,19 @@ const ParamSpec* FindParam(const std::string& name) {
 
 void ReadParamValue(const ParamSpec& s, const JsonNode& v, Parameters* p) {
   switch (s.rule) {
-    case ParamRule::kClosed: s.real(*p) = v.InRange(s.lo, s.hi); break;
-    case ParamRule::kOpenBelow: s.real(*p) = v.InOpenClosed(s.lo, s.hi); break;
+    case ParamRule::kClosed:
+      s.real(*p) = v.InRange(s.lo, s.hi);
+      break;
+    case ParamRule::kOpenBelow:
+      s.real(*p) = v.InOpenClosed(s.lo, s.hi);
+      break;
     case ParamRule::kCount:
       s.count(*p) = static_cast<int>(
           v.Integer(static_cast<std::int64_t>(s.lo), static_cast<std::int64_t>(s.hi)));
       break;
-    case ParamRule::kChoice: s.text(*p) = v.Choice(s.choices); break;
+    case ParamRule::kChoice:
+      s.text(*p) = v.Choice(s.choices);
+      break;
   }
 }
 

@@ -21,18 +21,18 @@ struct SimulationParams {
   // (Keele and Posner, J. Exp. Psychol. 77 (1968) 155-158: 190-260 ms; Elliott
   // et al., Psychol. Bull. 127 (2001) 342-357: about 100 ms).
   double decision_interval = 0.1;
-  double time_limit = 30.0;              // s: status timeout past it
-  double completion_distance = 1e-3;     // d_th of Sec. 3.1, m
-  double completion_angle_deg = 2.0;     // angle to the target orientation, deg
-  double jam_time = 2.0;                 // s in contact without progress: jammed
-  double jam_progress = 1e-4;            // m of approach that counts as progress
+  double time_limit = 30.0;           // s: status timeout past it
+  double completion_distance = 1e-3;  // d_th of Sec. 3.1, m
+  double completion_angle_deg = 2.0;  // angle to the target orientation, deg
+  double jam_time = 2.0;              // s in contact without progress: jammed
+  double jam_progress = 1e-4;         // m of approach that counts as progress
   // A point of the part moving faster than this, m/s, means the integration
   // diverged (status numerical_failure): hand-guided parts move at a few m/s,
   // and a part dropped from a 1 m workbench lands at 4.4 m/s.
   double divergence_speed = 20.0;
   std::string integrator = "RungeKuttaMerson";
-  double accuracy = 1e-4;                // integrator relative accuracy
-  double fixed_step = 1e-4;              // s, for integrator "FixedStep"
+  double accuracy = 1e-4;    // integrator relative accuracy
+  double fixed_step = 1e-4;  // s, for integrator "FixedStep"
   // CVODE only: the time over which a velocity error counts as much as the
   // position error it would make, s. CVODE's absolute tolerances are
   // `accuracy` m for the position, accuracy / velocity_time_scale m/s for the

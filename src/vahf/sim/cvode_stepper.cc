@@ -12,10 +12,10 @@
 #include <memory>
 #include <string>
 
+#include "vahf/core/error.h"
 #include "vahf/sim/decisions.h"
 #include "vahf/sim/rigid_body.h"
 #include "vahf/sim/rigid_body_jacobian.h"
-#include "vahf/core/error.h"
 #include "vahf/sim/step_checks.h"
 
 namespace vahf::sim::internal {
@@ -28,7 +28,9 @@ struct Problem {
   std::string last_error;  // CVODE's last message, for the failure's detail
 };
 
-Eigen::Map<BodyState> Of(N_Vector v) { return Eigen::Map<BodyState>(N_VGetArrayPointer(v)); }
+Eigen::Map<BodyState> Of(N_Vector v) {
+  return Eigen::Map<BodyState>(N_VGetArrayPointer(v));
+}
 
 int Rhs(realtype, N_Vector y, N_Vector ydot, void* data) {
   Problem& p = *static_cast<Problem*>(data);
@@ -70,7 +72,8 @@ int Root(realtype, N_Vector y, realtype* g, void* data) {
 }
 
 void OnError(int, const char* module, const char* function, char* message, void* data) {
-  static_cast<Problem*>(data)->last_error = fmt::format("{} {}: {}", module, function, message);
+  static_cast<Problem*>(data)->last_error =
+      fmt::format("{} {}: {}", module, function, message);
 }
 
 // SUNDIALS objects, freed in reverse order of creation.
@@ -154,7 +157,8 @@ double IntegrateWithCvode(TrialContext& c, double sample_interval,
     TrialCounters done;
     long run_conv_fails = 0;
     const auto harvest = [&] {
-      long steps = 0, error_fails = 0, conv_fails = 0, rhs = 0, jac_rhs = 0, jacobians = 0;
+      long steps = 0, error_fails = 0, conv_fails = 0, rhs = 0, jac_rhs = 0,
+           jacobians = 0;
       CVodeGetNumSteps(cv.mem, &steps);
       CVodeGetNumJacEvals(cv.mem, &jacobians);
       CVodeGetNumErrTestFails(cv.mem, &error_fails);
@@ -207,8 +211,8 @@ double IntegrateWithCvode(TrialContext& c, double sample_interval,
           BodyState ys = Of(cv.dky);
           NormaliseQuaternion(&ys);
           const contact::RigidMotion ms = MotionOf(ys);
-          c.samples.push_back(
-              c.SampleRow(ts, ms, model.LoadsAt(ms, p.held, &c.contact_counters), p.held.psi));
+          c.samples.push_back(c.SampleRow(
+              ts, ms, model.LoadsAt(ms, p.held, &c.contact_counters), p.held.psi));
         }
         if (flag == CV_ROOT_RETURN) {
           c.ended = Status::kCompleted;
