@@ -210,23 +210,41 @@ double DeepestAngle(const PlacedCircle& c, const SignedDistance& solid, const Ar
   CircleField::Value a = field(lo), b = field(hi);
   const auto lower = [&] { return a.f <= b.f ? lo : hi; };
   if (!(a.slope < 0 && b.slope > 0)) return lower();  // no interior minimum bracketed
-  // The slope changes sign at the minimum, also where two faces meet in a
-  // kink (a corner), where the slope jumps: regula falsi on the slope with
-  // the Illinois halving, which keeps the bracket and converges on both.
-  int kept = 0;  // -1: lo moved last, +1: hi moved last
+  // The slope changes sign at the minimum. Where the rim crosses the solid's
+  // medial axis (equally deep under two faces) f has a kink there, a V;
+  // elsewhere a smooth bowl. A secant of the slope (regula falsi) finds a
+  // bowl's bottom, and the meeting point of the ends' tangents a V's point
+  // once the ends lie on its straight arms; either creeps when an end is
+  // far out on a curved arm. So the steps cycle: a secant, a meeting point,
+  // and a bisection when those two did not halve the bracket (Dekker's
+  // safeguard: the bracket halves at least every third query), else a
+  // second meeting point. A meeting point is kept a hair inside the
+  // bracket: a V's point found at an end, its slope one arm's, is then
+  // bracketed by the probe beside it and the bracket closes to the
+  // tolerance. It stops when f can change by less than kDeepestTolerance
+  // over the bracket (f convex on it, the premise of the search: its slope
+  // lies between the ends').
+  double checkpoint = hi - lo;  // the bracket's width at the cycle's start
   for (int i = 0; i < kMaxDeepest; ++i) {
     if ((hi - lo) * std::max(-a.slope, b.slope) < kDeepestTolerance) break;
-    double x = lo - a.slope * (hi - lo) / (b.slope - a.slope);
+    const int phase = i % 3;
+    if (phase == 0) checkpoint = hi - lo;
+    double x;
+    if (phase == 0) {
+      x = lo - a.slope * (hi - lo) / (b.slope - a.slope);
+    } else if (phase == 2 && hi - lo > 0.5 * checkpoint) {
+      x = 0.5 * (lo + hi);
+    } else {
+      const double hair = 0.5 * kDeepestTolerance / std::max(-a.slope, b.slope);
+      const double meet = (b.f - a.f + a.slope * lo - b.slope * hi) / (a.slope - b.slope);
+      x = std::min(std::max(meet, lo + hair), hi - hair);
+    }
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
     const CircleField::Value v = field(x);
     if (v.slope < 0) {
       lo = x, a = v;
-      if (kept == -1) b.slope *= 0.5;
-      kept = -1;
     } else if (v.slope > 0) {
       hi = x, b = v;
-      if (kept == 1) a.slope *= 0.5;
-      kept = 1;
     } else {
       return x;
     }
