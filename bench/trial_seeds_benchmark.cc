@@ -39,9 +39,10 @@ double Quantile(const std::vector<double>& sorted, double q) {
 // `integrator` at accuracy 1e-4 (and CVODE's default velocity time scale),
 // or, when empty, the scene's own setting; with `contact_model`, that model,
 // at most 100 000 steps a trial (a trial that stalls at an impact ends
-// step_budget in about 2 s instead of 20 s), CVODE's BDF order at most 2 and
-// the operator's friction push bounded at 100 N (what a contact held by the
-// hardening barrier needs: docs/physics.md).
+// step_budget in about 2 s instead of 20 s), CVODE's BDF order at most 2, a
+// Jacobian at least every 5 steps and the operator's friction push bounded
+// at 100 N (what a contact held by the hardening barrier needs:
+// docs/physics.md).
 void Seeds(benchmark::State& state, const std::string& scene_file, int position,
            const std::string& integrator, const std::string& contact_model = "") {
   vahf::scene::Scene scene = vahf::scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
@@ -50,6 +51,7 @@ void Seeds(benchmark::State& state, const std::string& scene_file, int position,
     scene.params.contact.model = contact_model;
     scene.params.simulation.max_steps = 100000;
     scene.params.simulation.max_order = 2;
+    scene.params.simulation.jacobian_interval = 5;
     scene.params.guidance.max_push = 100;
   }
   if (!integrator.empty()) {

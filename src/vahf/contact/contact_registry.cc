@@ -26,6 +26,7 @@ BuiltContact Penalty(const ContactSetup& s, const std::vector<const ContactBody*
   out.shell_points = static_cast<std::int64_t>(shell.size());
   out.stiffness = params.stiffness;
   out.line_stiffness = rims ? params.line_stiffness : 0.0;
+  out.barrier_depth = params.barrier_depth;
   out.model = std::make_shared<PenaltyContact>(
       std::move(shell), SignedDistance(*s.moving.shape), s.moving.bounding_radius,
       s.moving.friction, std::move(obstacles), params, rims_of(*s.moving.shape));
@@ -85,6 +86,7 @@ BuiltContact Revolved(const ContactSetup& s) {
   BuiltContact out;
   out.stiffness = p.stiffness;
   out.line_stiffness = p.line_stiffness;
+  out.barrier_depth = p.barrier_depth;
   out.model = std::make_shared<RevolvedContact>(
       RevolvedContact::Make(*moving, Eigen::Isometry3d::Identity(), s.moving.friction,
                             s.moving.bounding_radius),

@@ -42,6 +42,7 @@ struct BuiltContact {
   std::shared_ptr<const ContactModel> model;
   double stiffness = 0;       // Pa/m, the face law's
   double line_stiffness = 0;  // Pa, the rim law's; 0: no rims
+  double barrier_depth = 0;   // m, the hardening barrier's b; 0: no barrier
   std::int64_t shell_points = 0;
 };
 

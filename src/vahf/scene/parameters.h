@@ -55,6 +55,14 @@ struct SimulationParams {
   // order 3-5 grows the oscillation until the part diverges (measured on the
   // resolved peg: docs/physics.md, Integrators); order 2 holds it.
   int max_order = 5;
+  // CVODE: the most steps it takes on one Jacobian (CVodeSetJacEvalFrequency;
+  // CVODE's own default, 51). A Jacobian taken in contact and kept after the
+  // contact has let go makes each step's single Newton correction point the
+  // wrong way while the correction stays small enough to pass CVODE's
+  // convergence test: the resolved peg's angular velocity then grew 1.1-fold
+  // a microsecond with no contact until the part passed divergence_speed
+  // (docs/physics.md, Integrators). 5 holds it there.
+  int jacobian_interval = 51;
   // An accepted step shorter than this, s, is recorded as a warning
   // (step_size_floor): the integrator is resolving something far faster than
   // the contact oscillation (about 1e-4 s) or sticking friction (a few
