@@ -183,6 +183,7 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       {"precision.json", "precision"},
       {"precision_peg.json", "precision"},
       {"precision_cylinder.json", "precision"},
+      {"precision_peg_resolved.json", "precision"},
       {"calibrate_synthetic.json", "calibrate"},
       {"calibrate_paper.json", "calibrate"},
       {"compare_synthetic.json", "compare"},
