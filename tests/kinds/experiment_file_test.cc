@@ -5,7 +5,6 @@
 // assembly_time.json are GB/T 10000-1988's (data/anthropometry/gb10000_1988.csv);
 // and every malformed variant throws vahf::InputError naming the file that
 // holds the fault, the exact JSON pointer, the value and the rule broken.
-#include "vahf/kinds/kind.h"
 #include "vahf/scene/experiment_file.h"
 
 #include <gmock/gmock.h>
@@ -24,6 +23,7 @@
 
 #include "support/test_files.h"
 #include "vahf/core/error.h"
+#include "vahf/kinds/kind.h"
 #include "vahf/scene/scene_loader.h"
 
 namespace vahf::scene {
@@ -33,10 +33,10 @@ using kinds::ParseExperiment;
 namespace {
 
 using ::nlohmann::json;
-using testing::Lower;
-using testing::WriteFile;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
+using testing::Lower;
+using testing::WriteFile;
 
 std::string SourcePath(const std::string& relative) {
   return std::string(VAHF_SOURCE_DIR) + "/" + relative;
@@ -121,12 +121,15 @@ json Precision() {
           {"kind", "precision"},
           {"seed", 3},
           {"trials", 4},
-          {"scenes", {SourcePath("experiments/scenes/peg_in_hole.json"),
-                      {{"scene", CylinderScene()}, {"trials", 2}}}},
+          {"scenes",
+           {SourcePath("experiments/scenes/peg_in_hole.json"),
+            {{"scene", CylinderScene()}, {"trials", 2}}}},
           {"reference", Accuracy("RungeKuttaMerson", 1e-8)},
           {"settings",
-           {Accuracy("RungeKuttaMerson", 1e-3), Accuracy("CPodes", 2.5e-5),
-            {{"visibility/grid", 16}}, {{"contact/shell_spacing", 0.004}},
+           {Accuracy("RungeKuttaMerson", 1e-3),
+            Accuracy("CPodes", 2.5e-5),
+            {{"visibility/grid", 16}},
+            {{"contact/shell_spacing", 0.004}},
             {{"simulation/accuracy", 1e-5}}}},
           {"noise_trials", 10}};
 }
@@ -699,7 +702,8 @@ TEST(PaperErrorsTest, LongValueKeepsBothEnds) {
     EXPECT_EQ(e.where(), "/scene") << e.what();
     EXPECT_LE(e.value().size(), 100u) << e.value();
     EXPECT_THAT(e.value(), ::testing::StartsWith("\"/start")) << e.value();
-    EXPECT_THAT(e.value(), ::testing::EndsWith("/hydraulic_cylinder.json\"")) << e.value();
+    EXPECT_THAT(e.value(), ::testing::EndsWith("/hydraulic_cylinder.json\""))
+        << e.value();
     EXPECT_THAT(e.value(), HasSubstr("...")) << e.value();
   }
 }
@@ -780,9 +784,9 @@ TEST(PrecisionTest, ScenesReferenceAndSettingsLoad) {
     labels.push_back(s.label);
     pointers.push_back(s.pointer);
   }
-  EXPECT_THAT(labels, ElementsAre("RungeKuttaMerson 1e-3", "CPodes 2.5e-5",
-                                  "visibility/grid 16", "contact/shell_spacing 4e-3",
-                                  "simulation/accuracy 1e-5"));
+  EXPECT_THAT(labels,
+              ElementsAre("RungeKuttaMerson 1e-3", "CPodes 2.5e-5", "visibility/grid 16",
+                          "contact/shell_spacing 4e-3", "simulation/accuracy 1e-5"));
   EXPECT_THAT(pointers, ElementsAre("/settings/0", "/settings/1", "/settings/2",
                                     "/settings/3", "/settings/4"));
   EXPECT_TRUE(d.settings[0].AccuracyOnly());
@@ -851,7 +855,8 @@ TEST(PrecisionTest, LabelsAreReadable) {
                                    {"simulation/integrator", "CPodes"}}),
             "CPodes 1e-4");
   EXPECT_EQ(SettingLabel(Overrides{{"visibility/grid", 16}}), "visibility/grid 16");
-  EXPECT_EQ(SettingLabel(Overrides{{"contact/stiffness", 1e10}}), "contact/stiffness 1e10");
+  EXPECT_EQ(SettingLabel(Overrides{{"contact/stiffness", 1e10}}),
+            "contact/stiffness 1e10");
   EXPECT_EQ(SettingLabel(Overrides{{"guidance/kappa", 400.0}}), "guidance/kappa 400");
   EXPECT_EQ(SettingLabel(Overrides{{"simulation/accuracy", 0.05}}),
             "simulation/accuracy 0.05");
@@ -896,9 +901,11 @@ TEST(PrecisionErrorsTest, UnknownParameterName) {
 TEST(PrecisionErrorsTest, ValueBreaksTheParametersRule) {
   json doc = Precision();
   doc["settings"][3] = Accuracy("RungeKuttaMerson", -1e-3);
-  ExpectError(doc, "/settings/3/simulation~1accuracy", "must lie in [1e-12, 0.5]", "-0.001");
+  ExpectError(doc, "/settings/3/simulation~1accuracy", "must lie in [1e-12, 0.5]",
+              "-0.001");
   doc["settings"][3] = Accuracy("RungeKutta4", 1e-3);
-  ExpectError(doc, "/settings/3/simulation~1integrator", "must be one of", "\"RungeKutta4\"");
+  ExpectError(doc, "/settings/3/simulation~1integrator", "must be one of",
+              "\"RungeKutta4\"");
   doc["settings"][3] = {{"visibility/grid", 2.5}};
   ExpectError(doc, "/settings/3/visibility~1grid", "must be an integer", "2.5");
   doc["settings"][3] = {{"guidance/weight_support", 1.5}};
@@ -916,7 +923,9 @@ TEST(PrecisionErrorsTest, WholeMessageNamesFilePointerValueAndRule) {
     LoadExperiment(path);
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), path + ": /settings/3/simulation~1accuracy = 0.0: must lie in [1e-12, 0.5]");
+    EXPECT_EQ(
+        std::string(e.what()),
+        path + ": /settings/3/simulation~1accuracy = 0.0: must lie in [1e-12, 0.5]");
   }
 }
 
@@ -999,8 +1008,8 @@ TEST(CalibrateTest, ParametersTargetsLossAndStepsLoad) {
   EXPECT_EQ(e.kind, "calibrate");
   EXPECT_EQ(e.scene.name, "steel_block_move");
   const CalibrationDesign& d = e.calibration;
-  EXPECT_TRUE(std::filesystem::equivalent(d.lab_path,
-                                          SourcePath("data/synthetic_block/dataset.json")))
+  EXPECT_TRUE(std::filesystem::equivalent(
+      d.lab_path, SourcePath("data/synthetic_block/dataset.json")))
       << d.lab_path;
   ASSERT_EQ(d.stages.size(), 1u);
   const CalibrationStage& st = d.stages[0];
@@ -1054,10 +1063,11 @@ TEST(CalibrateTest, Defaults) {
 }
 
 TEST(CalibrateTest, ShippedExperimentResolvesItsLabRelativeToItself) {
-  const ExperimentFile e = LoadExperiment(SourcePath("experiments/calibrate_synthetic.json"));
+  const ExperimentFile e =
+      LoadExperiment(SourcePath("experiments/calibrate_synthetic.json"));
   EXPECT_EQ(e.kind, "calibrate");
-  EXPECT_TRUE(std::filesystem::equivalent(e.calibration.lab_path,
-                                          SourcePath("data/synthetic_block/dataset.json")))
+  EXPECT_TRUE(std::filesystem::equivalent(
+      e.calibration.lab_path, SourcePath("data/synthetic_block/dataset.json")))
       << e.calibration.lab_path;
   EXPECT_TRUE(std::filesystem::equivalent(
       e.scene_path, SourcePath("experiments/scenes/steel_block_move.json")));
@@ -1076,11 +1086,13 @@ TEST(CalibrateErrorsTest, UnknownParameterName) {
 }
 
 TEST(CalibrateErrorsTest, ChoiceOrIntegerParameter) {
-  for (const char* name : {"simulation/integrator", "visibility/grid", "visibility/mode"}) {
+  for (const char* name :
+       {"simulation/integrator", "visibility/grid", "visibility/mode"}) {
     SCOPED_TRACE(name);
     json doc = Calibrate();
     doc["parameters"][0] = FitParam(name, 16, 8, 32);
-    ExpectError(doc, "/parameters/0/name", "a calibration fits real-valued parameters", name);
+    ExpectError(doc, "/parameters/0/name", "a calibration fits real-valued parameters",
+                name);
   }
 }
 
@@ -1101,7 +1113,8 @@ TEST(CalibrateErrorsTest, LowerNotBelowUpper) {
 TEST(CalibrateErrorsTest, StartOutsideTheBounds) {
   json doc = Calibrate();
   doc["parameters"][0] = FitParam("guidance/kappa", 40, 50, 2000);
-  ExpectError(doc, "/parameters/0/start", "must lie within [lower, upper] = [50, 2000]", "40");
+  ExpectError(doc, "/parameters/0/start", "must lie within [lower, upper] = [50, 2000]",
+              "40");
   doc["parameters"][0] = FitParam("guidance/kappa", 2001, 50, 2000);
   ExpectError(doc, "/parameters/0/start", "must lie within [lower, upper] = [50, 2000]",
               "2001");
@@ -1143,13 +1156,15 @@ TEST(CalibrateErrorsTest, WidenedBoundBreaksTheRule) {
   ExpectError(doc, "/parameters/1/upper", "breaks reach/value_at_d2's rule");
   doc["relative_step"] = 0.04;
   EXPECT_DOUBLE_EQ(LoadExperiment(WriteJson(TestDir() / "e.json", doc))
-                       .calibration.stages[0].parameters[1]
+                       .calibration.stages[0]
+                       .parameters[1]
                        .upper,
                    0.96);
   // A positive parameter's lower bound of 0 stays 0 when widened.
   doc = Calibrate();
   doc["parameters"][0] = FitParam("guidance/kappa", 400, 0, 2000);
-  ExpectError(doc, "/parameters/0/lower", "breaks guidance/kappa's rule: must lie in (0, 1e6]", "0");
+  ExpectError(doc, "/parameters/0/lower",
+              "breaks guidance/kappa's rule: must lie in (0, 1e6]", "0");
   // An angle's upper bound of 180 degrees.
   doc = Calibrate();
   doc["parameters"][1] = FitParam("sight/plateau_to_deg", 60, 45, 180);
@@ -1220,8 +1235,9 @@ TEST(CalibrateErrorsTest, ErrorsNameTheExperimentFileNotTheScene) {
     LoadExperiment(path);
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), path + ": /parameters/0/name = \"visibility/grid\": "
-                                            "a calibration fits real-valued parameters");
+    EXPECT_EQ(std::string(e.what()), path +
+                                         ": /parameters/0/name = \"visibility/grid\": "
+                                         "a calibration fits real-valued parameters");
   }
 }
 
@@ -1255,7 +1271,8 @@ TEST(CalibrateTest, StagesLoadInOrderWithTheirSolvers) {
   EXPECT_EQ(d.stages[1].targets[0].quantity, "success_rate");
   EXPECT_DOUBLE_EQ(d.tolerance, 0.08);
   // The shipped paper calibration: kappa, then A_max on the fatigue design.
-  const ExperimentFile paper = LoadExperiment(SourcePath("experiments/calibrate_paper.json"));
+  const ExperimentFile paper =
+      LoadExperiment(SourcePath("experiments/calibrate_paper.json"));
   ASSERT_EQ(paper.calibration.stages.size(), 2u);
   EXPECT_EQ(paper.calibration.stages[0].parameters[0].name, "guidance/kappa");
   EXPECT_EQ(paper.calibration.stages[1].parameters[0].name, "fatigue/a_max");
@@ -1265,17 +1282,20 @@ TEST(CalibrateTest, StagesLoadInOrderWithTheirSolvers) {
 TEST(CalibrateErrorsTest, StagesAreWellFormed) {
   json doc = Staged();
   doc["parameters"] = {FitParam("guidance/kappa", 400, 50, 2000)};
-  ExpectError(doc, "/parameters", "states its parameters, targets and solver in each stage");
+  ExpectError(doc, "/parameters",
+              "states its parameters, targets and solver in each stage");
   doc = Staged();
   doc["stages"][1]["parameters"][0]["name"] = "guidance/kappa";
-  ExpectError(doc, "/stages/1/parameters/0/name", "fitted once only (also at "
+  ExpectError(doc, "/stages/1/parameters/0/name",
+              "fitted once only (also at "
               "/stages/0/parameters/0)");
   doc = Staged();
   doc["stages"][1]["name"] = "kappa";
   ExpectError(doc, "/stages/1/name", "a stage name is used once");
   doc = Staged();
   doc["stages"][0]["parameters"].push_back(FitParam("guidance/hand_mass", 1.0, 0.5, 2.0));
-  ExpectError(doc, "/stages/0/parameters", "the golden_section solver fits exactly one parameter");
+  ExpectError(doc, "/stages/0/parameters",
+              "the golden_section solver fits exactly one parameter");
   doc = Staged();
   doc["stages"][0]["solver"] = "newton";
   ExpectError(doc, "/stages/0/solver", "must be one of", "newton");
@@ -1296,7 +1316,8 @@ TEST(CalibrateErrorsTest, StagesAreWellFormed) {
   // A stage's segment beyond the fatigue design's.
   doc["stages"][1]["targets"] = {
       {{"quantity", "success_rate"}, {"part", "all"}, {"segment", 5}}};
-  ExpectError(doc, "/stages/1/targets/0/segment", "the fatigue design has 4 segments", "5");
+  ExpectError(doc, "/stages/1/targets/0/segment", "the fatigue design has 4 segments",
+              "5");
   // "stages" belongs to calibrate only.
   json table = Experiment("table1");
   table["stages"] = json::array();
@@ -1312,22 +1333,26 @@ json ComparePaper() {
   json e = Experiment("compare");
   e["lab"] = SourcePath("data/paper/dataset.json");
   e["fatigue"] = {{"duration_min", 60}, {"segments", 4}, {"pilot_cycles", 3}};
-  e["quantities"] = {
-      {{"quantity", "assembly_time"}, {"part", "all"}, {"margin", 1}},
-      {{"quantity", "assembly_time"}, {"part", "all"}, {"condition", "virtual"}, {"margin", 1.5}},
-      {{"quantity", "success_rate"},
-       {"part", "all"},
-       {"segment", 4},
-       {"condition", "real"},
-       {"margin", 0.1}}};
+  e["quantities"] = {{{"quantity", "assembly_time"}, {"part", "all"}, {"margin", 1}},
+                     {{"quantity", "assembly_time"},
+                      {"part", "all"},
+                      {"condition", "virtual"},
+                      {"margin", 1.5}},
+                     {{"quantity", "success_rate"},
+                      {"part", "all"},
+                      {"segment", 4},
+                      {"condition", "real"},
+                      {"margin", 0.1}}};
   return e;
 }
 
 TEST(CompareTest, SegmentsAndConditionsLoadWithTheFatigueDesign) {
-  const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", ComparePaper()));
+  const ExperimentFile e =
+      LoadExperiment(WriteJson(TestDir() / "e.json", ComparePaper()));
   EXPECT_EQ(e.kind, "compare");
   const ComparisonDesign& d = e.comparison;
-  EXPECT_TRUE(std::filesystem::equivalent(d.lab_path, SourcePath("data/paper/dataset.json")));
+  EXPECT_TRUE(
+      std::filesystem::equivalent(d.lab_path, SourcePath("data/paper/dataset.json")));
   ASSERT_EQ(d.quantities.size(), 3u);
   EXPECT_EQ(d.quantities[0].segment, 0);
   EXPECT_EQ(d.quantities[0].condition, "");  // any
@@ -1371,7 +1396,8 @@ TEST(CompareErrorsTest, BadSegmentsAndConditions) {
   ExpectError(doc, "/quantities/2/segment", "must be an integer", "1.5");
   doc = ComparePaper();
   doc["quantities"][2]["by"] = "operator";
-  ExpectError(doc, "/quantities/2/by", "a segment's value is the lab's over all operators");
+  ExpectError(doc, "/quantities/2/by",
+              "a segment's value is the lab's over all operators");
   doc = ComparePaper();
   doc["quantities"][1]["condition"] = "";
   ExpectError(doc, "/quantities/1/condition", "leave the key out to read any");
@@ -1394,8 +1420,10 @@ TEST(FormatOfTest, NamesEveryVahfFormat) {
       {"experiments/calibrate_synthetic.json", "experiment"},
       {"data/synthetic_block/dataset.json", "lab"},
       {"data/synthetic_block/generator.json", "synthetic"}};
-  for (const auto& [file, format] : files) EXPECT_EQ(FileFormatOf(SourcePath(file)), format);
-  EXPECT_EQ(FormatOf({{"format", "vahf-overrides/1"}, {"parameters", json::object()}}, "o.json"),
+  for (const auto& [file, format] : files)
+    EXPECT_EQ(FileFormatOf(SourcePath(file)), format);
+  EXPECT_EQ(FormatOf({{"format", "vahf-overrides/1"}, {"parameters", json::object()}},
+                     "o.json"),
             "overrides");
   try {
     FormatOf({{"format", "vahf-override/1"}}, "o.json");
@@ -1439,9 +1467,9 @@ TEST(WrongKindTest, EachKeyWithEachOtherKind) {
       {"relative_step", 0.05, "calibrate"},
       {"max_iterations", 30, "calibrate"},
   };
-  const std::vector<std::string> kinds = {"table1",   "assembly_time", "human_factors_groups",
-                                          "fatigue",  "paper",         "precision",
-                                          "calibrate"};
+  const std::vector<std::string> kinds = {
+      "table1",    "assembly_time", "human_factors_groups", "fatigue", "paper",
+      "precision", "calibrate"};
   for (const WrongKindCase& c : cases) {
     for (const std::string& kind : kinds) {
       if (kind == c.reader) continue;
@@ -1470,11 +1498,11 @@ TEST(WrongKindTest, EachKeyWithEachOtherKind) {
 
 // "lab" is read by calibrate (and by compare, when that kind exists).
 TEST(WrongKindTest, LabInAnotherKindsFile) {
-  for (const std::string kind :
-       {"table1", "assembly_time", "human_factors_groups", "fatigue", "paper", "precision"}) {
+  for (const std::string kind : {"table1", "assembly_time", "human_factors_groups",
+                                 "fatigue", "paper", "precision"}) {
     SCOPED_TRACE(kind);
-    json doc = kind == "paper"                  ? Paper({SourcePath("experiments/table1.json")})
-               : kind == "precision"            ? Precision()
+    json doc = kind == "paper"       ? Paper({SourcePath("experiments/table1.json")})
+               : kind == "precision" ? Precision()
                : kind == "human_factors_groups" ? HumanFactorsGroups()
                                                 : Experiment(kind);
     doc["lab"] = SourcePath("data/synthetic_block/dataset.json");
@@ -1491,10 +1519,11 @@ TEST(WrongKindTest, WhatReadsFileWhereValueRule) {
     LoadExperiment(path);
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              path +
-                  ": /fatigue = {\"segments\":4}: only an experiment of kind \"fatigue\", "
-                  "\"calibrate\" or \"compare\" reads \"fatigue\"");
+    EXPECT_EQ(
+        std::string(e.what()),
+        path +
+            ": /fatigue = {\"segments\":4}: only an experiment of kind \"fatigue\", "
+            "\"calibrate\" or \"compare\" reads \"fatigue\"");
   }
 }
 

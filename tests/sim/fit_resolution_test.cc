@@ -36,8 +36,12 @@ Eigen::Isometry3d At(const Eigen::Vector3d& x, double tilt_x_rad = 0) {
 TEST(PenetrationOracle, CylinderOffsetInABoreIsEMinusC) {
   const double R = 0.01, c = 50e-6;
   const RevolvedSolid peg(Profile({{0, 0}, {R, 0}, {R, 0.05}, {0, 0.05}}));
-  const RevolvedSolid bore(Profile({{0, -0.05}, {0.03, -0.05}, {0.03, 0.0}, {R + c, 0.0},
-                                    {R + c, -0.04}, {0, -0.04}}));
+  const RevolvedSolid bore(Profile({{0, -0.05},
+                                    {0.03, -0.05},
+                                    {0.03, 0.0},
+                                    {R + c, 0.0},
+                                    {R + c, -0.04},
+                                    {0, -0.04}}));
   const Eigen::Isometry3d bore_pose = At({0, 0, 0});
   for (double e : {20e-6, 60e-6, 150e-6}) {
     const double d = Penetration(peg, At({e, 0, -0.03}), bore, bore_pose);
@@ -75,8 +79,8 @@ double DeepestOverTrial(const scene::Scene& s, const TrialResult& r) {
 // The resolving configuration (experiments/scenes/peg_in_hole_resolved.json:
 // stiffness by the bound rule with its barrier, CPodes).
 TEST(FitResolution, PegStaysWithinTenPercentOfItsClearance) {
-  const scene::Scene s =
-      scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/peg_in_hole_resolved.json");
+  const scene::Scene s = scene::LoadScene(
+      std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/peg_in_hole_resolved.json");
   TrialOptions options;
   options.record_trace = false;
   options.sample_interval = 0.5e-3;
@@ -84,27 +88,32 @@ TEST(FitResolution, PegStaysWithinTenPercentOfItsClearance) {
   ASSERT_EQ(r.status, Status::kCompleted) << r.detail;
   ASSERT_GT(r.samples.size(), 100u);
   const double deepest = DeepestOverTrial(s, r);
-  std::printf("peg seed 1: deepest %.3g um by the oracle, %.3g um by the contact model, "
-              "bound %.3g um\n",
-              deepest * 1e6, r.max_penetration * 1e6, r.penetration_bound * 1e6);
+  std::printf(
+      "peg seed 1: deepest %.3g um by the oracle, %.3g um by the contact model, "
+      "bound %.3g um\n",
+      deepest * 1e6, r.max_penetration * 1e6, r.penetration_bound * 1e6);
   EXPECT_NEAR(r.clearance, 50e-6, 1e-12);
   EXPECT_LT(deepest, 0.1 * r.clearance);
   // Expected: CPodes' retries and its nanosecond steps at the impact on the
   // barrier. Anything else is not.
-  EXPECT_EQ(r.warnings.at(WarningKind::kPenetrationBound).count, 0) << r.warnings.Summary();
+  EXPECT_EQ(r.warnings.at(WarningKind::kPenetrationBound).count, 0)
+      << r.warnings.Summary();
   EXPECT_EQ(r.warnings.at(WarningKind::kNonFiniteState).count, 0) << r.warnings.Summary();
-  EXPECT_EQ(r.warnings.at(WarningKind::kIntegratorFailure).count, 0) << r.warnings.Summary();
+  EXPECT_EQ(r.warnings.at(WarningKind::kIntegratorFailure).count, 0)
+      << r.warnings.Summary();
   EXPECT_LE(r.max_penetration, r.penetration_bound);
   // The stiffness rule (contact_params.h): F = kappa |T_0 - T_t| + m g over
   // 2 mm of edge sinks a quarter of the 5 um bound.
   const scene::Part& peg = s.parts[1];
-  const double load = s.params.guidance.kappa * (peg.initial.position - peg.target.position).norm() +
-                      peg.mass * s.gravity.norm();
+  const double load =
+      s.params.guidance.kappa * (peg.initial.position - peg.target.position).norm() +
+      peg.mass * s.gravity.norm();
   EXPECT_NEAR(r.line_stiffness, load / (2e-3 * 0.25 * 5e-6), 1e-9 * r.line_stiffness);
   EXPECT_NEAR(r.stiffness, r.line_stiffness / 2e-3, 1e-9 * r.stiffness);
   // The step-floor and retry warnings mark the impact on the chamfer (about
   // 21 ms), not CPodes probing its first steps at t = 0.
-  for (const WarningKind k : {WarningKind::kStepSizeFloor, WarningKind::kIntegratorRetry}) {
+  for (const WarningKind k :
+       {WarningKind::kStepSizeFloor, WarningKind::kIntegratorRetry}) {
     EXPECT_GT(r.warnings.at(k).count, 0) << WarningName(k);
     EXPECT_GT(r.warnings.at(k).first_time, 0.015) << WarningName(k);
   }
