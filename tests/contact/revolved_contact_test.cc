@@ -505,9 +505,10 @@ TEST(RevolvedContact, FindsEachArcsDeepestPointInFewQueries) {
         peg, bore, at, pose, [&](const PlacedCircle& c, const SignedDistance& field) {
           Arc found[kMaxArcs];
           std::uint64_t scan = 0;
-          const int n = InsideArcs(c, field, found, &scan, &edges);
+          const NearEdges near = NearCircle(field, c);
+          const int n = InsideArcs(c, near, found, &scan, &edges);
           for (int k = 0; k < n; ++k) {
-            const double peak = DeepestAngle(c, field, found[k], &queries, &edges);
+            const double peak = DeepestAngle(c, near, found[k], &queries, &edges);
             const double f = field.At(c.At(peak)).distance;
             double least = 0;
             constexpr int kSamples = 20000;

@@ -364,9 +364,9 @@ TEST(SignedDistanceWork, PenetrationCountsTheEdgesItExamines) {
     }
     return n;
   };
-  EXPECT_EQ(edges(f, {0.005, 0, 0.025}), 4u);          // inside: 1 crossing + 3 edges
-  EXPECT_EQ(edges(f, {0.009, 0.009, 0.025}), 1u);      // in the bounds, outside: 1
-  EXPECT_EQ(edges(f, {0, 0, kH + 1e-3}), 0u);          // beyond the bounds: none
+  EXPECT_EQ(edges(f, {0.005, 0, 0.025}), 4u);      // inside: 1 crossing + 3 edges
+  EXPECT_EQ(edges(f, {0.009, 0.009, 0.025}), 1u);  // in the bounds, outside: 1
+  EXPECT_EQ(edges(f, {0, 0, kH + 1e-3}), 0u);      // beyond the bounds: none
   EXPECT_EQ(edges(SignedDistance(Box{kBoxSize}), {0, 0, 0}), 0u);
   // A sawtooth side of n teeth: the distance pass examines every one of them.
   std::vector<ProfilePoint> saw = {{0, 0}, {kR, 0}};
@@ -380,7 +380,8 @@ TEST(SignedDistanceWork, PenetrationCountsTheEdgesItExamines) {
   EXPECT_LT(edges(teeth, {0.0109, 0.0109, 0.0251}), 4u);  // outside: its slab's edge only
 }
 
-// ---------------------------------------------------------------- the first implementation
+// ---------------------------------------------------------------- the first
+// implementation
 
 // The queries as first written, with scalars in the same operations and the
 // same order: a crossing number over every surface edge and the nearest of all
@@ -444,8 +445,8 @@ class FirstImplementation {
     for (const Edge& e : edges_) {
       const double ab_r = e.b.r - e.a.r, ab_z = e.b.z - e.a.z;
       const double t = std::clamp(
-          ((r - e.a.r) * ab_r + (p.z() - e.a.z) * ab_z) / (ab_r * ab_r + ab_z * ab_z), 0.0,
-          1.0);
+          ((r - e.a.r) * ab_r + (p.z() - e.a.z) * ab_z) / (ab_r * ab_r + ab_z * ab_z),
+          0.0, 1.0);
       const double c_r = e.a.r + t * ab_r, c_z = e.a.z + t * ab_z;
       const double d2 = (r - c_r) * (r - c_r) + (p.z() - c_z) * (p.z() - c_z);
       if (d2 < best) best = d2, near_r = c_r, near_z = c_z, n_r = e.out_r, n_z = e.out_z;
@@ -489,8 +490,10 @@ bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // Empty when the two answers are the same bits, else what differs.
 std::string Differs(const Distance& got, const Distance& want) {
-  if (SameBits(got.distance, want.distance) && SameBits(got.normal.x(), want.normal.x()) &&
-      SameBits(got.normal.y(), want.normal.y()) && SameBits(got.normal.z(), want.normal.z()))
+  if (SameBits(got.distance, want.distance) &&
+      SameBits(got.normal.x(), want.normal.x()) &&
+      SameBits(got.normal.y(), want.normal.y()) &&
+      SameBits(got.normal.z(), want.normal.z()))
     return "";
   char buf[160];
   std::snprintf(buf, sizeof buf, "distance %.17g, expected %.17g; normal ", got.distance,
@@ -525,7 +528,8 @@ std::vector<Eigen::Vector3d> ProbePoints(const Shape& shape, std::uint64_t trial
         p[k] = u < 0.3   ? f.lower()[k]
                : u < 0.6 ? f.upper()[k]
                          : mid[k] + (s.Uniform() - 0.5) * span[k];
-        if (s.Uniform() < 0.2) p[k] = std::nextafter(p[k], s.Uniform() < 0.5 ? -1.0 : 1.0);
+        if (s.Uniform() < 0.2)
+          p[k] = std::nextafter(p[k], s.Uniform() < 0.5 ? -1.0 : 1.0);
       }
       points.push_back(p);
     }
@@ -554,7 +558,8 @@ std::vector<Eigen::Vector3d> ProbePoints(const Shape& shape, std::uint64_t trial
       const double depth =
           i % 2 ? (s.Uniform() - 0.5) * 2e-4 : sign * tiny[i / 2 % std::size(tiny)];
       // Along the outward normal (dz, -dr) / length of a counter-clockwise edge.
-      const double r = a.r + t * dr + depth * dz / length, z = a.z + t * dz - depth * dr / length;
+      const double r = a.r + t * dr + depth * dz / length,
+                   z = a.z + t * dz - depth * dr / length;
       points.push_back(Polar(std::abs(r), azimuth(), z));
     }
   }
@@ -565,11 +570,13 @@ TEST(SignedDistanceFirstImplementation, SameBitsOnTheSceneParts) {
   const auto scene_shapes = [](const char* file) {
     std::vector<std::pair<std::string, Shape>> shapes;
     for (const scene::Part& part :
-         scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + file).parts)
+         scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + file)
+             .parts)
       shapes.emplace_back(file + (": " + part.name), part.shape);
     return shapes;
   };
-  std::vector<std::pair<std::string, Shape>> shapes = scene_shapes("hydraulic_cylinder.json");
+  std::vector<std::pair<std::string, Shape>> shapes =
+      scene_shapes("hydraulic_cylinder.json");
   for (auto& s : scene_shapes("peg_in_hole.json")) shapes.push_back(std::move(s));
   for (Case& c : Shapes()) shapes.emplace_back(c.name, std::move(c.shape));
   ASSERT_EQ(shapes.size(), 11u);
@@ -605,10 +612,10 @@ TEST(SignedDistanceFirstImplementation, SameBitsOnTheSceneParts) {
 // the insertion: radius within 50 micrometres of 31.5115 mm (the band of
 // bench/signed_distance_benchmark.cc), z along the bore and at its ends.
 TEST(SignedDistanceFirstImplementation, SameBitsAtTheBarrelsBoreWall) {
-  const Shape barrel =
-      scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/hydraulic_cylinder.json")
-          .parts.at(0)
-          .shape;
+  const Shape barrel = scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
+                                        "/experiments/scenes/hydraulic_cylinder.json")
+                           .parts.at(0)
+                           .shape;
   const SignedDistance f(barrel);
   const FirstImplementation first(barrel, f);
   rng::Stream s({20240611, 1000}, 0, rng::Purpose::kTest);
@@ -626,14 +633,14 @@ TEST(SignedDistanceFirstImplementation, SameBitsAtTheBarrelsBoreWall) {
   }
 }
 
-
 // FartherThan is At(p).distance > radius, to the bit, for every radius the
 // broad phase could ask: zero, the distance itself and its neighbours in the
 // last place (where the shortcut's rounding margin matters), and random ones.
 TEST(SignedDistanceFarther, SameAnswerAsTheDistance) {
   std::vector<Shape> shapes;
   for (const scene::Part& part :
-       scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/hydraulic_cylinder.json")
+       scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
+                        "/experiments/scenes/hydraulic_cylinder.json")
            .parts)
     shapes.push_back(part.shape);
   for (Case& c : Shapes()) shapes.push_back(std::move(c.shape));
@@ -645,8 +652,9 @@ TEST(SignedDistanceFarther, SameAnswerAsTheDistance) {
       const double d = f.At(p).distance;
       const double inf = std::numeric_limits<double>::infinity();
       for (const double radius :
-           {0.0, std::abs(d), std::nextafter(std::abs(d), inf), std::nextafter(std::abs(d), 0.0),
-            std::abs(d) * (1 + 1e-13), s.Uniform() * 1e-2, s.Uniform() * 1e-4}) {
+           {0.0, std::abs(d), std::nextafter(std::abs(d), inf),
+            std::nextafter(std::abs(d), 0.0), std::abs(d) * (1 + 1e-13),
+            s.Uniform() * 1e-2, s.Uniform() * 1e-4}) {
         ASSERT_EQ(f.FartherThan(p, radius), d > radius)
             << Str(p) << " radius " << radius << " distance " << d;
         ++asked;
@@ -656,6 +664,76 @@ TEST(SignedDistanceFarther, SameAnswerAsTheDistance) {
   }
   EXPECT_GT(clear, asked / 10);  // both answers exercised
   EXPECT_LT(clear, asked - asked / 10);
+}
+
+// SignedDistance::Near: from a meridian box, the distance from the edges it
+// keeps is the whole profile's to the bit and of the same sign (the sign
+// from the nearest point's side, not a crossing count: only within rounding
+// of the surface may it differ), for random boxes from 1 um to 10 mm wide on
+// every revolved shape; a box it calls clear holds no point inside; and a
+// small box against one face keeps that face alone.
+TEST(SignedDistanceNear, AgreesWithTheWholeProfileInsideItsBox) {
+  rng::Stream s({20261126, 1}, 0, rng::Purpose::kTest);
+  int kept = 0, boxes = 0, clear = 0;
+  for (const Case& c : Shapes()) {
+    if (std::holds_alternative<Box>(c.shape)) continue;
+    const SignedDistance f(c.shape);
+    const Eigen::Vector3d lo = f.lower(), hi = f.upper();
+    for (int b = 0; b < 400; ++b) {
+      const double r = s.Uniform() * 1.2 * hi.x(),
+                   z = lo.z() + (s.Uniform() * 1.4 - 0.2) * (hi.z() - lo.z());
+      const double wr = std::pow(10.0, -6 + 4 * s.Uniform()),
+                   wz = std::pow(10.0, -6 + 4 * s.Uniform());
+      const MeridianBox box{std::max(0.0, r - wr), r + wr, z - wz, z + wz};
+      const NearEdges near = f.Near(box);
+      ++boxes;
+      clear += near.clear();
+      if (near.count() > 0) kept += near.count();
+      for (int i = 0; i < 50; ++i) {
+        const double pr = box.r_min + s.Uniform() * (box.r_max - box.r_min);
+        const double pz = box.z_min + s.Uniform() * (box.z_max - box.z_min);
+        const Eigen::Vector3d p = Polar(pr, 2 * M_PI * s.Uniform(), pz);
+        const Distance whole = f.At(p);
+        if (near.clear()) {
+          ASSERT_GE(whole.distance, 0.0) << c.name << " at " << Str(p);
+          continue;
+        }
+        const Distance d = near.At(p);
+        ASSERT_EQ(std::abs(d.distance), std::abs(whole.distance))
+            << c.name << " at " << Str(p);
+        if (std::abs(whole.distance) > 1e-15) {
+          ASSERT_EQ(d.distance, whole.distance) << c.name << " at " << Str(p);
+          ASSERT_NEAR((d.normal - whole.normal).norm(), 0.0, 1e-12)
+              << c.name << " at " << Str(p);
+        }
+      }
+    }
+  }
+  EXPECT_GT(clear, boxes / 10);  // both kinds of box exercised
+  EXPECT_LT(clear, boxes - boxes / 10);
+  EXPECT_LT(kept, 3 * (boxes - clear));  // a few edges a box, not all of them
+  // Outside the cone's sharp rim (interior angle 72 deg) the nearest point is
+  // the rim, and the point is below the bottom face's plane on one side and
+  // beyond the slant's on the other: only the sum of the two normals tells
+  // it is outside.
+  const Shape cone = Shapes()[3].shape;
+  const SignedDistance f(cone);
+  const Eigen::Vector2d rim(0.04, 0), n_bottom(0, -1),
+      n_slant = Eigen::Vector2d(0.12, 0.04).normalized();
+  for (const double w : {0.1, 0.5, 0.9}) {
+    const Eigen::Vector2d q =
+        rim + 1e-3 * ((1 - w) * n_bottom + w * n_slant).normalized();
+    const NearEdges near =
+        f.Near({q.x() - 1e-6, q.x() + 1e-6, q.y() - 1e-6, q.y() + 1e-6});
+    const Distance d = near.At(Eigen::Vector3d(q.x(), 0, q.y()));
+    EXPECT_NEAR(d.distance, 1e-3, 1e-15) << "w " << w;
+    EXPECT_EQ(d.distance, f.At(Eigen::Vector3d(q.x(), 0, q.y())).distance) << "w " << w;
+  }
+  // 10 um of the bore's wall, 20 um into the hole from it: the wall alone.
+  const SignedDistance bore(Bore());
+  const NearEdges wall = bore.Near({kHole - 20e-6, kHole + 5e-6, -0.02, -0.019});
+  ASSERT_EQ(wall.count(), 1);
+  EXPECT_EQ(wall.edge(0).a, Eigen::Vector2d(kHole, -0.001));
 }
 
 }  // namespace

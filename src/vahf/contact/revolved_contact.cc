@@ -60,26 +60,27 @@ void RevolvedContact::EvaluatePass(const Pass& pass, const RigidMotion& m,
   for (const RimCircle& rim : pass.rims.rims) {
     const PlacedCircle circle{pass.rim_to_field * Eigen::Vector3d(0, 0, rim.height),
                               R.col(0), R.col(1), rim.radius};
+    const NearEdges solid = NearCircle(pass.field.field, circle);
     Arc arcs[kMaxArcs];
-    const int n = InsideArcs(circle, pass.field.field, arcs, &counters.rim_queries,
-                             &counters.edge_tests);
+    const int n =
+        InsideArcs(circle, solid, arcs, &counters.rim_queries, &counters.edge_tests);
     if (n == 0) ++counters.rims_skipped;
     for (int k = 0; k < n; ++k)
-      IntegrateArc(pass, circle, arcs[k], m, counters, out, jacobian);
+      IntegrateArc(pass, circle, solid, arcs[k], m, counters, out, jacobian);
   }
 }
 
 void RevolvedContact::IntegrateArc(const Pass& pass, const PlacedCircle& circle,
-                                   const Arc& arc, const RigidMotion& m,
-                                   ContactCounters& counters, ContactForces* out,
-                                   ContactJacobian* jacobian) const {
+                                   const NearEdges& solid, const Arc& arc,
+                                   const RigidMotion& m, ContactCounters& counters,
+                                   ContactForces* out, ContactJacobian* jacobian) const {
   const Eigen::Matrix3d& r_world_moving = m.pose.linear();
   const double sign = pass.moving_rim ? 1.0 : -1.0;
   // The line load at an angle over `length` of rim; its depth.
   const auto node = [&](double angle, double length) {
     const Eigen::Vector3d p = circle.At(angle);
     ++counters.rim_queries;
-    const Distance d = pass.field.field.At(p, &counters.edge_tests);
+    const Distance d = solid.At(p, &counters.edge_tests);
     const double x = -d.distance;
     if (!(x > 0)) return x;
     const Eigen::Vector3d r = r_world_moving * (pass.field_to_moving * p);
@@ -96,8 +97,8 @@ void RevolvedContact::IntegrateArc(const Pass& pass, const PlacedCircle& circle,
     return x;
   };
   // The deepest point is a node, so that the barrier there is felt in full.
-  const double peak = DeepestAngle(circle, pass.field.field, arc, &counters.rim_queries,
-                                   &counters.edge_tests);
+  const double peak =
+      DeepestAngle(circle, solid, arc, &counters.rim_queries, &counters.edge_tests);
   double deepest;
   if (arc.whole()) {  // the trapezoidal rule from the deepest point
     const double length = circle.radius * 2 * M_PI / kCircleNodes;

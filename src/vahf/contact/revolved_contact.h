@@ -68,9 +68,9 @@ class RevolvedContact final : public ContactModel {
   void EvaluatePass(const Pass& pass, const RigidMotion& m, ContactCounters& counters,
                     ContactForces* out, ContactJacobian* jacobian) const;
   // The line load of one arc of `circle` (in the field's frame).
-  void IntegrateArc(const Pass& pass, const PlacedCircle& circle, const Arc& arc,
-                    const RigidMotion& m, ContactCounters& counters, ContactForces* out,
-                    ContactJacobian* jacobian) const;
+  void IntegrateArc(const Pass& pass, const PlacedCircle& circle, const NearEdges& solid,
+                    const Arc& arc, const RigidMotion& m, ContactCounters& counters,
+                    ContactForces* out, ContactJacobian* jacobian) const;
 
   Solid moving_;
   std::vector<Solid> fixed_;

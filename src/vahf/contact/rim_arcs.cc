@@ -14,30 +14,38 @@ constexpr int kMaxDeepest = 40;  // iterations of the deepest point's search
 // The deepest point's search stops when f can change by less than this over
 // its bracket (m): far below the micrometre bounds the barrier holds.
 constexpr double kDeepestTolerance = 1e-10;
+// A crossing is where f is within this of zero (m): its angle is then within
+// 1e-12 m / |f'| of the root, and the line load there, which vanishes at the
+// root with its slope (the law's C1 onset), is left out over at most that.
+constexpr double kCrossingTolerance = 1e-12;
 
 // The circle's points, signed distances and their slopes along the angle.
 class CircleField {
  public:
-  CircleField(const PlacedCircle& c, const SignedDistance& solid, std::uint64_t* queries,
+  CircleField(const PlacedCircle& c, const NearEdges& solid, std::uint64_t* queries,
               std::uint64_t* edges)
       : c_(c), solid_(solid), queries_(queries), edges_(edges) {}
 
   struct Value {
-    double f;      // signed distance, m
-    double slope;  // df/dphi, m/rad
+    double f;           // signed distance, m
+    double slope;       // df/dphi, m/rad
+    Eigen::Vector2d q;  // the point's meridian coordinates (r, z), m
   };
-  Value operator()(double phi) const {
-    const double cs = std::cos(phi), sn = std::sin(phi);
+  Value operator()(double phi) const { return At(std::cos(phi), std::sin(phi)); }
+  // At the angle whose cosine and sine are cs and sn.
+  Value At(double cs, double sn) const {
     const Eigen::Vector3d p = c_.centre + c_.radius * (cs * c_.x + sn * c_.y);
     ++*queries_;
-    const Distance d = solid_.At(p, edges_);
-    return {d.distance, c_.radius * d.normal.dot(cn_dot(cs, sn))};
+    Eigen::Vector2d q;
+    const Distance d = solid_.At(p, edges_, &q);
+    return {d.distance, c_.radius * d.normal.dot(cn_dot(cs, sn)), q};
   }
+  const NearEdges& solid() const { return solid_; }
 
  private:
   Eigen::Vector3d cn_dot(double cs, double sn) const { return cs * c_.y - sn * c_.x; }
   const PlacedCircle& c_;
-  const SignedDistance& solid_;
+  const NearEdges& solid_;
   std::uint64_t* queries_;
   std::uint64_t* edges_;
 };
@@ -48,11 +56,37 @@ struct Sample {
   bool inside() const { return v.f < 0; }
 };
 
+// The scan's angles are the kSamples equally spaced ones and the midpoints
+// of their halvings, whose cosine and sine follow from their ends': for
+// angles a and b, w = b - a, cos((a + b) / 2) = (cos a + cos b) / (2 cos(w / 2))
+// and likewise the sine, which spares a scan query's sincos (a tenth of a
+// trial's CPU) at a rounding of an ulp a halving.
+struct Unit {
+  double cs, sn;
+};
+struct ScanAngles {
+  Unit sample[kSamples + 1];    // at 2 pi k / kSamples
+  double half[kMaxLevels + 1];  // 1 / (2 cos(w / 2)) for w = 2 pi / kSamples / 2^level
+};
+const ScanAngles kScanAngles = [] {
+  ScanAngles a;
+  const double step = 2 * M_PI / kSamples;
+  for (int k = 0; k <= kSamples; ++k)
+    a.sample[k] = {std::cos(k * step), std::sin(k * step)};
+  for (int level = 0; level <= kMaxLevels; ++level)
+    a.half[level] = 0.5 / std::cos(0.5 * std::ldexp(step, -level));
+  return a;
+}();
+
 // The crossing in [a, b], whose ends are on opposite sides: Newton's method
 // kept inside the bracket, halving where a step would leave it.
 double Crossing(const CircleField& field, Sample a, Sample b) {
   const double width = b.phi - a.phi;
-  double phi = a.phi - a.v.f * width / (b.v.f - a.v.f);  // the chord's root
+  // The first guess: a Newton step from the end nearer the surface, whose
+  // slope the scan has, when it stays inside; otherwise the chord's root.
+  const Sample& near = std::abs(a.v.f) < std::abs(b.v.f) ? a : b;
+  double phi = near.v.slope != 0 ? near.phi - near.v.f / near.v.slope : a.phi;
+  if (!(phi > a.phi && phi < b.phi)) phi = a.phi - a.v.f * width / (b.v.f - a.v.f);
   for (int i = 0; i < kMaxNewton; ++i) {
     const CircleField::Value v = field(phi);
     if (v.f == 0) return phi;
@@ -63,22 +97,91 @@ double Crossing(const CircleField& field, Sample a, Sample b) {
     if (b.phi - a.phi < 1e-13 * width + 1e-15) break;
     double next = v.slope != 0 ? phi - v.f / v.slope : a.phi;
     if (!(next > a.phi && next < b.phi)) next = 0.5 * (a.phi + b.phi);
-    if (std::abs(next - phi) < 1e-14) return next;
+    // Within kCrossingTolerance of the surface, the Newton step's end, not
+    // queried: Newton's method converges quadratically there, and the next
+    // query would only confirm it.
+    if (std::abs(v.f) < kCrossingTolerance || std::abs(next - phi) < 1e-14) return next;
     phi = next;
   }
   return 0.5 * (a.phi + b.phi);
 }
 
-// Bounds on f's travel along the circle (rim_arcs.h).
+// Bounds on the travel of the circle's meridian trace (r, z)(phi) and of f
+// along it (TravelBounds).
 struct Bounds {
+  double dr, dz;     // |r'|, |z'| (and |z''|), m/rad
+  double ddr;        // |r''|, m/rad^2
   double slope;      // |df/dphi|, m/rad
-  double curvature;  // an upper bound of d2f/dphi2, m/rad^2 (TravelBounds)
+  double curvature;  // an upper bound of d2f/dphi2, m/rad^2
+};
+
+// A surface edge near the circle's trace (NearEdges), as the scan tests it:
+// the trace crosses the surface only where it crosses one of these edges, at
+// a root of its line's function L = n . (q - a) (n the outward normal) with
+// P = u . (q - a) in [0, length] (u along the edge). Both are smooth along
+// the circle, with no kink at the profile's corners, |L'| <= |n_r| |r'| +
+// |n_z| |z'| and |L''| <= |n_r| |r''| + |n_z| |z''|, and P likewise with u.
+struct EdgeLines {
+  struct Line {
+    Eigen::Vector2d a, n, u;
+    double length;
+    double slope_l, curve_l, slope_p, curve_p;
+  };
+  Line line[NearEdges::kMaxEdges];
+  int count = 0;  // 0: the solid's edges are not listed, no line test
+
+  EdgeLines(const NearEdges& solid, const Bounds& b) {
+    if (solid.count() < 0) return;
+    count = solid.count();
+    const auto along = [&](const Eigen::Vector2d& v, double dr, double dz) {
+      return 1.01 * (std::abs(v.x()) * dr + std::abs(v.y()) * dz) + 1e-15;
+    };
+    for (int k = 0; k < count; ++k) {
+      const ProfileEdge& e = solid.edge(k);
+      const Eigen::Vector2d u(-e.outward.y(), e.outward.x());
+      line[k] = {e.a,
+                 e.outward,
+                 u,
+                 std::sqrt(e.ab2),
+                 along(e.outward, b.dr, b.dz),
+                 along(e.outward, b.ddr, b.dz),
+                 along(u, b.dr, b.dz),
+                 along(u, b.ddr, b.dz)};
+    }
+  }
+
+  // Whether g, of slope and curvature at most s and k, keeps the sign it
+  // has at both ends (ga, gb, same strict sign) over an interval of width w.
+  static bool KeepsSide(double ga, double gb, double s, double k, double w) {
+    if (!((ga > 0 && gb > 0) || (ga < 0 && gb < 0))) return false;
+    const double fa = std::abs(ga), fb = std::abs(gb);
+    return fa + fb > s * w || std::min(fa, fb) > 0.125 * k * w * w;
+  }
+  // Whether the trace cannot cross any of the edges between meridian points
+  // qa and qb an interval of width w apart.
+  bool NoneCrossed(const Eigen::Vector2d& qa, const Eigen::Vector2d& qb, double w) const {
+    if (count == 0) return false;
+    for (int k = 0; k < count; ++k) {
+      const Line& l = line[k];
+      const Eigen::Vector2d da = qa - l.a, db = qb - l.a;
+      if (KeepsSide(l.n.dot(da), l.n.dot(db), l.slope_l, l.curve_l, w)) continue;
+      const double pa = l.u.dot(da), pb = l.u.dot(db);
+      if (pa < 0 && KeepsSide(pa, pb, l.slope_p, l.curve_p, w)) continue;
+      if (pa > l.length &&
+          KeepsSide(pa - l.length, pb - l.length, l.slope_p, l.curve_p, w))
+        continue;
+      return false;
+    }
+    return true;
+  }
 };
 
 struct Scan {
-  Scan(const CircleField& f, Bounds b) : field(f), bounds(b) {}
+  Scan(const CircleField& f, const Bounds& b)
+      : field(f), bounds(b), lines(f.solid(), b) {}
   const CircleField& field;
   Bounds bounds;
+  EdgeLines lines;
   double crossings[4 * kMaxArcs] = {};
   int count = 0;
   bool full = false;
@@ -89,24 +192,30 @@ struct Scan {
     else
       full = true;
   }
-  // The crossings in (a, b], in order.
-  void Interval(const Sample& a, const Sample& b, int level) {
+  // The crossings in (a, b], in order; ua and ub the ends' cosine and sine,
+  // b - a = 2 pi / kSamples / 2^level.
+  void Interval(const Sample& a, const Unit& ua, const Sample& b, const Unit& ub,
+                int level) {
     if (a.inside() != b.inside()) {
       Add(Crossing(field, a, b));
       return;
     }
     // f cannot leave its side and come back over the interval: by its
     // slope bound, or by its curvature bound (f stays within K w^2 / 8 of
-    // the chord, w the interval's width, K >= |f''| on it: TravelBounds).
+    // the chord, w the interval's width, K >= |f''| on it: TravelBounds),
+    // or because the trace can cross none of the edges near it (EdgeLines:
+    // their lines have no kink where f has one, at a corner).
     const double w = b.phi - a.phi;
     const double fa = std::abs(a.v.f), fb = std::abs(b.v.f);
     if (fa + fb > bounds.slope * w || std::min(fa, fb) > 0.125 * bounds.curvature * w * w)
       return;
+    if (lines.NoneCrossed(a.v.q, b.v.q, w)) return;
     if (level >= kMaxLevels) return;  // a dip shallower than the bound: left out
-    const double mid = 0.5 * (a.phi + b.phi);
-    const Sample m{mid, field(mid)};
-    Interval(a, m, level + 1);
-    Interval(m, b, level + 1);
+    const double h = kScanAngles.half[level];
+    const Unit um{(ua.cs + ub.cs) * h, (ua.sn + ub.sn) * h};
+    const Sample m{0.5 * (a.phi + b.phi), field.At(um.cs, um.sn)};
+    Interval(a, ua, m, um, level + 1);
+    Interval(m, um, b, ub, level + 1);
   }
 };
 
@@ -132,7 +241,7 @@ Bounds TravelBounds(const PlacedCircle& c, double r_min, double corner) {
   const double curvature =
       corner > 0 ? 1.01 * std::hypot(ddr, dz) + 1e-12 * rho + slope * slope / corner
                  : std::numeric_limits<double>::infinity();
-  return {slope, curvature};
+  return {dr, dz, ddr, slope, curvature};
 }
 
 }  // namespace
@@ -148,19 +257,20 @@ MeridianBox TraceBox(const PlacedCircle& c) {
           c.centre.z() - rho * sin_tilt - margin, c.centre.z() + rho * sin_tilt + margin};
 }
 
-int InsideArcs(const PlacedCircle& c, const SignedDistance& solid, Arc arcs[kMaxArcs],
+int InsideArcs(const PlacedCircle& c, const NearEdges& solid, Arc arcs[kMaxArcs],
                std::uint64_t* queries, std::uint64_t* edges) {
-  const MeridianBox box = TraceBox(c);
-  if (solid.MeridianBoxClear(box)) return 0;
+  if (solid.clear()) return 0;
   const CircleField field(c, solid, queries, edges);
-  Scan scan(field, TravelBounds(c, std::max(0.0, box.r_min), solid.CornerDistance(box)));
+  Scan scan(field,
+            TravelBounds(c, std::max(0.0, solid.box().r_min), solid.corner_distance()));
   const double step = 2 * M_PI / kSamples;
-  const Sample first{0.0, field(0.0)};
+  const Unit* u = kScanAngles.sample;
+  const Sample first{0.0, field.At(u[0].cs, u[0].sn)};
   Sample a = first;
   for (int k = 1; k <= kSamples; ++k) {
-    const Sample b =
-        k == kSamples ? Sample{2 * M_PI, first.v} : Sample{k * step, field(k * step)};
-    scan.Interval(a, b, 0);
+    const Sample b = k == kSamples ? Sample{2 * M_PI, first.v}
+                                   : Sample{k * step, field.At(u[k].cs, u[k].sn)};
+    scan.Interval(a, u[k - 1], b, u[k], 0);
     a = b;
   }
   if (scan.count == 0) {
@@ -194,7 +304,7 @@ int InsideArcs(const PlacedCircle& c, const SignedDistance& solid, Arc arcs[kMax
   return out;
 }
 
-double DeepestAngle(const PlacedCircle& c, const SignedDistance& solid, const Arc& arc,
+double DeepestAngle(const PlacedCircle& c, const NearEdges& solid, const Arc& arc,
                     std::uint64_t* queries, std::uint64_t* edges) {
   const CircleField field(c, solid, queries, edges);
   double lo = arc.begin, hi = arc.end;

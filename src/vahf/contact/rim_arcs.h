@@ -2,7 +2,7 @@
 // revolution (docs/design.md decision 14): the rim circle, placed in the
 // other solid's frame, meets the solid along arcs, found by a 1-D solve on
 // the circle's angle, and its line load is integrated over each arc by
-// Gauss-Legendre quadrature. What the exact revolved contact
+// Gauss-Radau quadrature. What the exact revolved contact
 // (revolved_contact.h) is made of.
 //
 // The circle is P(phi) = centre + radius (x cos phi + y sin phi). The signed
@@ -19,7 +19,11 @@
 // halved, at most kMaxLevels times (below that an excursion into the solid
 // is shallower than the bound over the last interval, about 0.2 um at the
 // scenes' tilts, and is left out). The curvature bound adds the bend of
-// the distance near the profile's corners (rim_arcs.cc, TravelBounds).
+// the distance near the profile's corners (rim_arcs.cc, TravelBounds); where
+// the trace reaches a corner, f has a kink, and an interval is excluded
+// instead when the trace can cross none of the surface edges near it (the
+// edges' lines have no kink: rim_arcs.cc, EdgeLines). The queries examine
+// only those edges (SignedDistance::Near).
 #pragma once
 
 #include <Eigen/Core>
@@ -52,13 +56,18 @@ struct Arc {
 // frame, widened by a margin far above the rounding of its sums.
 MeridianBox TraceBox(const PlacedCircle& c);
 
+// The solid as the circle can meet it: the edges near its trace box.
+inline NearEdges NearCircle(const SignedDistance& solid, const PlacedCircle& c) {
+  return solid.Near(TraceBox(c));
+}
+
 inline constexpr int kMaxArcs = 8;
 
 // The arcs of the circle inside the solid, in increasing angle, at most
-// kMaxArcs (more are left out; two parts touch along at most a few). Adds the
-// signed-distance queries it made to *queries and the profile edges they
-// examined to *edges.
-int InsideArcs(const PlacedCircle& c, const SignedDistance& solid, Arc arcs[kMaxArcs],
+// kMaxArcs (more are left out; two parts touch along at most a few). `solid`
+// is NearCircle(the solid, c). Adds the signed-distance queries it made to
+// *queries and the profile edges they examined to *edges.
+int InsideArcs(const PlacedCircle& c, const NearEdges& solid, Arc arcs[kMaxArcs],
                std::uint64_t* queries, std::uint64_t* edges);
 
 // The angle of an arc's deepest point, the least signed distance: where the
@@ -66,7 +75,7 @@ int InsideArcs(const PlacedCircle& c, const SignedDistance& solid, Arc arcs[kMax
 // ends (a whole circle: from the samples either side of the least of
 // kSamples), which also finds a kink where two faces meet. Counts as
 // InsideArcs.
-double DeepestAngle(const PlacedCircle& c, const SignedDistance& solid, const Arc& arc,
+double DeepestAngle(const PlacedCircle& c, const NearEdges& solid, const Arc& arc,
                     std::uint64_t* queries, std::uint64_t* edges);
 
 }  // namespace vahf::contact

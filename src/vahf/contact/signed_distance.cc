@@ -21,24 +21,42 @@ SignedDistance::SignedDistance(const geometry::Shape& shape) {
     z_min = std::min(z_min, q.z);
     z_max = std::max(z_max, q.z);
   }
+  const std::size_t n = v.size();
+  const auto vertex = [&](std::size_t k) {
+    return Eigen::Vector2d(v[k % n].r, v[k % n].z);
+  };
+  // The outward normal of the polygon's edge k (from vertex k to k + 1): the
+  // polygon is counter-clockwise, so it is the edge's direction turned
+  // clockwise. Zero for an edge of no length.
+  const auto outward = [&](std::size_t k) {
+    const Eigen::Vector2d ab = vertex(k + 1) - vertex(k);
+    if (ab.squaredNorm() == 0.0) return Eigen::Vector2d(0, 0);
+    const Eigen::Vector2d d = ab.normalized();
+    return Eigen::Vector2d(d.y(), -d.x());
+  };
+  // The nearest edge of some length before (step n - 1) or after (step 1) k.
+  const auto neighbour = [&](std::size_t k, std::size_t step) {
+    for (std::size_t i = 1; i < n; ++i) {
+      const Eigen::Vector2d o = outward(k + i * step);
+      if (o.squaredNorm() > 0) return o;
+    }
+    return Eigen::Vector2d(0, 0);
+  };
   std::vector<double> end_z;  // the surface edges' end heights, in surface_'s order
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    const Eigen::Vector2d a(v[k].r, v[k].z);
-    const Eigen::Vector2d b(v[(k + 1) % v.size()].r, v[(k + 1) % v.size()].z);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Vector2d a = vertex(k), b = vertex(k + 1);
     if (a.x() == 0.0 && b.x() == 0.0) continue;  // on the axis: interior in 3-D
     const Eigen::Vector2d ab = b - a;
-    const Eigen::Vector2d d = ab.normalized();
-    // The polygon is counter-clockwise, so the outward normal is d turned clockwise.
-    surface_.push_back({a, ab, ab.squaredNorm(), Eigen::Vector2d(d.y(), -d.x()),
-                        a.cwiseMin(b), a.cwiseMax(b)});
+    const Eigen::Vector2d out = outward(k);
+    surface_.push_back({a, ab, ab.squaredNorm(), out, a.cwiseMin(b), a.cwiseMax(b),
+                        out + neighbour(k, n - 1), out + neighbour(k, 1)});
     end_z.push_back(b.y());
     slab_z_.push_back(a.y());
     slab_z_.push_back(b.y());
   }
   // The corners: vertices off the axis where the surface turns.
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    const geometry::ProfilePoint a = v[(k + v.size() - 1) % v.size()], b = v[k],
-                                 c = v[(k + 1) % v.size()];
+  for (std::size_t k = 0; k < n; ++k) {
+    const geometry::ProfilePoint a = v[(k + n - 1) % n], b = v[k], c = v[(k + 1) % n];
     if (!(b.r > 0)) continue;
     if ((b.r - a.r) * (c.z - b.z) - (b.z - a.z) * (c.r - b.r) != 0)
       corners_.emplace_back(b.r, b.z);
@@ -176,24 +194,69 @@ double SignedDistance::CornerDistance(const MeridianBox& box) const {
   return best;
 }
 
+namespace {
+
+// The squared distance from q to the segment e.
+double SegmentDistance2(const Eigen::Vector2d& q, const ProfileEdge& e) {
+  const double s = std::clamp((q - e.a).dot(e.ab) / e.ab2, 0.0, 1.0);
+  return (q - (e.a + s * e.ab)).squaredNorm();
+}
+
+// The squared distance from q to the box [lo, hi].
+double BoxDistance2(const Eigen::Vector2d& q, const Eigen::Vector2d& lo,
+                    const Eigen::Vector2d& hi) {
+  return (lo - q).cwiseMax(q - hi).cwiseMax(0.0).squaredNorm();
+}
+
+}  // namespace
+
 Distance SignedDistance::OfRevolution(const Eigen::Vector3d& p, double r,
                                       bool inside) const {
   const Eigen::Vector2d q(r, p.z());
-  double best = std::numeric_limits<double>::infinity();
-  Eigen::Vector2d nearest = q, edge_normal(1, 0);
+  detail::Nearest near;
+  near.point = q;
+  for (const Edge& e : surface_) near.Consider(q, e);
+  return detail::FromNearest(p, r, q, near, inside);
+}
+
+NearEdges SignedDistance::Near(const MeridianBox& box) const {
+  NearEdges out;
+  out.solid_ = this;
+  out.box_ = box;
+  if (is_box_) return out;
+  out.clear_ = MeridianBoxClear(box);
+  if (out.clear_) return out;
+  out.corner_ = CornerDistance(box);
+  const Eigen::Vector2d lo(std::max(0.0, box.r_min), box.z_min), hi(box.r_max, box.z_max);
+  const Eigen::Vector2d corner[4] = {lo, {hi.x(), lo.y()}, hi, {lo.x(), hi.y()}};
+  // The greatest squared distance from the box to an edge is at one of the
+  // box's corners (the distance to a segment is convex); the least of those
+  // bounds every point's nearest edge.
+  double bound = std::numeric_limits<double>::infinity();
   for (const Edge& e : surface_) {
-    const double t = std::clamp((q - e.a).dot(e.ab) / e.ab2, 0.0, 1.0);
-    const Eigen::Vector2d c = e.a + t * e.ab;
-    const double d2 = (q - c).squaredNorm();
-    if (d2 < best) best = d2, nearest = c, edge_normal = e.outward;
+    double far = 0;
+    for (const Eigen::Vector2d& c : corner) far = std::max(far, SegmentDistance2(c, e));
+    bound = std::min(bound, far);
   }
-  const double d = std::sqrt(best);
-  Eigen::Vector2d n2 = edge_normal;
-  if (d > 1e-12) n2 = (inside ? nearest - q : q - nearest) / d;
-  const Eigen::Vector2d radial =
-      r > 0 ? Eigen::Vector2d(p.x() / r, p.y() / r) : Eigen::Vector2d(1, 0);
-  return {inside ? -d : d,
-          Eigen::Vector3d(n2.x() * radial.x(), n2.x() * radial.y(), n2.y())};
+  // Widened far above the rounding of the sums, so that rounding can only
+  // keep an edge more.
+  bound = bound * (1 + 1e-6) + 1e-24;
+  int count = 0;
+  for (const Edge& e : surface_) {
+    // The least distance from the box to a segment it does not meet is at a
+    // vertex of one of them (both convex).
+    double least = 0;
+    if (!SegmentMeetsBox(e.a, e.ab, lo, hi)) {
+      least = std::min(BoxDistance2(e.a, lo, hi), BoxDistance2(e.a + e.ab, lo, hi));
+      for (const Eigen::Vector2d& c : corner)
+        least = std::min(least, SegmentDistance2(c, e));
+    }
+    if (least > bound) continue;
+    if (count == NearEdges::kMaxEdges) return out;  // too many: all of them
+    out.edges_[count++] = &e;
+  }
+  if (count > 0) out.count_ = count;
+  return out;
 }
 
 Distance SignedDistance::OfBox(const Eigen::Vector3d& p) const {

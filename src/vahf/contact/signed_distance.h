@@ -8,7 +8,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -20,6 +23,58 @@ namespace vahf::contact {
 struct Distance {
   double distance;         // m, negative inside the solid
   Eigen::Vector3d normal;  // outward unit normal at the nearest surface point
+};
+
+// A surface edge of a profile, with what the queries need of it beyond its
+// ends computed once.
+struct ProfileEdge {
+  Eigen::Vector2d a;        // (r, z) start
+  Eigen::Vector2d ab;       // end minus start
+  double ab2;               // ab.squaredNorm()
+  Eigen::Vector2d outward;  // unit outward normal of the edge in (r, z)
+  Eigen::Vector2d lo, hi;   // its bounding box in (r, z)
+  // The sums of its outward normal and its neighbour's at its start and end
+  // (the neighbour may lie on the axis): the side of a point whose nearest
+  // surface point is that end is the sign of (q - end) . sum (J. A.
+  // Baerentzen and H. Aanaes, Signed distance computation using the angle
+  // weighted pseudonormal, IEEE TVCG 11(3), 2005; in the plane both edges
+  // weigh alike).
+  Eigen::Vector2d start_side, end_side;
+};
+
+class SignedDistance;
+
+// What a solid of revolution looks like from a box of its meridian
+// half-plane (SignedDistance::Near): whether the box is clear of it, the
+// distance from the box to its nearest corner, and the profile edges that can
+// be nearest to a point of the box. At(p) for p in the box is
+// SignedDistance::At(p) from those edges alone, the sign from the nearest
+// point's side (ProfileEdge::start_side) rather than a crossing count: the
+// same distance to the bit, the same sign except within rounding of the
+// surface, at a fraction of the work where a rim's trace meets one face.
+class NearEdges {
+ public:
+  bool clear() const { return clear_; }
+  double corner_distance() const { return corner_; }
+  const MeridianBox& box() const { return box_; }
+  // The distance from p, whose (|p_xy|, p_z) must lie in the box; `edges`, when
+  // given, gains the edges examined, and `meridian` is set to (|p_xy|, p_z).
+  Distance At(const Eigen::Vector3d& p, std::uint64_t* edges = nullptr,
+              Eigen::Vector2d* meridian = nullptr) const;
+  // The edges kept, in the profile's order; -1: all of them (not listed).
+  int count() const { return count_; }
+  const ProfileEdge& edge(int k) const { return *edges_[k]; }
+
+  static constexpr int kMaxEdges = 8;
+
+ private:
+  friend class SignedDistance;
+  const SignedDistance* solid_ = nullptr;
+  MeridianBox box_{};
+  bool clear_ = false;
+  double corner_ = 0;
+  int count_ = -1;  // the edges below; -1: all of them, through solid_->At
+  const ProfileEdge* edges_[kMaxEdges] = {};
 };
 
 class SignedDistance {
@@ -56,21 +111,20 @@ class SignedDistance {
   // s^2 / d for a path at speed s, d from the corner, and on the other two
   // faces meet in a kink. rim_arcs.cc bounds the distance's bend with it.
   double CornerDistance(const MeridianBox& box) const;
+  // The solid as seen from a box (NearEdges): an edge is kept when its least
+  // distance to the box is at most the least, over edges, of the greatest
+  // distance from the box to an edge (so it holds every point's nearest);
+  // more than NearEdges::kMaxEdges, or a box shape: all of them.
+  NearEdges Near(const MeridianBox& box) const;
 
   // Axis-aligned bounds of the solid in its frame, m.
   const Eigen::Vector3d& lower() const { return lower_; }
   const Eigen::Vector3d& upper() const { return upper_; }
 
  private:
-  // What the queries need of an edge beyond its ends is computed once here,
+  // What the queries need of an edge beyond its ends is computed once,
   // with the operations they used to repeat for every point: the same bits.
-  struct Edge {
-    Eigen::Vector2d a;        // (r, z) start
-    Eigen::Vector2d ab;       // end minus start
-    double ab2;               // ab.squaredNorm()
-    Eigen::Vector2d outward;  // unit outward normal of the edge in (r, z)
-    Eigen::Vector2d lo, hi;   // its bounding box in (r, z)
-  };
+  using Edge = ProfileEdge;
   // A surface edge as the crossing number uses it: the ray at height z crosses
   // it at r = a_r + (z - a_z) / dz * dr.
   struct Crossing {
@@ -95,5 +149,59 @@ class SignedDistance {
   std::vector<Crossing> crossings_;
   Eigen::Vector3d lower_, upper_;
 };
+
+namespace detail {
+
+// The nearest point of a profile's surface edges to q = (r, z) in the
+// meridian half-plane: the least squared distance, the point, and the edge
+// and parameter t in [0, 1] along it (the first edge of a tie).
+struct Nearest {
+  double d2 = std::numeric_limits<double>::infinity();
+  Eigen::Vector2d point;
+  const ProfileEdge* edge = nullptr;
+  double t = 0;
+  void Consider(const Eigen::Vector2d& q, const ProfileEdge& e) {
+    const double s = std::clamp((q - e.a).dot(e.ab) / e.ab2, 0.0, 1.0);
+    const Eigen::Vector2d c = e.a + s * e.ab;
+    const double d = (q - c).squaredNorm();
+    if (d < d2) d2 = d, point = c, edge = &e, t = s;
+  }
+};
+
+// The 3-D distance and normal of p, r = |p_xy|, from its nearest surface
+// point in the meridian half-plane.
+inline Distance FromNearest(const Eigen::Vector3d& p, double r, const Eigen::Vector2d& q,
+                            const Nearest& near, bool inside) {
+  const double d = std::sqrt(near.d2);
+  Eigen::Vector2d n2 = near.edge ? near.edge->outward : Eigen::Vector2d(1, 0);
+  if (d > 1e-12) n2 = (inside ? near.point - q : q - near.point) / d;
+  const Eigen::Vector2d radial =
+      r > 0 ? Eigen::Vector2d(p.x() / r, p.y() / r) : Eigen::Vector2d(1, 0);
+  return {inside ? -d : d,
+          Eigen::Vector3d(n2.x() * radial.x(), n2.x() * radial.y(), n2.y())};
+}
+
+}  // namespace detail
+
+// Defined here so that a rim's queries (rim_arcs.cc) compile it in.
+inline Distance NearEdges::At(const Eigen::Vector3d& p, std::uint64_t* edges,
+                              Eigen::Vector2d* meridian) const {
+  const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+  const Eigen::Vector2d q(r, p.z());
+  if (meridian) *meridian = q;
+  if (count_ < 0) return solid_->At(p, edges);
+  detail::Nearest near;
+  near.point = q;
+  for (int k = 0; k < count_; ++k) near.Consider(q, *edges_[k]);
+  if (!near.edge) return solid_->At(p, edges);  // not a number
+  if (edges) *edges += static_cast<std::uint64_t>(count_);
+  // The nearest point's side: an edge's interior by its normal, an end by
+  // the sum of the normals meeting there.
+  const ProfileEdge& e = *near.edge;
+  const Eigen::Vector2d& side = near.t <= 0.0   ? e.start_side
+                                : near.t >= 1.0 ? e.end_side
+                                                : e.outward;
+  return detail::FromNearest(p, r, q, near, (q - near.point).dot(side) < 0);
+}
 
 }  // namespace vahf::contact
