@@ -106,6 +106,14 @@ double Crossing(const CircleField& field, Sample a, Sample b) {
   return 0.5 * (a.phi + b.phi);
 }
 
+// Whether a function of magnitudes fa and fb (> 0) at the ends of an
+// interval of width w, its slope and curvature at most s and k on it, cannot
+// reach zero inside: by its slope bound, or because it stays within
+// k w^2 / 8 of its chord.
+bool CannotReachZero(double fa, double fb, double s, double k, double w) {
+  return fa + fb > s * w || std::min(fa, fb) > 0.125 * k * w * w;
+}
+
 // Bounds on the travel of the circle's meridian trace (r, z)(phi) and of f
 // along it (TravelBounds).
 struct Bounds {
@@ -154,8 +162,7 @@ struct EdgeLines {
   // has at both ends (ga, gb, same strict sign) over an interval of width w.
   static bool KeepsSide(double ga, double gb, double s, double k, double w) {
     if (!((ga > 0 && gb > 0) || (ga < 0 && gb < 0))) return false;
-    const double fa = std::abs(ga), fb = std::abs(gb);
-    return fa + fb > s * w || std::min(fa, fb) > 0.125 * k * w * w;
+    return CannotReachZero(std::abs(ga), std::abs(gb), s, k, w);
   }
   // Whether the trace cannot cross any of the edges between meridian points
   // qa and qb an interval of width w apart.
@@ -206,8 +213,8 @@ struct Scan {
     // or because the trace can cross none of the edges near it (EdgeLines:
     // their lines have no kink where f has one, at a corner).
     const double w = b.phi - a.phi;
-    const double fa = std::abs(a.v.f), fb = std::abs(b.v.f);
-    if (fa + fb > bounds.slope * w || std::min(fa, fb) > 0.125 * bounds.curvature * w * w)
+    if (CannotReachZero(std::abs(a.v.f), std::abs(b.v.f), bounds.slope, bounds.curvature,
+                        w))
       return;
     if (lines.NoneCrossed(a.v.q, b.v.q, w)) return;
     if (level >= kMaxLevels) return;  // a dip shallower than the bound: left out

@@ -198,8 +198,9 @@ namespace {
 
 // The squared distance from q to the segment e.
 double SegmentDistance2(const Eigen::Vector2d& q, const ProfileEdge& e) {
-  const double s = std::clamp((q - e.a).dot(e.ab) / e.ab2, 0.0, 1.0);
-  return (q - (e.a + s * e.ab)).squaredNorm();
+  detail::Nearest near;
+  near.Consider(q, e);
+  return near.d2;
 }
 
 // The squared distance from q to the box [lo, hi].
