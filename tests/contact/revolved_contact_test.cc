@@ -3,7 +3,7 @@
 // - closed forms: the depth of a circle tilted in a cylindrical bore and on a
 //   45 deg cone (the bore's chamfer), at several tilts, and the load of a
 //   circle pressed uniformly into the cone (2 pi rho times the line law);
-// - the general path (penalty_contact.h, contact model "resolving")
+// - the general path (penalty_contact.h, contact model "sampled")
 //   with its rim spacing refined until it converges, over 1 000 random poses
 //   and motions of the peg near and inside its bore: the same line law,
 //   integrated by sampling instead of quadrature over exact arcs;
@@ -310,7 +310,7 @@ TEST(RevolvedContact, AnalyticJacobianAgreesWithCentralDifferences) {
   }
 }
 
-// Model "revolved" on a scene that mixes a revolved seat and a box: the exact
+// Model "resolving" on a scene that mixes a revolved seat and a box: the exact
 // path for the bore, the general path for the box, their loads summed
 // (CompositeContact), one evaluation counted.
 TEST(RevolvedContact, MixedSceneSumsTheExactAndTheGeneralPath) {
@@ -323,11 +323,11 @@ TEST(RevolvedContact, MixedSceneSumsTheExactAndTheGeneralPath) {
   s.moving = {&peg, Eigen::Isometry3d::Identity(), 0.15, Radius(peg)};
   s.fixed = {{&bore, Eigen::Isometry3d::Identity(), 0.15, Radius(bore)},
              {&block, block_at, 0.15, Radius(block)}};
-  const BuiltContact mixed = BuildContact("revolved", s);
+  const BuiltContact mixed = BuildContact("resolving", s);
   s.fixed.pop_back();
-  const BuiltContact exact = BuildContact("revolved", s);
+  const BuiltContact exact = BuildContact("resolving", s);
   s.fixed = {{&block, block_at, 0.15, Radius(block)}};
-  const BuiltContact general = BuildContact("revolved", s);
+  const BuiltContact general = BuildContact("resolving", s);
   EXPECT_GT(mixed.shell_points, 0);
   EXPECT_EQ(exact.shell_points, 0);
   RigidMotion m;
@@ -389,7 +389,7 @@ double BruteDepth(const Shape& peg, const Shape& bore, const Eigen::Isometry3d& 
 // corner point; inside, a kink where the two faces meet), and a scan that
 // bounded the bend by the circle's own missed whole arcs. The first pose is
 // a state of a resolved peg trial (peg_in_hole_resolved.json, contact model
-// revolved, CVODE, seed 1000, t = 0.0317 s) where the peg's chamfer edge and
+// resolving, CVODE, seed 1000, t = 0.0317 s) where the peg's chamfer edge and
 // the bore's chamfer-to-wall edge cross 18.5 um deep and the scan found
 // neither; the CVODE stepper then accepted the state and the peg ran through
 // the barrier. The rest are random poses of the peg's chamfer at the bore's

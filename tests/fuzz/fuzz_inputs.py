@@ -119,7 +119,7 @@ ENUMS = {
     "type": ["revolution", "box", "sphere", ""],
     "integrator": INTEGRATORS + ["Euler", ""],
     "mode": ["operator", "none", "raycast", "constant", "off", "on"],
-    "model": ["shell", "resolving", "revolved", "rigid"],
+    "model": ["shell", "resolving", "sampled", "revolved", "rigid"],
     "solver": ["levenberg_marquardt", "golden_section", "newton"],
     "quantity": ["assembly_time", "success_rate", "eta", "lambda_c", "V", "f", "r", "g", "x"],
     "by": ["operator", "all", "part"],

@@ -41,10 +41,11 @@ struct ContactParams {
   // its overlap an order of magnitude below the gap it resolves.
   double penetration_fraction = 0.1;
   // Depth of the normal law's hardening barrier, m (contact_model.h); 0: none.
-  // Not a scene parameter: with model "resolving" a trial sets it to
-  // the penetration bound, penetration_fraction times the scene's smallest
-  // radial clearance, so the contact cannot pass the bound it is checked
-  // against; otherwise, and in a scene without a radial fit, no barrier.
+  // Not a scene parameter: with model "resolving" or "sampled" a trial sets it
+  // just inside the penetration bound b (penetration_fraction times the
+  // scene's smallest radial clearance), at b (1 - kBarrierMargin), so the
+  // contact cannot pass the bound it is checked against; otherwise, and in a
+  // scene without a radial fit, no barrier.
   double barrier_depth = 0.0;
   // The contact model a trial builds (docs/physics.md, Contact):
   //   "shell" (the default): the moving part's point shell against the static
@@ -52,20 +53,23 @@ struct ContactParams {
   //     barrier. Cheap, and it does not resolve a tight fit: a static edge
   //     sinks between shell points, a moving edge sits half a spacing outside
   //     the nearest shell point (the warnings record shows how deep).
-  //   "resolving": also the static parts' rims against the moving part's
-  //     field and the moving part's rims against the static fields, and,
-  //     when the scene has a radial fit, stiffnesses by the bound rule with
-  //     the hardening barrier at the bound: the largest steady load
-  //     F = kappa |T_0 - T_t| + m g (the operator's Eq. 7 pull at the start
-  //     plus the part's weight), carried by `rule_contact_length` of edge,
-  //     sinks `rule_depth_fraction` of the bound b:
+  //   "resolving": the law that resolves a fit: when the scene has a radial fit,
+  //     stiffnesses by the bound rule with the hardening barrier just inside
+  //     the bound (barrier_depth):
+  //     the largest steady load F = kappa |T_0 - T_t| + m g (the operator's
+  //     Eq. 7 pull at the start plus the part's weight), carried by
+  //     `rule_contact_length` of edge, sinks `rule_depth_fraction` of the
+  //     bound b:
   //       line_stiffness = F / (l q b),  stiffness = line_stiffness / l,
-  //     and impacts are the barrier's. Stiff: CPodes integrates it.
-  //   "revolved": resolving's law and stiffness; for a fixed part that is,
-  //     like the moving part, a solid of revolution, the exact rim arcs both
-  //     ways instead of sampled points (revolved_contact.h); the general path
-  //     for other pairs. Not yet the default of "resolving": its trials fail
-  //     more often at the chamfer impact (docs/physics.md, Contact).
+  //     and impacts are the barrier's. For a fixed part that is, like the
+  //     moving part, a solid of revolution, the exact rim arcs both ways
+  //     (revolved_contact.h); for other pairs the sampled path below. Stiff:
+  //     CVODE or CPodes integrates it.
+  //   "sampled": resolving's law on sampled points for every pair, revolved
+  //     or not: the moving part's point shell and rims against the static
+  //     fields and the static parts' rims against the moving part's field
+  //     (penalty_contact.h). The general path, and the reference the exact
+  //     rim arcs are checked against.
   std::string model = "shell";
   // l of the rule, m: 2 mm of edge, a short arc of a rim in line contact.
   double rule_contact_length = 2e-3;

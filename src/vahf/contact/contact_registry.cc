@@ -4,6 +4,7 @@
 
 #include "vahf/contact/composite_contact.h"
 #include "vahf/contact/penalty_contact.h"
+#include "vahf/contact/point_load.h"
 #include "vahf/contact/revolved_contact.h"
 #include "vahf/core/error.h"
 
@@ -48,7 +49,7 @@ BuiltContact Shell(const ContactSetup& s) { return Penalty(s, All(s), s.params, 
 ContactParams BoundRule(const ContactSetup& s) {
   ContactParams p = s.params;
   if (s.penetration_bound > 0) {
-    p.barrier_depth = s.penetration_bound;  // the bound it is checked against
+    p.barrier_depth = s.penetration_bound * (1.0 - kBarrierMargin);
     const double l = p.rule_contact_length;
     p.line_stiffness = s.steady_load / (l * p.rule_depth_fraction * s.penetration_bound);
     p.stiffness = p.line_stiffness / l;
@@ -60,16 +61,16 @@ const geometry::RevolvedProfile* ProfileOf(const ContactBody& b) {
   return std::get_if<geometry::RevolvedProfile>(b.shape);
 }
 
-// The bound rule's law on the general path: the moving shell and every
-// part's rims, sampled, both ways.
-BuiltContact Resolving(const ContactSetup& s) {
+// The bound rule's law on the general path for every pair: the moving shell
+// and every part's rims, sampled, both ways.
+BuiltContact Sampled(const ContactSetup& s) {
   return Penalty(s, All(s), BoundRule(s), true);
 }
 
 // The bound rule's law; the exact revolved contact (revolved_contact.h) for
 // every fixed part that is, like the moving part, a solid of revolution, and
 // the general path for the others.
-BuiltContact Revolved(const ContactSetup& s) {
+BuiltContact Resolving(const ContactSetup& s) {
   const ContactParams p = BoundRule(s);
   const geometry::RevolvedProfile* moving = ProfileOf(s.moving);
   std::vector<RevolvedContact::Solid> revolved;
@@ -104,9 +105,12 @@ BuiltContact Revolved(const ContactSetup& s) {
 const std::vector<ContactModelEntry>& ContactModels() {
   static const std::vector<ContactModelEntry> models = {
       {"shell", "point shell vs static fields, given stiffness", Shell},
-      {"resolving", "rims both ways, stiffness by the bound rule, barrier", Resolving},
-      {"revolved", "resolving's law on exact rim arcs both ways for revolved pairs",
-       Revolved},
+      {"resolving",
+       "stiffness by the bound rule, barrier; exact rim arcs both ways for revolved "
+       "pairs, sampled rims and shell for others",
+       Resolving},
+      {"sampled", "resolving's law on sampled rims and shell for every pair (reference)",
+       Sampled},
   };
   return models;
 }

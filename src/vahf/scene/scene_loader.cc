@@ -308,7 +308,7 @@ std::string SizeViolation(const Scene& scene) {
       v = over(part, "contact shell", "shell_spacing", c.shell_spacing,
                contact::PointShellSizeBound(part.shape, c.shell_spacing),
                contact::kMaxShellPoints);
-    if (v.empty() && c.model == "resolving")
+    if (v.empty() && c.model != "shell")
       v = over(part, "rims", "rim_spacing", c.rim_spacing,
                contact::RimSizeBound(part.shape, c.rim_spacing), contact::kMaxRimPoints);
     if (!v.empty()) return v;

@@ -44,7 +44,7 @@ int Rhs(realtype, N_Vector y, N_Vector ydot, void* data) {
   const BodyState state = Of(y);
   const contact::RigidMotion m = MotionOf(state);
   if (!IsFinite(m)) return 1;  // recoverable: CVODE retries with a smaller step
-  const Loads loads = p.c->model.LoadsAt(m, p.held, &p.c->contact_counters);
+  const Loads loads = p.c->LoadsAt(m, p.held);
   Of(ydot) = Derivative(p.c->model, state, loads, p.c->model.scene->gravity);
   return 0;
 }
@@ -54,6 +54,7 @@ int Rhs(realtype, N_Vector y, N_Vector ydot, void* data) {
 int Jacobian(realtype, N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector,
              N_Vector) {
   Problem& p = *static_cast<Problem*>(data);
+  const PhaseTimer timer(p.c->Timing(&PhaseSeconds::jacobian));
   const BodyState state = Of(y);
   const contact::RigidMotion m = MotionOf(state);
   if (!IsFinite(m)) return 1;  // recoverable, as in Rhs
@@ -99,6 +100,48 @@ struct Cvode {
     if (context) SUNContext_Free(&context);
   }
 };
+
+// CVODE's dense linear solver with its factorisations and solves timed
+// (TrialOptions::time_phases): a linear solver of our own whose content is
+// the dense one and the accumulator, every operation passed on to it.
+struct TimedSolver {
+  SUNLinearSolver dense;
+  double* seconds;
+};
+SUNLinearSolver DenseOf(SUNLinearSolver s) {
+  return static_cast<TimedSolver*>(s->content)->dense;
+}
+SUNLinearSolver TimedDense(SUNLinearSolver dense, double* seconds, SUNContext context) {
+  SUNLinearSolver s = SUNLinSolNewEmpty(context);
+  VAHF_CHECK(s != nullptr, "SUNLinSolNewEmpty failed");
+  s->content = new TimedSolver{dense, seconds};
+  s->ops->gettype = [](SUNLinearSolver t) { return SUNLinSolGetType(DenseOf(t)); };
+  s->ops->getid = [](SUNLinearSolver t) { return SUNLinSolGetID(DenseOf(t)); };
+  s->ops->initialize = [](SUNLinearSolver t) { return SUNLinSolInitialize(DenseOf(t)); };
+  s->ops->setup = [](SUNLinearSolver t, SUNMatrix a) {
+    const PhaseTimer timer(static_cast<TimedSolver*>(t->content)->seconds);
+    return SUNLinSolSetup(DenseOf(t), a);
+  };
+  s->ops->solve = [](SUNLinearSolver t, SUNMatrix a, N_Vector x, N_Vector b,
+                     realtype tol) {
+    const PhaseTimer timer(static_cast<TimedSolver*>(t->content)->seconds);
+    return SUNLinSolSolve(DenseOf(t), a, x, b, tol);
+  };
+  s->ops->lastflag = [](SUNLinearSolver t) { return SUNLinSolLastFlag(DenseOf(t)); };
+  s->ops->space = [](SUNLinearSolver t, long* real, long* integer) {
+    return SUNLinSolSpace(DenseOf(t), real, integer);
+  };
+  s->ops->free = [](SUNLinearSolver t) {
+    if (!t) return 0;
+    auto* content = static_cast<TimedSolver*>(t->content);
+    SUNLinSolFree(content->dense);
+    delete content;
+    t->content = nullptr;
+    SUNLinSolFreeEmpty(t);
+    return 0;
+  };
+  return s;
+}
 
 // The absolute tolerances, in the part's units: `accuracy` m for its
 // origin's position and accuracy / time_scale m/s for its velocity
@@ -151,6 +194,9 @@ double IntegrateWithCvode(TrialContext& c, double sample_interval,
     ok(CVodeSVtolerances(cv.mem, sim.accuracy, cv.atol), "tolerances");
     cv.matrix = SUNDenseMatrix(kBodyStateSize, kBodyStateSize, cv.context);
     cv.solver = SUNLinSol_Dense(cv.y, cv.matrix, cv.context);
+    if (c.time_phases)
+      cv.solver =
+          TimedDense(cv.solver, c.Timing(&PhaseSeconds::linear_algebra), cv.context);
     ok(CVodeSetLinearSolver(cv.mem, cv.solver, cv.matrix), "linear solver");
     if (!c.difference_quotient_jacobian) ok(CVodeSetJacFn(cv.mem, Jacobian), "Jacobian");
     ok(CVodeRootInit(cv.mem, 1, Root), "root");
@@ -249,8 +295,7 @@ double IntegrateWithCvode(TrialContext& c, double sample_interval,
           BodyState ys = Of(cv.dky);
           NormaliseQuaternion(&ys);
           const contact::RigidMotion ms = MotionOf(ys);
-          c.samples.push_back(c.SampleRow(
-              ts, ms, model.LoadsAt(ms, p.held, &c.contact_counters), p.held.psi));
+          c.samples.push_back(c.SampleRow(ts, ms, c.LoadsAt(ms, p.held), p.held.psi));
         }
         if (flag == CV_ROOT_RETURN) {
           c.ended = Status::kCompleted;

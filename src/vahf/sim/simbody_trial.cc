@@ -44,7 +44,7 @@ class SimbodyTrial::LoadsElement : public SimTK::Force::Custom::Implementation {
                       "non-finite pose or velocity in a force evaluation");
       return;
     }
-    loads = c.model.LoadsAt(m, t_->HeldDecision(s), &c.contact_counters);
+    loads = c.LoadsAt(m, t_->HeldDecision(s));
     body_forces[t_->body_] += SimTK::SpatialVec(ToSimTK(loads.torque), ToSimTK(loads.force));
   }
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }

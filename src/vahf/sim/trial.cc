@@ -83,6 +83,7 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key,
   c.work = options.initial_work;
   c.record_trace = options.record_trace;
   c.difference_quotient_jacobian = options.difference_quotient_jacobian;
+  c.time_phases = options.time_phases;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = ThreadCpuSeconds();
   TrialResult result;
@@ -93,6 +94,7 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key,
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.cpu_seconds = ThreadCpuSeconds() - cpu_start;
+  result.phases = c.phases;
   result.status = c.ended.value_or(Status::kTimeout);
   if (!c.ended) c.detail = fmt::format("time limit {} s", params.simulation.time_limit);
   result.detail = c.detail;

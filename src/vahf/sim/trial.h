@@ -33,6 +33,9 @@ struct TrialOptions {
   // CVODE only, for comparisons and tests: CVODE's difference-quotient
   // Jacobian (13 right-hand sides each) instead of the analytic one.
   bool difference_quotient_jacobian = false;
+  // For benchmarks: measure where the time goes (TrialResult::phases,
+  // phase_seconds.h). Changes no bit of the result.
+  bool time_phases = false;
 };
 
 // Runs one trial with the integrator and accuracy of scene.params.simulation.

@@ -11,6 +11,7 @@
 #include "vahf/guidance/assembly_torque.h"
 #include "vahf/human/fatigue.h"
 #include "vahf/scene/scene_loader.h"
+#include "vahf/sim/phase_seconds.h"
 
 namespace vahf::sim {
 namespace {
@@ -174,11 +175,15 @@ void TrialModel::OperatorLoad(const contact::RigidMotion& m, const Decision& d,
 }
 
 Loads TrialModel::LoadsAt(const contact::RigidMotion& m, const Decision& d,
-                          contact::ContactCounters* counters, LoadJacobian* jacobian) const {
+                          contact::ContactCounters* counters, LoadJacobian* jacobian,
+                          double* contact_seconds) const {
   Loads out;
   contact::ContactJacobian cj;
-  out.contact = jacobian && contact.model ? contact.model->Evaluate(m, counters, &cj)
-                                          : ContactAt(m, counters);
+  {
+    const PhaseTimer timer(contact_seconds);
+    out.contact = jacobian && contact.model ? contact.model->Evaluate(m, counters, &cj)
+                                            : ContactAt(m, counters);
+  }
   Vector3d torque;
   OperatorLoad(m, d, out.contact, &out.assembly_force, &torque);
   out.force = out.assembly_force + out.contact.normal_force + out.contact.friction_force;

@@ -96,9 +96,11 @@ struct TrialModel {
   // Both elements at m (gravity aside): the contact first, as the operator
   // feels it, then their sum, operator first (the order fixes the bits).
   // With `jacobian`, also their derivative, from the same contact pass (the
-  // loads the same bits as without).
+  // loads the same bits as without). With `contact_seconds`, the contact
+  // evaluation's time is added to it (PhaseTimer).
   Loads LoadsAt(const contact::RigidMotion& m, const Decision& d,
-                contact::ContactCounters* counters, LoadJacobian* jacobian = nullptr) const;
+                contact::ContactCounters* counters, LoadJacobian* jacobian = nullptr,
+                double* contact_seconds = nullptr) const;
   // The derivative of LoadsAt(m, d) given its `loads` and the contact's
   // derivative there (trial_model_jacobian.cc).
   LoadJacobian LoadJacobianAt(const contact::RigidMotion& m, const Decision& d,

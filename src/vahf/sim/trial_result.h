@@ -12,6 +12,7 @@
 #include "vahf/core/warnings.h"
 #include "vahf/human/factors.h"
 #include "vahf/rng/stream.h"
+#include "vahf/sim/phase_seconds.h"
 
 namespace vahf::sim {
 
@@ -81,6 +82,7 @@ struct TrialResult {
   TrialCounters counters;
   double wall_seconds = 0;       // measured, never part of a digest
   double cpu_seconds = 0;        // this thread's CPU, measured, never part of a digest
+  PhaseSeconds phases;           // with TrialOptions::time_phases; never part of a digest
   double work = 0;               // A when the trial ended, J (Eq. 4, with the initial work)
   std::vector<TraceRow> trace;   // one row per decision instant (if recorded)
   std::vector<TraceRow> samples; // one row per sample instant (TrialOptions::sample_interval)

@@ -16,6 +16,7 @@
 #include "vahf/human/factors.h"
 #include "vahf/rng/stream.h"
 #include "vahf/sim/outcome.h"
+#include "vahf/sim/phase_seconds.h"
 #include "vahf/sim/trial_model.h"
 #include "vahf/sim/trial_result.h"
 #include "vahf/visibility/visibility.h"
@@ -70,6 +71,13 @@ struct TrialContext {
   // CVODE: its own difference-quotient Jacobian instead of the analytic one
   // (TrialOptions, for comparisons).
   bool difference_quotient_jacobian = false;
+  // Where the time goes, when asked (TrialOptions::time_phases).
+  bool time_phases = false;
+  PhaseSeconds phases;
+  // The accumulator of one phase for a PhaseTimer: null when not timing.
+  double* Timing(double PhaseSeconds::*phase) {
+    return time_phases ? &(phases.*phase) : nullptr;
+  }
 
   void End(Ending e) {
     ended = e.status;
@@ -79,7 +87,13 @@ struct TrialContext {
   const scene::Parameters& params() const { return model.scene->params; }
 
   contact::ContactForces ContactAt(const contact::RigidMotion& m) {
+    const PhaseTimer timer(Timing(&PhaseSeconds::contact));
     return model.ContactAt(m, &contact_counters);
+  }
+  // TrialModel::LoadsAt with this trial's counters, its contact timed.
+  Loads LoadsAt(const contact::RigidMotion& m, const Decision& d) {
+    return model.LoadsAt(m, d, &contact_counters, nullptr,
+                         Timing(&PhaseSeconds::contact));
   }
 
   // V (Eq. 1: cast, given, or 1) and the factors for the part at pose m with
