@@ -13,11 +13,11 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "support/motion_differences.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/sim/rigid_body_jacobian.h"
 #include "vahf/sim/trial.h"
 #include "vahf/sim/trial_model.h"
-#include "support/motion_differences.h"
 
 namespace vahf::sim {
 namespace {
@@ -33,7 +33,10 @@ scene::Scene BlockOnFloor() {
       {"format", "vahf-scene/1"},
       {"name", "block_on_floor"},
       {"operator",
-       {{"height", 1.75}, {"arm_length", 0.74}, {"position", {0.0, -0.35}}, {"facing_deg", 90}}},
+       {{"height", 1.75},
+        {"arm_length", 0.74},
+        {"position", {0.0, -0.35}},
+        {"facing_deg", 90}}},
       {"parts",
        {{{"name", "floor"},
          {"role", "base"},
@@ -58,7 +61,8 @@ scene::Scene BlockOnFloor() {
 Decision Aiming(const TrialModel& model) {
   Decision d;
   d.estimated_target = model.part->target.position + Vector3d(0.003, -0.002, -0.005);
-  d.held_orientation = Eigen::AngleAxisd(0.2, Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  d.held_orientation =
+      Eigen::AngleAxisd(0.2, Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
   d.psi = 0.9;
   return d;
 }
@@ -66,7 +70,8 @@ Decision Aiming(const TrialModel& model) {
 // The block's bottom `depth` into the floor at its centre, tilted, sliding.
 contact::RigidMotion Pressed(double depth, double tilt) {
   contact::RigidMotion m;
-  m.pose.linear() = Eigen::AngleAxisd(tilt, Vector3d(1, 2, 0).normalized()).toRotationMatrix();
+  m.pose.linear() =
+      Eigen::AngleAxisd(tilt, Vector3d(1, 2, 0).normalized()).toRotationMatrix();
   m.pose.translation() = Vector3d(1.3e-3, -0.7e-3, 0.925 + 0.005 - depth);
   m.velocity = {0.05, 0.02, -0.01};
   m.angular_velocity = {0.2, -0.1, 0.3};
@@ -80,10 +85,11 @@ Eigen::VectorXd Stacked(const Loads& l) {
 }
 
 // d(ydot)/dy by central differences, steps per state segment.
-Eigen::MatrixXd StateDifferences(const TrialModel& model, const Decision& d, const BodyState& y,
-                                 const std::array<double, 4>& h) {
+Eigen::MatrixXd StateDifferences(const TrialModel& model, const Decision& d,
+                                 const BodyState& y, const std::array<double, 4>& h) {
   const auto f = [&](const BodyState& x) -> BodyState {
-    return Derivative(model, x, model.LoadsAt(MotionOf(x), d, nullptr), model.scene->gravity);
+    return Derivative(model, x, model.LoadsAt(MotionOf(x), d, nullptr),
+                      model.scene->gravity);
   };
   Eigen::MatrixXd out(kBodyStateSize, kBodyStateSize);
   for (int j = 0; j < kBodyStateSize; ++j) {
@@ -107,7 +113,10 @@ TEST(CvodeJacobian, OperatorWithAFlatContact) {
   const auto model = BuildTrialModel(s, 0);
   const Decision d = Aiming(*model);
   // 20 um deep (w = 1), and 50 nm deep and level: within the blend.
-  struct Case { double depth, tilt; std::array<double, 4> steps; };
+  struct Case {
+    double depth, tilt;
+    std::array<double, 4> steps;
+  };
   for (const Case& c : {Case{20e-6, 1e-3, {1e-9, 1e-7, 1e-7, 1e-5}},
                         Case{50e-9, 1e-6, {1e-12, 1e-10, 1e-7, 1e-5}}}) {
     const contact::RigidMotion m = Pressed(c.depth, c.tilt);
@@ -115,18 +124,22 @@ TEST(CvodeJacobian, OperatorWithAFlatContact) {
     const Loads loads = model->LoadsAt(m, d, nullptr, &analytic);
     ASSERT_GT(loads.contact.points_in_contact, 300);
     if (c.depth < 1e-6) {
-      ASSERT_LT(loads.contact.normal_force.norm(), model->blend_force) << "not in the blend";
+      ASSERT_LT(loads.contact.normal_force.norm(), model->blend_force)
+          << "not in the blend";
     }
     EXPECT_EQ(Stacked(loads), Stacked(model->LoadsAt(m, d, nullptr)));  // the same bits
     const Eigen::MatrixXd differences = vahf::testing::MotionDifferences(
-        [&](const contact::RigidMotion& x) { return Stacked(model->LoadsAt(x, d, nullptr)); },
+        [&](const contact::RigidMotion& x) {
+          return Stacked(model->LoadsAt(x, d, nullptr));
+        },
         m, c.steps);
     EXPECT_TRUE(vahf::testing::BlocksAgree(analytic, differences, 1e-5)) << c.depth;
     // And the state's Jacobian, through the quaternion.
     const BodyState y = StateOf(m);
     EXPECT_TRUE(vahf::testing::BlocksAgree(
         Analytic(*model, d, y),
-        StateDifferences(*model, d, y, {c.steps[0], c.steps[1] / 2, c.steps[2], c.steps[3]}),
+        StateDifferences(*model, d, y,
+                         {c.steps[0], c.steps[1] / 2, c.steps[2], c.steps[3]}),
         1e-5, 1e-8, kSegments, kSegments))
         << c.depth;
   }
@@ -171,7 +184,8 @@ std::string Head(const std::string& message) {
 // `model`: the scene's contact model, or another.
 void ComparePegStates(const std::string& file, const std::string& model_name,
                       double tolerance, double shallow, double shallow_depth = 10e-6) {
-  scene::Scene s = scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + file);
+  scene::Scene s =
+      scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/" + file);
   s.params.simulation.integrator = "CVODE";
   s.params.simulation.accuracy = 1e-4;
   if (!model_name.empty()) s.params.contact.model = model_name;
@@ -189,9 +203,10 @@ void ComparePegStates(const std::string& file, const std::string& model_name,
     d.psi = row.psi;
     const BodyState y = StateOf(m);
     const Eigen::MatrixXd analytic = Analytic(*model, d, y);
-    const Eigen::MatrixXd differences = StateDifferences(*model, d, y, {1e-10, 1e-9, 1e-7, 1e-6});
-    const auto exact = vahf::testing::BlocksAgree(analytic, differences, 1e-5, 1e-8, kSegments,
-                                                  kSegments);
+    const Eigen::MatrixXd differences =
+        StateDifferences(*model, d, y, {1e-10, 1e-9, 1e-7, 1e-6});
+    const auto exact = vahf::testing::BlocksAgree(analytic, differences, 1e-5, 1e-8,
+                                                  kSegments, kSegments);
     const auto close = vahf::testing::BlocksAgree(analytic, differences, tolerance, 1e-6,
                                                   kSegments, kSegments);
     std::printf("%s (%s) t = %.4f s, depth %.3g um: exact %s; at %g: %s\n", file.c_str(),
@@ -199,8 +214,8 @@ void ComparePegStates(const std::string& file, const std::string& model_name,
                 exact ? "yes" : "no", tolerance, Head(close.message()).c_str());
     EXPECT_TRUE(close) << file << " t = " << row.time;
     if (row.penetration < shallow_depth) {
-      EXPECT_TRUE(vahf::testing::BlocksAgree(analytic, differences, shallow, 1e-6, kSegments,
-                                             kSegments))
+      EXPECT_TRUE(vahf::testing::BlocksAgree(analytic, differences, shallow, 1e-6,
+                                             kSegments, kSegments))
           << file << " t = " << row.time;
     }
   }
@@ -236,8 +251,8 @@ TEST(CvodeJacobian, ResolvedPegStatesFromATrial) {
 // the same completion time within the tolerance's effect, the analytic one
 // without the 13 right-hand sides per Jacobian.
 TEST(CvodeJacobian, AgreesWithDifferenceQuotientsOnATrial) {
-  scene::Scene s =
-      scene::LoadScene(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/peg_in_hole.json");
+  scene::Scene s = scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
+                                    "/experiments/scenes/peg_in_hole.json");
   s.params.simulation.integrator = "CVODE";
   s.params.simulation.accuracy = 1e-8;
   TrialOptions dq;
@@ -250,8 +265,9 @@ TEST(CvodeJacobian, AgreesWithDifferenceQuotientsOnATrial) {
   EXPECT_NEAR(analytic.completion_time, reference.completion_time,
               1e-4 * reference.completion_time);
   EXPECT_GT(analytic.counters.jacobian_evaluations, 0);
-  EXPECT_LT(analytic.counters.realizations,
-            reference.counters.realizations - 13 * reference.counters.jacobian_evaluations / 2);
+  EXPECT_LT(
+      analytic.counters.realizations,
+      reference.counters.realizations - 13 * reference.counters.jacobian_evaluations / 2);
 }
 
 }  // namespace

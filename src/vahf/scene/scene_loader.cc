@@ -49,8 +49,9 @@ geometry::Shape ReadShape(const JsonNode& node) {
     const Eigen::Vector3d s = size.Vector3();
     for (int k = 0; k < 3; ++k)
       if (!(s[k] > 0))
-        size.Fail("a box needs three positive edge lengths (m); a zero or negative edge "
-                  "makes it degenerate");
+        size.Fail(
+            "a box needs three positive edge lengths (m); a zero or negative edge "
+            "makes it degenerate");
     for (int k = 0; k < 3; ++k)
       size.At(k).InRange(geometry::kMinBoxEdge, geometry::kMaxExtent);
     return geometry::Box{s};
@@ -59,9 +60,10 @@ geometry::Shape ReadShape(const JsonNode& node) {
   const JsonNode profile = node.Required("profile");
   const std::size_t n = profile.ArraySize();
   if (n > geometry::kMaxProfileVertices + 1)
-    profile.Fail(fmt::format("{} points; a profile has at most {} vertices (and the "
-                             "closing repeat)",
-                             n, geometry::kMaxProfileVertices));
+    profile.Fail(
+        fmt::format("{} points; a profile has at most {} vertices (and the "
+                    "closing repeat)",
+                    n, geometry::kMaxProfileVertices));
   std::vector<geometry::ProfilePoint> points;
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Vector2d rz = profile.At(k).Vector2();
@@ -99,8 +101,7 @@ Part ReadPart(const JsonNode& node) {
   const double volume = part.mass_properties.volume;
   const auto density = node.Optional("density");
   const auto mass = node.Optional("mass");
-  if (density && mass)
-    node.Fail("give a part's 'density' or its 'mass', not both");
+  if (density && mass) node.Fail("give a part's 'density' or its 'mass', not both");
   if (!density && !mass)
     throw InputError(node.file(), node.path() + "/mass", "(missing)",
                      "a part needs its 'mass' (kg) or its 'density' (kg/m^3)");
@@ -108,17 +109,18 @@ Part ReadPart(const JsonNode& node) {
     part.density = density->InRange(kMinDensity, kMaxDensity);
     part.mass = part.density * volume;
     if (!(part.mass >= kMinMass && part.mass <= kMaxMass))
-      density->Fail(fmt::format("gives a mass of {:.6g} kg ({:.6g} m^3 of it); a part's mass "
-                                "lies in [{}, {}] kg",
-                                part.mass, volume, NumberText(kMinMass), NumberText(kMaxMass)));
+      density->Fail(
+          fmt::format("gives a mass of {:.6g} kg ({:.6g} m^3 of it); a part's mass "
+                      "lies in [{}, {}] kg",
+                      part.mass, volume, NumberText(kMinMass), NumberText(kMaxMass)));
   } else {
     part.mass = mass->InRange(kMinMass, kMaxMass);
     part.density = part.mass / volume;
     if (!(part.density >= kMinDensity && part.density <= kMaxDensity))
-      mass->Fail(fmt::format("gives a density of {:.6g} kg/m^3 ({:.6g} m^3 of it); a part's "
-                             "density lies in [{}, {}] kg/m^3",
-                             part.density, volume, NumberText(kMinDensity),
-                             NumberText(kMaxDensity)));
+      mass->Fail(fmt::format(
+          "gives a density of {:.6g} kg/m^3 ({:.6g} m^3 of it); a part's "
+          "density lies in [{}, {}] kg/m^3",
+          part.density, volume, NumberText(kMinDensity), NumberText(kMaxDensity)));
   }
   part.friction = node.Required("friction").InRange(0.0, kMaxFriction);
   part.grasp = part.mass_properties.centroid;
@@ -128,9 +130,10 @@ Part ReadPart(const JsonNode& node) {
     // sphere about the part origin that holds the part.
     const double reach = part.mass_properties.bounding_radius;
     if (part.grasp.norm() > reach * (1 + 1e-9))
-      grasp->Fail(fmt::format("lies {:.6g} m from the part origin; the hand holds the part, "
-                              "so the grasp lies within its bounding sphere ({:.6g} m)",
-                              part.grasp.norm(), reach));
+      grasp->Fail(
+          fmt::format("lies {:.6g} m from the part origin; the hand holds the part, "
+                      "so the grasp lies within its bounding sphere ({:.6g} m)",
+                      part.grasp.norm(), reach));
   }
   part.initial = ReadPose(node.Required("pose"));
   if (part.role == Role::kAssembling) {
@@ -154,7 +157,8 @@ human::Operator ReadOperator(const JsonNode& node) {
   op.arm_length = node.Required("arm_length").InRange(0.3, 1.2);
   op.position = node.Required("position").Vector2(-kMaxCoordinate, kMaxCoordinate);
   op.facing_deg = node.Required("facing_deg").InRange(-360.0, 360.0);
-  if (auto sex = node.Optional("sex")) op.sex = sex->Choice({"male", "female", "unspecified"});
+  if (auto sex = node.Optional("sex"))
+    op.sex = sex->Choice({"male", "female", "unspecified"});
   return op;
 }
 
@@ -193,9 +197,12 @@ void ReadParameters(const JsonNode& node, Parameters* p) {
 
 const char* RoleName(Role role) {
   switch (role) {
-    case Role::kBase: return "base";
-    case Role::kAssembling: return "assembling";
-    case Role::kAssembled: return "assembled";
+    case Role::kBase:
+      return "base";
+    case Role::kAssembling:
+      return "assembling";
+    case Role::kAssembled:
+      return "assembled";
   }
   return "?";
 }
@@ -206,12 +213,14 @@ Scene ParseScene(const nlohmann::json& document, const std::string& file) {
                      "sequence", "parameters"});
   const JsonNode format = root.Required("format");
   if (format.String() != kSceneFormat)
-    format.Fail(std::string("a scene file declares \"format\": \"") + kSceneFormat + "\"");
+    format.Fail(std::string("a scene file declares \"format\": \"") + kSceneFormat +
+                "\"");
   Scene scene;
   scene.file = file;
   scene.name = root.Required("name").String();
   if (auto d = root.Optional("description")) scene.description = d->String();
-  if (auto g = root.Optional("gravity")) scene.gravity = g->Vector3(-kMaxGravity, kMaxGravity);
+  if (auto g = root.Optional("gravity"))
+    scene.gravity = g->Vector3(-kMaxGravity, kMaxGravity);
   scene.op = ReadOperator(root.Required("operator"));
 
   const JsonNode parts = root.Required("parts");
@@ -251,10 +260,10 @@ Scene ParseScene(const nlohmann::json& document, const std::string& file) {
       scene.params.reach.Violation(scene.op.arm_length, scene.op.height);
   if (!reach.empty()) {
     const JsonNode op = root.Required("operator");
-    throw InputError(file, op.path(),
-                     fmt::format("height {} m, arm_length {} m", scene.op.height,
-                                 scene.op.arm_length),
-                     reach);
+    throw InputError(
+        file, op.path(),
+        fmt::format("height {} m, arm_length {} m", scene.op.height, scene.op.arm_length),
+        reach);
   }
   RequireCountableSizes(scene);
   return scene;
@@ -278,7 +287,8 @@ std::string DescribeScene(const Scene& s) {
   for (const Part& p : s.parts) {
     const bool revolved = std::holds_alternative<geometry::RevolvedProfile>(p.shape);
     out += fmt::format(
-        "  {:<14} {:<10} {:<10} mass {:.4g} kg, volume {:.4g} m^3, density {:.4g} kg/m^3, "
+        "  {:<14} {:<10} {:<10} mass {:.4g} kg, volume {:.4g} m^3, density {:.4g} "
+        "kg/m^3, "
         "friction {}\n",
         p.name, RoleName(p.role), revolved ? "revolution" : "box", p.mass,
         p.mass_properties.volume, p.density, p.friction);
@@ -295,12 +305,13 @@ std::string DescribeScene(const Scene& s) {
 std::string SizeViolation(const Scene& scene) {
   const contact::ContactParams& c = scene.params.contact;
   // "part 'rod': its contact shell at contact/shell_spacing 1e-5 m would ..."
-  const auto over = [](const Part& part, const char* what, const char* key, double spacing,
-                       double n, double max) {
+  const auto over = [](const Part& part, const char* what, const char* key,
+                       double spacing, double n, double max) {
     return n <= max ? std::string()
-                    : fmt::format("part '{}': its {} at contact/{} {} m would hold up to "
-                                  "{:.3g} points, more than {:g}: raise the spacing",
-                                  part.name, what, key, spacing, n, max);
+                    : fmt::format(
+                          "part '{}': its {} at contact/{} {} m would hold up to "
+                          "{:.3g} points, more than {:g}: raise the spacing",
+                          part.name, what, key, spacing, n, max);
   };
   for (const Part& part : scene.parts) {
     std::string v;
@@ -319,11 +330,11 @@ std::string SizeViolation(const Scene& scene) {
 void RequireCountableSizes(const Scene& scene) {
   const std::string size = SizeViolation(scene);
   if (!size.empty())
-    throw InputError(scene.file, "/parameters/contact",
-                     fmt::format("shell_spacing {} m, rim_spacing {} m",
-                                 scene.params.contact.shell_spacing,
-                                 scene.params.contact.rim_spacing),
-                     size);
+    throw InputError(
+        scene.file, "/parameters/contact",
+        fmt::format("shell_spacing {} m, rim_spacing {} m",
+                    scene.params.contact.shell_spacing, scene.params.contact.rim_spacing),
+        size);
 }
 
 std::string ParameterViolation(const Scene& scene) {

@@ -35,9 +35,9 @@ class SimbodyTrial::LoadsElement : public SimTK::Force::Custom::Implementation {
                  SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
     TrialContext& c = t_->c_;
     const contact::RigidMotion m = t_->MotionOf(s);
-    Loads& loads = static_cast<SimTK::Value<Loads>&>(
-                       t_->forces_.updCacheEntry(s, t_->loads_index_))
-                       .upd();
+    Loads& loads =
+        static_cast<SimTK::Value<Loads>&>(t_->forces_.updCacheEntry(s, t_->loads_index_))
+            .upd();
     loads = Loads{};
     if (!IsFinite(m)) {  // no force from garbage; the step will be rejected or caught
       c.warnings.Note(WarningKind::kNonFiniteState, s.getTime(),
@@ -45,15 +45,17 @@ class SimbodyTrial::LoadsElement : public SimTK::Force::Custom::Implementation {
       return;
     }
     loads = c.LoadsAt(m, t_->HeldDecision(s));
-    body_forces[t_->body_] += SimTK::SpatialVec(ToSimTK(loads.torque), ToSimTK(loads.force));
+    body_forces[t_->body_] +=
+        SimTK::SpatialVec(ToSimTK(loads.torque), ToSimTK(loads.force));
   }
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
 
   void realizeTopology(SimTK::State& s) const override {
     t_->decision_index_ = t_->forces_.allocateDiscreteVariable(
         s, SimTK::Stage::Dynamics, new SimTK::Value<Decision>(Decision{}));
-    t_->loads_index_ = t_->forces_.allocateCacheEntry(
-        s, SimTK::Stage::Velocity, SimTK::Stage::Dynamics, new SimTK::Value<Loads>(Loads{}));
+    t_->loads_index_ =
+        t_->forces_.allocateCacheEntry(s, SimTK::Stage::Velocity, SimTK::Stage::Dynamics,
+                                       new SimTK::Value<Loads>(Loads{}));
   }
 
  private:
@@ -95,8 +97,8 @@ class SimbodyTrial::CompletionTrigger : public SimTK::TriggeredEventHandler {
     c.ended = Status::kCompleted;
     c.completion_time = s.getTime();
     c.completion_row = t_->FinalRow(s);  // Table 1's instant d, at this very state
-    c.detail = fmt::format("within {} m and {} deg of the target", sim.completion_distance,
-                           sim.completion_angle_deg);
+    c.detail = fmt::format("within {} m and {} deg of the target",
+                           sim.completion_distance, sim.completion_angle_deg);
     terminate = true;
   }
 
@@ -104,8 +106,7 @@ class SimbodyTrial::CompletionTrigger : public SimTK::TriggeredEventHandler {
   SimbodyTrial* t_;
 };
 
-SimbodyTrial::SimbodyTrial(TrialContext& c)
-    : c_(c), matter_(system_), forces_(system_) {
+SimbodyTrial::SimbodyTrial(TrialContext& c) : c_(c), matter_(system_), forces_(system_) {
   const TrialModel& model = c.model;
   const scene::Scene& scene = *model.scene;
   SimTK::Force::UniformGravity gravity(forces_, matter_, ToSimTK(scene.gravity));
@@ -125,8 +126,8 @@ SimbodyTrial::SimbodyTrial(TrialContext& c)
 
   initial_ = system_.realizeTopology();
   const scene::Pose& start = model.part->initial;
-  mobod.setQToFitTransform(initial_, SimTK::Transform(ToSimTK(start.Rotation()),
-                                                      ToSimTK(start.position)));
+  mobod.setQToFitTransform(
+      initial_, SimTK::Transform(ToSimTK(start.Rotation()), ToSimTK(start.position)));
   Decide(initial_);
 }
 

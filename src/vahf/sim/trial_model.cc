@@ -122,15 +122,16 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
     setup.moving = {&part.shape, Eigen::Isometry3d::Identity(), part.friction,
                     part.mass_properties.bounding_radius};
     for (const FixedPart& f : fixed)
-      setup.fixed.push_back(
-          {&f.part->shape, f.pose, f.part->friction, f.part->mass_properties.bounding_radius});
+      setup.fixed.push_back({&f.part->shape, f.pose, f.part->friction,
+                             f.part->mass_properties.bounding_radius});
     setup.params = params.contact;
     setup.penetration_bound = m.penetration_bound;
     // The largest steady load: the operator's Eq. 7 pull at the start plus
     // the part's weight.
-    const double pull = m.operator_acts ? params.guidance.kappa *
-                                              (part.initial.position - part.target.position).norm()
-                                        : 0.0;
+    const double pull = m.operator_acts
+                            ? params.guidance.kappa *
+                                  (part.initial.position - part.target.position).norm()
+                            : 0.0;
     setup.steady_load = pull + part.mass * scene.gravity.norm();
     m.contact = contact::BuildContact(params.contact.model, setup);
   }
@@ -141,7 +142,8 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
   return out;
 }
 
-std::vector<std::shared_ptr<const TrialModel>> BuildSequenceModels(const scene::Scene& scene) {
+std::vector<std::shared_ptr<const TrialModel>> BuildSequenceModels(
+    const scene::Scene& scene) {
   std::vector<std::shared_ptr<const TrialModel>> out;
   for (std::size_t p = 0; p < scene.sequence.size(); ++p)
     out.push_back(BuildTrialModel(scene, static_cast<int>(p)));
@@ -164,11 +166,13 @@ void TrialModel::OperatorLoad(const contact::RigidMotion& m, const Decision& d,
   const auto& g = scene->params.guidance;
   // The arm always carries its own weight; the part's, as guidance says.
   const guidance::FeltContact felt{cf.normal_force, cf.friction_force.norm()};
-  *force = guidance::ImpedanceForce(g, d.psi, mass, m.pose.translation(), d.estimated_target,
-                                    v_grasp, felt, blend_force, part_mass * scene->gravity,
-                                    scene->params.simulation.completion_distance) -
-           hand_mass * scene->gravity;
-  const Matrix3d inertia_world = m.pose.linear() * inertia_body * m.pose.linear().transpose();
+  *force =
+      guidance::ImpedanceForce(g, d.psi, mass, m.pose.translation(), d.estimated_target,
+                               v_grasp, felt, blend_force, part_mass * scene->gravity,
+                               scene->params.simulation.completion_distance) -
+      hand_mass * scene->gravity;
+  const Matrix3d inertia_world =
+      m.pose.linear() * inertia_body * m.pose.linear().transpose();
   *torque = r_grasp.cross(*force) +
             guidance::AssemblyTorque(g, d.psi, inertia_world, m.pose.linear(),
                                      d.held_orientation, m.angular_velocity);

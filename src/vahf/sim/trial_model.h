@@ -38,7 +38,8 @@ struct Decision {
 struct Loads {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // at the body origin, N
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // about the body origin, N m
-  Eigen::Vector3d assembly_force = Eigen::Vector3d::Zero();  // the operator's, at the grasp
+  Eigen::Vector3d assembly_force =
+      Eigen::Vector3d::Zero();  // the operator's, at the grasp
   contact::ContactForces contact;
 };
 
@@ -57,7 +58,8 @@ struct VisibilityMeshes {
 };
 
 struct TrialModel {
-  explicit TrialModel(human::FactorCurves factor_curves) : curves(std::move(factor_curves)) {}
+  explicit TrialModel(human::FactorCurves factor_curves)
+      : curves(std::move(factor_curves)) {}
 
   const scene::Scene* scene = nullptr;  // outlives the model
   const scene::Part* part = nullptr;
@@ -68,10 +70,12 @@ struct TrialModel {
   double part_mass = 0;
   double hand_mass = 0;
   double mass = 0;  // part + hand
-  Eigen::Matrix3d inertia_body = Eigen::Matrix3d::Zero();  // of both, about their centre of mass, part frame
-  Eigen::Vector3d com = Eigen::Vector3d::Zero();       // of both, part frame
-  Eigen::Vector3d part_com = Eigen::Vector3d::Zero();  // of the part alone: where factors look
-  bool revolved = false;  // orientation about the part's own z axis is free
+  Eigen::Matrix3d inertia_body =
+      Eigen::Matrix3d::Zero();  // of both, about their centre of mass, part frame
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();  // of both, part frame
+  Eigen::Vector3d part_com =
+      Eigen::Vector3d::Zero();  // of the part alone: where factors look
+  bool revolved = false;        // orientation about the part's own z axis is free
   // The part's bounding radius about its frame origin, m: what an angle turns
   // into a displacement at its farthest point (CVODE's error weights).
   double bounding_radius = 0;
@@ -80,10 +84,11 @@ struct TrialModel {
   double reach_limit = 0;  // D3, m
   // The contact normal force over which Eq. 7 passes into Eq. 8, N.
   double blend_force = 1.0;
-  double clearance = 0;          // the smallest radial clearance to a fixed part, m (0: none)
-  double penetration_bound = 0;  // m; 0: the scene has no radial fit to bound
+  double clearance = 0;  // the smallest radial clearance to a fixed part, m (0: none)
+  double penetration_bound = 0;   // m; 0: the scene has no radial fit to bound
   contact::BuiltContact contact;  // model null: nothing to touch, no contact work
-  std::optional<VisibilityMeshes> visibility;  // raycast, and something could hide the part
+  std::optional<VisibilityMeshes>
+      visibility;  // raycast, and something could hide the part
 
   // The contact force element: the forces the part meets at m.
   contact::ContactForces ContactAt(const contact::RigidMotion& m,
@@ -104,7 +109,8 @@ struct TrialModel {
   // The derivative of LoadsAt(m, d) given its `loads` and the contact's
   // derivative there (trial_model_jacobian.cc).
   LoadJacobian LoadJacobianAt(const contact::RigidMotion& m, const Decision& d,
-                              const Loads& loads, const contact::ContactJacobian& cj) const;
+                              const Loads& loads,
+                              const contact::ContactJacobian& cj) const;
 
   // Distance and angle to the target, for completion and progress.
   double DistanceToTarget(const contact::RigidMotion& m) const;
@@ -119,6 +125,7 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
                                                   int sequence_position);
 
 // One model per entry of scene.sequence, in order.
-std::vector<std::shared_ptr<const TrialModel>> BuildSequenceModels(const scene::Scene& scene);
+std::vector<std::shared_ptr<const TrialModel>> BuildSequenceModels(
+    const scene::Scene& scene);
 
 }  // namespace vahf::sim

@@ -36,7 +36,7 @@ const char* StatusName(Status status);
 bool IsComputationFailure(Status status);
 
 struct TraceRow {
-  double time = 0;  // s
+  double time = 0;                                     // s
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // T, part origin, world, m
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // of the origin, m/s
@@ -45,8 +45,8 @@ struct TraceRow {
   Eigen::Vector3d contact_force = Eigen::Vector3d::Zero();     // normal part, N
   Eigen::Vector3d friction_force = Eigen::Vector3d::Zero();    // N
   human::FactorValues factors;
-  double work = 0;  // A, J (Eq. 4, accumulated)
-  double psi = 1;   // Psi_c (Eq. 6)
+  double work = 0;         // A, J (Eq. 4, accumulated)
+  double psi = 1;          // Psi_c (Eq. 6)
   double penetration = 0;  // deepest contact point, m
 };
 
@@ -72,20 +72,21 @@ struct TrialCounters {
 
 struct TrialResult {
   Status status = Status::kTimeout;
-  std::string detail;            // why it ended; where, for a failure
-  double end_time = 0;           // simulated s
-  double completion_time = -1;   // s, for status completed
-  std::string part;              // the assembling part
+  std::string detail;           // why it ended; where, for a failure
+  double end_time = 0;          // simulated s
+  double completion_time = -1;  // s, for status completed
+  std::string part;             // the assembling part
   std::string integrator;
   double accuracy = 0;
   rng::StreamKey key;
   TrialCounters counters;
-  double wall_seconds = 0;       // measured, never part of a digest
-  double cpu_seconds = 0;        // this thread's CPU, measured, never part of a digest
-  PhaseSeconds phases;           // with TrialOptions::time_phases; never part of a digest
-  double work = 0;               // A when the trial ended, J (Eq. 4, with the initial work)
-  std::vector<TraceRow> trace;   // one row per decision instant (if recorded)
-  std::vector<TraceRow> samples; // one row per sample instant (TrialOptions::sample_interval)
+  double wall_seconds = 0;  // measured, never part of a digest
+  double cpu_seconds = 0;   // this thread's CPU, measured, never part of a digest
+  PhaseSeconds phases;      // with TrialOptions::time_phases; never part of a digest
+  double work = 0;          // A when the trial ended, J (Eq. 4, with the initial work)
+  std::vector<TraceRow> trace;  // one row per decision instant (if recorded)
+  std::vector<TraceRow>
+      samples;  // one row per sample instant (TrialOptions::sample_interval)
   // Numerical health: what went wrong at accepted steps, and how deep the
   // contact went against the bound (penetration_fraction of the smallest
   // radial clearance between the part at its target and a fixed part).
