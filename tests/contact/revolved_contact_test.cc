@@ -330,6 +330,9 @@ TEST(RevolvedContact, MixedSceneSumsTheExactAndTheGeneralPath) {
   const BuiltContact general = BuildContact("resolving", s);
   EXPECT_GT(mixed.shell_points, 0);
   EXPECT_EQ(exact.shell_points, 0);
+  // Model "sampled" takes the general path for the revolved bore too.
+  s.fixed = {{&bore, Eigen::Isometry3d::Identity(), 0.15, Radius(bore)}};
+  EXPECT_GT(BuildContact("sampled", s).shell_points, 0);
   RigidMotion m;
   // 60 um off the axis towards +y, tilted 1 mrad: into the bore's wall; and
   // 0.3 mm towards +x: 0.8 mm into the cube's face.
