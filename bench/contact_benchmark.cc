@@ -5,10 +5,12 @@
 // rims). The states are the dense samples
 // (every 0.1 ms) of one trial of the scene with contact/model resolving at
 // its own integrator settings, seed 1, at most 50 000 steps, kept where the
-// part is in contact; each is evaluated 20 times and timed alone. Counters: the
-// median and 90th percentile over the states, in microseconds, and the
-// states' count, and the queries and profile edges one evaluation makes on
-// average. Run with tools/bench (one core).
+// part is in contact; each is evaluated 20 times and timed alone, in 5 rounds.
+// Counters: the median over the states (with the Jacobian, median_us; without,
+// forces_us) and their 90th percentile, in microseconds, each the median of
+// the 5 rounds' (median_least_us and median_greatest_us the rounds' spread);
+// the states' count; and the queries and profile edges one evaluation makes
+// on average. Run with tools/bench (one core).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -57,33 +59,52 @@ void Evaluations(benchmark::State& state, const std::string& scene_file, int pos
     state.SkipWithError("no state in contact");
     return;
   }
-  std::vector<double> micros(states.size()), forces_only(states.size());
   vahf::contact::ContactJacobian j;
   vahf::contact::ContactCounters work;
   for (const RigidMotion& m : states) contact.Evaluate(m, &work, &j);
+  // kRounds rounds over the states; in each, every state is evaluated
+  // kRepeats times with the Jacobian and kRepeats without, and timed alone.
+  // A round's figure is the median over the states; the counters are the
+  // median of the rounds' figures and their spread (least, greatest), so
+  // that an interruption of the machine moves a round, not the figure.
+  constexpr int kRounds = 5, kRepeats = 20;
+  std::vector<double> with_jacobian, forces_only, p90;
   for (auto _ : state) {
-    for (std::size_t k = 0; k < states.size(); ++k) {
-      constexpr int kRepeats = 20;
-      const auto start = std::chrono::steady_clock::now();
-      for (int i = 0; i < kRepeats; ++i)
-        benchmark::DoNotOptimize(contact.Evaluate(states[k], nullptr, &j));
-      const auto middle = std::chrono::steady_clock::now();
-      for (int i = 0; i < kRepeats; ++i)
-        benchmark::DoNotOptimize(contact.Evaluate(states[k], nullptr, nullptr));
-      const auto end = std::chrono::steady_clock::now();
-      micros[k] =
-          std::chrono::duration<double, std::micro>(middle - start).count() / kRepeats;
-      forces_only[k] =
-          std::chrono::duration<double, std::micro>(end - middle).count() / kRepeats;
+    for (int round = 0; round < kRounds; ++round) {
+      std::vector<double> micros(states.size()), forces(states.size());
+      for (std::size_t k = 0; k < states.size(); ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        for (int i = 0; i < kRepeats; ++i)
+          benchmark::DoNotOptimize(contact.Evaluate(states[k], nullptr, &j));
+        const auto middle = std::chrono::steady_clock::now();
+        for (int i = 0; i < kRepeats; ++i)
+          benchmark::DoNotOptimize(contact.Evaluate(states[k], nullptr, nullptr));
+        const auto end = std::chrono::steady_clock::now();
+        micros[k] =
+            std::chrono::duration<double, std::micro>(middle - start).count() / kRepeats;
+        forces[k] =
+            std::chrono::duration<double, std::micro>(end - middle).count() / kRepeats;
+      }
+      std::sort(micros.begin(), micros.end());
+      std::sort(forces.begin(), forces.end());
+      with_jacobian.push_back(micros[micros.size() / 2]);
+      p90.push_back(micros[micros.size() * 9 / 10]);
+      forces_only.push_back(forces[forces.size() / 2]);
     }
   }
-  std::sort(micros.begin(), micros.end());
-  std::sort(forces_only.begin(), forces_only.end());
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
   state.counters["states"] = static_cast<double>(states.size());
-  state.counters["median_us"] = micros[micros.size() / 2];
-  state.counters["p90_us"] = micros[micros.size() * 9 / 10];
+  state.counters["median_us"] = median(with_jacobian);
+  state.counters["median_least_us"] =
+      *std::min_element(with_jacobian.begin(), with_jacobian.end());
+  state.counters["median_greatest_us"] =
+      *std::max_element(with_jacobian.begin(), with_jacobian.end());
+  state.counters["p90_us"] = median(p90);
   // Without the Jacobian: what a right-hand side pays.
-  state.counters["forces_us"] = forces_only[forces_only.size() / 2];
+  state.counters["forces_us"] = median(forces_only);
   // The work behind the time, per evaluation: rim and shell point queries and
   // the profile edges they examined.
   const double n = static_cast<double>(states.size());
