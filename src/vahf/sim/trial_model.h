@@ -38,8 +38,8 @@ struct Decision {
 struct Loads {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();   // at the body origin, N
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // about the body origin, N m
-  Eigen::Vector3d assembly_force =
-      Eigen::Vector3d::Zero();  // the operator's, at the grasp
+  // The operator's, at the grasp.
+  Eigen::Vector3d assembly_force = Eigen::Vector3d::Zero();
   contact::ContactForces contact;
 };
 
@@ -70,12 +70,12 @@ struct TrialModel {
   double part_mass = 0;
   double hand_mass = 0;
   double mass = 0;  // part + hand
-  Eigen::Matrix3d inertia_body =
-      Eigen::Matrix3d::Zero();  // of both, about their centre of mass, part frame
+  // Of both, about their centre of mass, part frame.
+  Eigen::Matrix3d inertia_body = Eigen::Matrix3d::Zero();
   Eigen::Vector3d com = Eigen::Vector3d::Zero();  // of both, part frame
-  Eigen::Vector3d part_com =
-      Eigen::Vector3d::Zero();  // of the part alone: where factors look
-  bool revolved = false;        // orientation about the part's own z axis is free
+  // Of the part alone: where factors look.
+  Eigen::Vector3d part_com = Eigen::Vector3d::Zero();
+  bool revolved = false;  // orientation about the part's own z axis is free
   // The part's bounding radius about its frame origin, m: what an angle turns
   // into a displacement at its farthest point (CVODE's error weights).
   double bounding_radius = 0;
@@ -87,8 +87,8 @@ struct TrialModel {
   double clearance = 0;  // the smallest radial clearance to a fixed part, m (0: none)
   double penetration_bound = 0;   // m; 0: the scene has no radial fit to bound
   contact::BuiltContact contact;  // model null: nothing to touch, no contact work
-  std::optional<VisibilityMeshes>
-      visibility;  // raycast, and something could hide the part
+  // Raycast, and something could hide the part.
+  std::optional<VisibilityMeshes> visibility;
 
   // The contact force element: the forces the part meets at m.
   contact::ContactForces ContactAt(const contact::RigidMotion& m,

@@ -85,8 +85,8 @@ struct TrialResult {
   PhaseSeconds phases;      // with TrialOptions::time_phases; never part of a digest
   double work = 0;          // A when the trial ended, J (Eq. 4, with the initial work)
   std::vector<TraceRow> trace;  // one row per decision instant (if recorded)
-  std::vector<TraceRow>
-      samples;  // one row per sample instant (TrialOptions::sample_interval)
+  // One row per sample instant (TrialOptions::sample_interval).
+  std::vector<TraceRow> samples;
   // Numerical health: what went wrong at accepted steps, and how deep the
   // contact went against the bound (penetration_fraction of the smallest
   // radial clearance between the part at its target and a fixed part).

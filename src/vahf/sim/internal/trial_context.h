@@ -51,8 +51,8 @@ struct TrialContext {
 
   // Numerical health (docs/design.md decision 12).
   Warnings warnings;
-  double max_penetration =
-      0;  // deepest contact at a decision, accepted step or sample, m
+  // The deepest contact at a decision, accepted step or sample, m.
+  double max_penetration = 0;
 
   // Accumulators, updated at decision instants.
   std::int64_t last_decision = -1;
@@ -68,8 +68,8 @@ struct TrialContext {
   std::vector<TraceRow> trace;
   std::vector<TraceRow> samples;  // every sample_interval of simulated time
   bool record_trace = true;
-  bool integrated =
-      false;  // the integrator was initialized (its counters mean something)
+  // The integrator was initialized (its counters mean something).
+  bool integrated = false;
   // CVODE: its own difference-quotient Jacobian instead of the analytic one
   // (TrialOptions, for comparisons).
   bool difference_quotient_jacobian = false;
