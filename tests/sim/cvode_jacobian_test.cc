@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/motion_differences.h"
+#include "vahf/guidance/assembly_torque.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/sim/rigid_body_jacobian.h"
 #include "vahf/sim/trial.h"
@@ -108,8 +109,7 @@ BodyJacobian Analytic(const TrialModel& model, const Decision& d, const BodyStat
   return DerivativeJacobian(model, y, loads, dl, model.scene->gravity);
 }
 
-TEST(CvodeJacobian, OperatorWithAFlatContact) {
-  const scene::Scene s = BlockOnFloor();
+void ExpectJacobianWithAFlatContact(const scene::Scene& s) {
   const auto model = BuildTrialModel(s, 0);
   const Decision d = Aiming(*model);
   // 20 um deep (w = 1), and 50 nm deep and level: within the blend.
@@ -143,6 +143,99 @@ TEST(CvodeJacobian, OperatorWithAFlatContact) {
         1e-5, 1e-8, kSegments, kSegments))
         << c.depth;
   }
+}
+
+TEST(CvodeJacobian, OperatorWithAFlatContact) {
+  ExpectJacobianWithAFlatContact(BlockOnFloor());
+}
+
+// The wrist's torque law, and the push passing to the block's leading end
+// (its bottom face's centre) as the contact blend rises: the blend's own
+// derivative enters the torque.
+TEST(CvodeJacobian, WristAndComplianceAtTheLeadingEnd) {
+  scene::Scene s = BlockOnFloor();
+  s.params.guidance.torque_law = "wrist";
+  s.params.guidance.compliance_centre = "leading_end";
+  s.parts[1].grasp = Vector3d(0.004, -0.003, 0.005);  // off the leading end
+  const auto model = BuildTrialModel(s, 0);
+  ASSERT_EQ(model->leading_end, Vector3d(0, 0, -0.005));
+  ExpectJacobianWithAFlatContact(s);
+}
+
+// The laws' stiffness and damping are the values they are given: the wrist's
+// tau = Psi K theta - B omega whatever the part, the inertial law's
+// I (Psi w^2 theta - 2 zeta w omega), the force's -kappa Psi and
+// -2 zeta sqrt(kappa Psi m) per metre and metre per second; and with the
+// compliance centre at the leading end, a part deep in contact is pushed at
+// its leading end.
+TEST(CvodeJacobian, HandLawsHaveTheStiffnessAndDampingTheyAreGiven) {
+  scene::Scene s = BlockOnFloor();
+  s.params.guidance.torque_law = "wrist";
+  s.params.guidance.wrist_stiffness = 3.0;
+  s.params.guidance.wrist_damping = 0.2;
+  const Vector3d axis = Vector3d(1, -2, 0.5).normalized();
+  Decision d;
+  d.psi = 0.8;
+  d.held_orientation = Eigen::AngleAxisd(0.01, axis).toRotationMatrix();
+  contact::RigidMotion m;  // high above the floor: no contact
+  m.pose.translation() = Vector3d(0, 0, 1.2);
+  m.angular_velocity = Vector3d(0.3, -0.2, 0.1);
+  const auto torque_of = [&](const scene::Scene& scene) {
+    const auto model = BuildTrialModel(scene, 0);
+    Vector3d force, torque;
+    model->OperatorLoad(m, d, {}, &force, &torque);
+    return torque;  // the grasp is the origin: no moment of the force
+  };
+  const Vector3d wrist = 0.8 * 3.0 * 0.01 * axis - 0.2 * m.angular_velocity;
+  EXPECT_LT((torque_of(s) - wrist).norm(), 1e-12 * wrist.norm());
+  // The same part under the inertial law: its inertia times w^2 and 2 zeta w.
+  s.params.guidance.torque_law = "inertial";
+  s.params.guidance.torque_frequency = 30;
+  s.params.guidance.torque_damping_ratio = 0.7;
+  const Eigen::Matrix3d inertia = BuildTrialModel(s, 0)->inertia_body;
+  const Vector3d inertial =
+      inertia * (0.8 * 900 * 0.01 * axis - 2 * 0.7 * 30 * m.angular_velocity);
+  EXPECT_LT((torque_of(s) - inertial).norm(), 1e-12 * inertial.norm());
+  // The force: stiffness kappa Psi and damping 2 zeta sqrt(kappa Psi m), in
+  // free motion (linear in position and velocity).
+  const auto model = BuildTrialModel(s, 0);
+  const auto force_at = [&](const contact::RigidMotion& x) {
+    Vector3d force, torque;
+    model->OperatorLoad(x, d, {}, &force, &torque);
+    return force;
+  };
+  contact::RigidMotion moved = m, faster = m;
+  moved.pose.translation().x() += 1e-3;
+  faster.velocity.x() += 1e-3;
+  const double kappa_psi = s.params.guidance.kappa * 0.8;
+  const double damping =
+      2 * s.params.guidance.damping_ratio * std::sqrt(kappa_psi * model->mass);
+  EXPECT_NEAR((force_at(moved) - force_at(m)).x() / 1e-3, -kappa_psi, 1e-9 * kappa_psi);
+  EXPECT_NEAR((force_at(faster) - force_at(m)).x() / 1e-3, -damping, 1e-9 * damping);
+}
+
+TEST(CvodeJacobian, ComplianceAtTheLeadingEndPushesThereInContact) {
+  scene::Scene s = BlockOnFloor();
+  s.params.guidance.compliance_centre = "leading_end";
+  s.parts[1].grasp = Vector3d(0.004, -0.003, 0.005);
+  const auto model = BuildTrialModel(s, 0);
+  const Decision d = Aiming(*model);
+  const contact::RigidMotion m = Pressed(20e-6, 1e-3);  // the blend is 1
+  const contact::ContactForces cf = model->ContactAt(m, nullptr);
+  ASSERT_GT(cf.normal_force.norm(), model->blend_force);
+  Vector3d force, torque;
+  model->OperatorLoad(m, d, cf, &force, &torque);
+  const Eigen::Matrix3d R = m.pose.linear();
+  const Vector3d turn = guidance::AssemblyTorque(
+      model->torque_params, d.psi, R * model->torque_inertia_body * R.transpose(), R,
+      d.held_orientation, m.angular_velocity);
+  const Vector3d expected = (R * model->leading_end).cross(force) + turn;  // no hand mass
+  EXPECT_LT((torque - expected).norm(), 1e-12 * torque.norm());
+  // At the grasp, it would have turned the block the other way about.
+  s.params.guidance.compliance_centre = "grasp";
+  Vector3d at_grasp_force, at_grasp;
+  BuildTrialModel(s, 0)->OperatorLoad(m, d, cf, &at_grasp_force, &at_grasp);
+  EXPECT_GT((at_grasp - torque).norm(), 1e-3 * torque.norm());
 }
 
 TEST(CvodeJacobian, OperatorInFreeMotion) {

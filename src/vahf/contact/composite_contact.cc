@@ -17,6 +17,7 @@ ContactForces CompositeContact::DoEvaluate(const RigidMotion& m,
         part->Evaluate(m, &counters, jacobian ? &part_jacobian : nullptr);
     out.normal_force += f.normal_force;
     out.friction_force += f.friction_force;
+    out.film_force += f.film_force;
     out.torque += f.torque;
     out.points_in_contact += f.points_in_contact;
     out.rim_points_in_contact += f.rim_points_in_contact;
@@ -24,6 +25,7 @@ ContactForces CompositeContact::DoEvaluate(const RigidMotion& m,
     if (jacobian) {
       jacobian->normal_force += part_jacobian.normal_force;
       jacobian->friction_force += part_jacobian.friction_force;
+      jacobian->film_force += part_jacobian.film_force;
       jacobian->torque += part_jacobian.torque;
     }
   }

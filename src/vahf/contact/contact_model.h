@@ -22,6 +22,9 @@ struct RigidMotion {
 struct ContactForces {
   Eigen::Vector3d normal_force = Eigen::Vector3d::Zero();    // N, world
   Eigen::Vector3d friction_force = Eigen::Vector3d::Zero();  // N, world
+  // The oil film's load (squeeze_film.h), N, world: not a contact the
+  // operator feels (Eq. 8 reads the normal force and friction only).
+  Eigen::Vector3d film_force = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // N m about the moving origin, world
   int points_in_contact = 0;      // points of the moving part inside a fixed one
   int rim_points_in_contact = 0;  // fixed parts' rim points inside the moving part
@@ -39,6 +42,7 @@ struct ContactJacobian {
   using Block = Eigen::Matrix<double, 3, 12>;
   Block normal_force = Block::Zero();
   Block friction_force = Block::Zero();
+  Block film_force = Block::Zero();
   Block torque = Block::Zero();  // about the moving origin
 };
 

@@ -76,6 +76,28 @@ struct ContactParams {
   // q of the rule: the steady load sinks a quarter of the bound, leaving the
   // barrier's hardening to impacts.
   double rule_depth_fraction = 0.25;
+  // Oiled fits (squeeze_film.h, docs/physics.md "Oiled fits"). The oil's
+  // dynamic viscosity, Pa s; 0 (the default): dry. When it is above 0 every
+  // contact of the part is lubricated: each thin annular gap between a
+  // cylindrical face of the moving solid of revolution and a facing one of a
+  // fixed solid of revolution holds a squeeze film, and the parts' Coulomb
+  // coefficients give way to `lubricated_friction`. ISO VG 46 hydraulic oil
+  // is 46 mm^2/s +- 10 % at 40 C (ISO 3448), 0.0397 Pa s at 862.9 kg/m^3;
+  // about 0.085 Pa s at 25 C (ASTM D341 from 40 and 100 C; docs/physics.md).
+  double lubricant_viscosity = 0.0;
+  // The Coulomb coefficient of the parts' contact under the oil (boundary
+  // lubrication). Hard steel on hard steel under a thin film of light
+  // mineral oil: 0.1 sliding, 0.23 static (Kirk-Othmer Encyclopedia of
+  // Chemical Technology, "Friction"; read in a secondary source only, so a
+  // calibratable parameter).
+  double lubricated_friction = 0.1;
+  // The thinnest film the squeeze law admits, m: the smooth cap of its
+  // eccentricity keeps the film's thinnest gap about this thick, below which
+  // the surfaces' asperities share the load (mixed lubrication, film
+  // parameter h / sigma below about 3) and the penalty contact acts. 1 um:
+  // three times a composite roughness of 0.3 um; not measured for these
+  // parts, a calibratable parameter.
+  double film_floor = 1e-6;
 };
 
 }  // namespace vahf::contact

@@ -6,6 +6,7 @@
 #include "vahf/contact/penalty_contact.h"
 #include "vahf/contact/point_load.h"
 #include "vahf/contact/revolved_contact.h"
+#include "vahf/contact/squeeze_film.h"
 #include "vahf/core/error.h"
 
 namespace vahf::contact {
@@ -121,10 +122,46 @@ std::vector<std::string> ContactModelNames() {
   return names;
 }
 
+namespace {
+
+// An oiled part (lubricant_viscosity > 0): the parts' Coulomb coefficients
+// give way to the lubricated one, and the thin gaps between its cylindrical
+// faces and the fixed solids of revolution hold squeeze films.
+ContactSetup Lubricated(ContactSetup s) {
+  s.moving.friction = s.params.lubricated_friction;
+  for (ContactBody& f : s.fixed) f.friction = s.params.lubricated_friction;
+  return s;
+}
+
+std::shared_ptr<const SqueezeFilm> Films(const ContactSetup& s) {
+  const geometry::RevolvedProfile* moving = ProfileOf(s.moving);
+  if (!moving) return nullptr;
+  std::vector<FilmFace> faces;
+  for (const ContactBody& f : s.fixed)
+    if (const geometry::RevolvedProfile* fixed = ProfileOf(f)) {
+      const std::vector<FilmFace> more = FilmFaces(*moving, *fixed, f.pose);
+      faces.insert(faces.end(), more.begin(), more.end());
+    }
+  if (faces.empty()) return nullptr;
+  return std::make_shared<SqueezeFilm>(
+      std::move(faces), FilmParams{s.params.lubricant_viscosity, s.params.film_floor});
+}
+
+}  // namespace
+
 BuiltContact BuildContact(const std::string& name, const ContactSetup& setup) {
   VAHF_CHECK(!setup.fixed.empty(), "a contact model needs a fixed part");
+  const bool oiled = setup.params.lubricant_viscosity > 0;
+  const ContactSetup s = oiled ? Lubricated(setup) : setup;
   for (const ContactModelEntry& e : ContactModels())
-    if (name == e.name) return e.build(setup);
+    if (name == e.name) {
+      BuiltContact out = e.build(s);
+      if (oiled)
+        if (auto film = Films(s))
+          out.model = std::make_shared<CompositeContact>(
+              std::vector<std::shared_ptr<const ContactModel>>{out.model, film});
+      return out;
+    }
   VAHF_CHECK(false, "unknown contact model " + name + " passed validation");
   return {};
 }

@@ -7,10 +7,22 @@
 
 #include <Eigen/Geometry>
 #include <optional>
+#include <vector>
 
 #include "vahf/geometry/shape.h"
 
 namespace vahf::geometry {
+
+// A cylindrical face of a solid of revolution: a profile edge of constant
+// radius r > 0, its axial extent in the part frame, and whether it faces
+// away from the axis (a shaft) or toward it (a bore).
+struct CylindricalFace {
+  double r, z_lo, z_hi;
+  bool faces_out;
+};
+
+// The profile's cylindrical faces, in the order of its edges.
+std::vector<CylindricalFace> CylindricalFaces(const RevolvedProfile& profile);
 
 // The smallest radial clearance (m, > 0) between `inner_or_outer` at pose
 // `a` and `other` at pose `b` (part frames in the world): over pairs of

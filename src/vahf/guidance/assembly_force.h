@@ -38,6 +38,31 @@ struct GuidanceParams {
   // held orientation (docs/design.md decision 3). w in rad/s.
   double torque_frequency = 20.0;
   double torque_damping_ratio = 1.0;
+  // The assembly torque's law (docs/physics.md, The operator's hand):
+  //   "inertial": tau = I (Psi w^2 theta - 2 zeta w omega) above, a servo
+  //     whose stiffness grows with the part's inertia;
+  //   "wrist": a human wrist, tau = Psi K theta - B omega, with
+  //     K = wrist_stiffness and B = wrist_damping whatever the part.
+  std::string torque_law = "inertial";
+  // K, N m/rad. The passive wrist is of the order of 0.5-3 N m/rad (Formica
+  // et al., J. Neurophysiol. 108 (2012) 1158-1166: passive stiffness in
+  // flexion-extension and radial-ulnar deviation, 10 subjects) and rises with
+  // co-contraction to about 10 N m/rad and more (De Serres and Milner, Exp.
+  // Brain Res. 86 (1991) 451-458: subjects co-contract to stiffen the wrist
+  // against an unstable load). The tables' values could not be read here: a
+  // calibratable parameter, 2 N m/rad inside the passive range.
+  double wrist_stiffness = 2.0;
+  // B, N m s/rad: 0.05 s times K, the ratio of damping to stiffness of the
+  // human arm model of Selen, Franklin and Wolpert (J. Neurosci. 29 (2009)
+  // 12606, Table 1), taken for the wrist; calibratable.
+  double wrist_damping = 0.1;
+  // Where the operator's force and rotational compliance act while the part
+  // is in contact: "grasp" (the hand), or "leading_end", the part's end
+  // along its axis that enters first (a remote centre compliance: Whitney,
+  // J. Dyn. Sys. Meas. Control 104 (1982) 65-77). Passing from the grasp to
+  // the leading end as the contact blend rises (ContactBlend), a lateral
+  // force at the tip turns the part into the bore instead of wedging it.
+  std::string compliance_centre = "grasp";
   // Scale of the random error of the held orientation at eta = 1, degrees per
   // axis (perturbed like Eq. 5's E_i, scaled by eta).
   double torque_sigma_deg = 2.0;

@@ -10,17 +10,11 @@ namespace vahf::guidance {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-namespace {
-
-// d ContactBlend / d normal_force: the smoothstep's 6 s (1 - s) / blend_force
-// inside the clamps, 0 outside.
-double BlendSlope(double normal_force, double blend_force) {
+double ContactBlendSlope(double normal_force, double blend_force) {
   const double s = normal_force / blend_force;
   if (!(s > 0 && s < 1)) return 0.0;
   return 6.0 * s * (1.0 - s) / blend_force;
 }
-
-}  // namespace
 
 // ImpedanceForce (assembly_force.cc) term by term, with d = T' - T, n = F_n / |F_n|,
 // a = P d = d - (d . n) n, g = sqrt(|a|^2 + e^2):
@@ -49,7 +43,7 @@ ImpedancePartials ImpedanceForceJacobian(const GuidanceParams& params, double ps
   const double g = std::sqrt(a.squaredNorm() + fade_length * fade_length);
   const Matrix3d da_unit = I / g - a * a.transpose() / (g * g * g);  // d(a / g) / da
   const Matrix3d dn_dF = P / fn;
-  const Eigen::RowVector3d dw_dF = BlendSlope(fn, blend_force) * n.transpose();
+  const Eigen::RowVector3d dw_dF = ContactBlendSlope(fn, blend_force) * n.transpose();
   const Matrix3d da_dF = -(dn_ * I + n * d.transpose()) * dn_dF;
   const double push = FrictionPush(contact.friction, params.max_push);
   // Position: dd = -dT.

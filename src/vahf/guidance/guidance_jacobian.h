@@ -11,6 +11,10 @@
 
 namespace vahf::guidance {
 
+// d ContactBlend / d normal_force: the smoothstep's 6 s (1 - s) / blend_force
+// inside the clamps, 0 outside.
+double ContactBlendSlope(double normal_force, double blend_force);
+
 // Partials of ImpedanceForce: w.r.t. the position T, the velocity v, the
 // contact's normal force vector F_n and its friction f.
 struct ImpedancePartials {

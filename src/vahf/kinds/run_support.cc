@@ -2,12 +2,34 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "vahf/scene/scene_loader.h"
 #include "vahf/sim/trial_model.h"
 
 namespace vahf::kinds {
+
+namespace {
+
+// The assembly torque's impedance about the part's transverse x axis, where
+// it tips (guidance/torque_law; Psi = 1): stiffness, damping, and the
+// natural frequency and damping ratio they give the moving body.
+std::string DescribeHand(const sim::TrialModel& m) {
+  const auto& g = m.scene->params.guidance;
+  const double w = m.torque_params.torque_frequency;
+  const double i_law = m.torque_inertia_body(0, 0);
+  const double k = i_law * w * w, b = i_law * 2 * m.torque_params.torque_damping_ratio * w;
+  const double inertia = m.inertia_body(0, 0);
+  return fmt::format(
+      "    hand: {} torque law, rotational stiffness {:.3g} N m/rad, damping {:.3g} N m "
+      "s/rad about the part's x axis (inertia {:.3g} kg m^2): natural frequency {:.3g} "
+      "rad/s, damping ratio {:.3g}; in contact the push acts at the {}\n",
+      g.torque_law, k, b, inertia, std::sqrt(k / inertia), b / (2 * std::sqrt(k * inertia)),
+      m.compliance_at_leading_end ? "part's leading end" : "grasp");
+}
+
+}  // namespace
 
 std::string DescribeSceneModels(const scene::Scene& scene) {
   std::string out = scene::DescribeScene(scene);
@@ -22,6 +44,7 @@ std::string DescribeSceneModels(const scene::Scene& scene) {
       out += fmt::format(", radial clearance {:.3g} um, penetration bound {:.3g} um",
                          m->clearance * 1e6, m->penetration_bound * 1e6);
     out += m->visibility ? ", V by ray casting\n" : "\n";
+    if (m->operator_acts) out += DescribeHand(*m);
   }
   return out;
 }

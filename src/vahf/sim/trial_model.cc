@@ -65,6 +65,27 @@ VisibilityMeshes MeshesFor(const scene::Scene& scene, const scene::Part& part,
   return out;
 }
 
+// The end of the part along its own z axis that enters first: the one
+// farther along the approach from its initial to its target position (part
+// frame at the target orientation), on the axis.
+Vector3d LeadingEnd(const scene::Part& part) {
+  double lo = 0, hi = 0;
+  if (const auto* p = std::get_if<geometry::RevolvedProfile>(&part.shape)) {
+    lo = hi = p->vertices.front().z;
+    for (const geometry::ProfilePoint& v : p->vertices) {
+      lo = std::min(lo, v.z);
+      hi = std::max(hi, v.z);
+    }
+  } else {
+    const double half = 0.5 * std::get<geometry::Box>(part.shape).size.z();
+    lo = -half;
+    hi = half;
+  }
+  const Vector3d approach =
+      part.target.Rotation().transpose() * (part.target.position - part.initial.position);
+  return Vector3d(0, 0, approach.z() < 0 ? lo : hi);
+}
+
 }  // namespace
 
 std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
@@ -102,6 +123,17 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
         Matrix3d((part.density * part.mass_properties.inertia_per_density).asDiagonal()) +
         shift(m.part_mass, m.part_com - m.com) + shift(m.hand_mass, part.grasp - m.com);
   }
+  m.torque_params = params.guidance;
+  m.torque_inertia_body = m.inertia_body;
+  if (params.guidance.torque_law == "wrist") {
+    const double k = params.guidance.wrist_stiffness;
+    m.torque_params.torque_frequency = std::sqrt(k);
+    m.torque_params.torque_damping_ratio =
+        params.guidance.wrist_damping / (2 * std::sqrt(k));
+    m.torque_inertia_body = Matrix3d::Identity();
+  }
+  m.compliance_at_leading_end = params.guidance.compliance_centre == "leading_end";
+  m.leading_end = LeadingEnd(part);
   m.revolved = std::holds_alternative<geometry::RevolvedProfile>(part.shape);
   m.posture = human::StandingPosture(scene.op);
   m.reach_limit = params.reach.BreakpointsFor(scene.op.arm_length, scene.op.height).d3;
@@ -161,21 +193,31 @@ void TrialModel::OperatorLoad(const contact::RigidMotion& m, const Decision& d,
   *force = Vector3d::Zero();
   *torque = Vector3d::Zero();
   if (!operator_acts) return;
-  const Vector3d r_grasp = m.pose.linear() * part->grasp;
-  const Vector3d v_grasp = m.velocity + m.angular_velocity.cross(r_grasp);
+  const Matrix3d& R = m.pose.linear();
+  const Vector3d r_grasp = R * part->grasp;
+  // Where the push acts: the grasp; with the compliance centre at the
+  // leading end, r_c = r_grasp + w R (leading end - grasp), passing to the
+  // leading end as the contact blend w rises. It damps that point's velocity.
+  Vector3d r_c = r_grasp;
+  if (compliance_at_leading_end)
+    r_c += guidance::ContactBlend(cf.normal_force.norm(), blend_force) *
+           (R * (leading_end - part->grasp));
+  const Vector3d v_c = m.velocity + m.angular_velocity.cross(r_c);
   const auto& g = scene->params.guidance;
-  // The arm always carries its own weight; the part's, as guidance says.
+  // The arm always carries its own weight (at the grasp); the part's, as
+  // guidance says.
   const guidance::FeltContact felt{cf.normal_force, cf.friction_force.norm()};
-  *force =
-      guidance::ImpedanceForce(g, d.psi, mass, m.pose.translation(), d.estimated_target,
-                               v_grasp, felt, blend_force, part_mass * scene->gravity,
-                               scene->params.simulation.completion_distance) -
-      hand_mass * scene->gravity;
-  const Matrix3d inertia_world =
-      m.pose.linear() * inertia_body * m.pose.linear().transpose();
-  *torque = r_grasp.cross(*force) +
-            guidance::AssemblyTorque(g, d.psi, inertia_world, m.pose.linear(),
-                                     d.held_orientation, m.angular_velocity);
+  const Vector3d push = guidance::ImpedanceForce(
+      g, d.psi, mass, m.pose.translation(), d.estimated_target, v_c, felt, blend_force,
+      part_mass * scene->gravity, scene->params.simulation.completion_distance);
+  *force = push - hand_mass * scene->gravity;
+  const Matrix3d inertia_world = R * torque_inertia_body * R.transpose();
+  const Vector3d turn = guidance::AssemblyTorque(torque_params, d.psi, inertia_world, R,
+                                                 d.held_orientation, m.angular_velocity);
+  if (compliance_at_leading_end)
+    *torque = r_c.cross(push) - r_grasp.cross(hand_mass * scene->gravity) + turn;
+  else
+    *torque = r_grasp.cross(*force) + turn;
 }
 
 Loads TrialModel::LoadsAt(const contact::RigidMotion& m, const Decision& d,
@@ -190,7 +232,8 @@ Loads TrialModel::LoadsAt(const contact::RigidMotion& m, const Decision& d,
   }
   Vector3d torque;
   OperatorLoad(m, d, out.contact, &out.assembly_force, &torque);
-  out.force = out.assembly_force + out.contact.normal_force + out.contact.friction_force;
+  out.force = out.assembly_force + out.contact.normal_force + out.contact.friction_force +
+              out.contact.film_force;
   out.torque = torque + out.contact.torque;
   if (jacobian) *jacobian = LoadJacobianAt(m, d, out, cj);
   return out;

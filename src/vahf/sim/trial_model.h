@@ -82,6 +82,16 @@ struct TrialModel {
   human::Posture posture;
   human::FactorCurves curves;
   double reach_limit = 0;  // D3, m
+  // The assembly torque's impedance (guidance/torque_law): the parameters
+  // AssemblyTorque reads and the inertia it scales with, about the centre of
+  // mass, part frame. The wrist law tau = Psi K theta - B omega is the
+  // inertial law with unit inertia, w = sqrt(K) and zeta = B / (2 sqrt(K)).
+  guidance::GuidanceParams torque_params;
+  Eigen::Matrix3d torque_inertia_body = Eigen::Matrix3d::Zero();
+  // guidance/compliance_centre "leading_end": in contact the operator's force
+  // acts at the part's leading end (part frame) instead of the grasp.
+  bool compliance_at_leading_end = false;
+  Eigen::Vector3d leading_end = Eigen::Vector3d::Zero();
   // The contact normal force over which Eq. 7 passes into Eq. 8, N.
   double blend_force = 1.0;
   double clearance = 0;  // the smallest radial clearance to a fixed part, m (0: none)

@@ -20,33 +20,61 @@ LoadJacobian TrialModel::LoadJacobianAt(const contact::RigidMotion& m, const Dec
                                         const Loads& loads,
                                         const contact::ContactJacobian& cj) const {
   LoadJacobian out;
-  out.topRows<3>() = cj.normal_force + cj.friction_force;
+  out.topRows<3>() = cj.normal_force + cj.friction_force + cj.film_force;
   out.bottomRows<3>() = cj.torque;
   if (!operator_acts) return out;
   const Matrix3d R = m.pose.linear();
   const Vector3d r_grasp = R * part->grasp;
-  const Vector3d v_grasp = m.velocity + m.angular_velocity.cross(r_grasp);
-  const Matrix3d r_x = CrossMatrix(r_grasp);
   const auto& g = scene->params.guidance;
   const contact::ContactForces& cf = loads.contact;
+  // The push's point r_c (OperatorLoad): the grasp, or r_grasp + w u with
+  // u = R (leading end - grasp) and w the contact blend, whose derivative
+  // w' n^T dF_n comes through the contact's.
+  Vector3d r_c = r_grasp;
+  Eigen::Matrix<double, 1, 12> dw = Eigen::Matrix<double, 1, 12>::Zero();
+  Vector3d u = Vector3d::Zero();
+  if (compliance_at_leading_end) {
+    const double fn = cf.normal_force.norm();
+    u = R * (leading_end - part->grasp);
+    r_c += guidance::ContactBlend(fn, blend_force) * u;
+    if (fn > 0)
+      dw = guidance::ContactBlendSlope(fn, blend_force) *
+           (cf.normal_force.transpose() / fn) * cj.normal_force;
+  }
+  const Vector3d v_c = m.velocity + m.angular_velocity.cross(r_c);
+  const Matrix3d r_x = CrossMatrix(r_c);
   const double friction = cf.friction_force.norm();
   const guidance::ImpedancePartials p = guidance::ImpedanceForceJacobian(
-      g, d.psi, mass, m.pose.translation(), d.estimated_target, v_grasp,
+      g, d.psi, mass, m.pose.translation(), d.estimated_target, v_c,
       {cf.normal_force, friction}, blend_force, part_mass * scene->gravity,
       scene->params.simulation.completion_distance);
-  Block dv_grasp = Block::Zero(), dr_grasp = Block::Zero();
-  dr_grasp.block<3, 3>(0, 3) = -r_x;  // dtheta x r_g
-  dv_grasp.block<3, 3>(0, 3) = -CrossMatrix(m.angular_velocity) * r_x;
-  dv_grasp.block<3, 3>(0, 6) = Matrix3d::Identity();
-  dv_grasp.block<3, 3>(0, 9) = -r_x;
-  Block force = p.velocity * dv_grasp + p.normal_force * cj.normal_force;
+  // dr_c = dtheta x r_c + u dw (u turns with the part: dtheta x (w u) is in
+  // the first term); dv_c = dv + dw_ x r_c + w_ x dr_c.
+  Block dv_c = Block::Zero(), dr_c = Block::Zero();
+  dr_c.block<3, 3>(0, 3) = -r_x;
+  dr_c += u * dw;
+  dv_c = CrossMatrix(m.angular_velocity) * dr_c;
+  dv_c.block<3, 3>(0, 6) += Matrix3d::Identity();
+  dv_c.block<3, 3>(0, 9) += -r_x;
+  Block force = p.velocity * dv_c + p.normal_force * cj.normal_force;
   force.block<3, 3>(0, 0) += p.position;
   if (friction > 0)  // |F_f| has no derivative at 0: taken as 0 there
     force += p.friction * (cf.friction_force.transpose() / friction) * cj.friction_force;
-  Block torque = -CrossMatrix(loads.assembly_force) * dr_grasp + r_x * force;
-  const Matrix3d inertia_world = R * inertia_body * R.transpose();
+  // The torque: r_grasp x F at the grasp (F = push - m_h g, the loads'
+  // assembly force); r_c x push - r_grasp x (m_h g) otherwise.
+  Block torque = r_x * force;
+  if (!compliance_at_leading_end) {
+    torque += -CrossMatrix(loads.assembly_force) * dr_c;
+  } else {
+    const Vector3d hand_weight = hand_mass * scene->gravity;
+    Block dr_grasp = Block::Zero();
+    dr_grasp.block<3, 3>(0, 3) = -CrossMatrix(r_grasp);
+    torque += -CrossMatrix(loads.assembly_force + hand_weight) * dr_c +
+              CrossMatrix(hand_weight) * dr_grasp;
+  }
+  const Matrix3d inertia_world = R * torque_inertia_body * R.transpose();
   const guidance::TorquePartials t = guidance::AssemblyTorqueJacobian(
-      g, d.psi, inertia_world, R, d.held_orientation, m.angular_velocity);
+      torque_params, d.psi, inertia_world, R, d.held_orientation, m.angular_velocity);
   torque.block<3, 3>(0, 3) += t.rotation;
   torque.block<3, 3>(0, 9) += t.omega;
   out.topRows<3>() += force;
