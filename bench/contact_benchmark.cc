@@ -10,7 +10,8 @@
 // forces_us) and their 90th percentile, in microseconds, each the median of
 // the 5 rounds' (median_least_us and median_greatest_us the rounds' spread);
 // the states' count; and the queries and profile edges one evaluation makes
-// on average. Run with tools/bench (one core).
+// on average. The peg and the piston rod also oiled (the same states, the
+// squeeze film added). Run with tools/bench (one core).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -45,7 +46,7 @@ std::vector<RigidMotion> ContactStates(const vahf::sim::TrialModel& model) {
 }
 
 void Evaluations(benchmark::State& state, const std::string& scene_file, int position,
-                 const std::string& model_name) {
+                 const std::string& model_name, double viscosity = 0.0) {
   vahf::scene::Scene scene = vahf::scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
                                                     "/experiments/scenes/" + scene_file);
   scene.params.contact.model = "resolving";
@@ -53,6 +54,7 @@ void Evaluations(benchmark::State& state, const std::string& scene_file, int pos
       50000;  // the cylinder parts' trials may stall at impacts
   const auto states = ContactStates(*vahf::sim::BuildTrialModel(scene, position));
   scene.params.contact.model = model_name;
+  scene.params.contact.lubricant_viscosity = viscosity;
   const auto model = vahf::sim::BuildTrialModel(scene, position);
   const vahf::contact::ContactModel& contact = *model->contact.model;
   if (states.empty()) {
@@ -127,6 +129,20 @@ VAHF_CONTACT_CASE(Peg, "peg_in_hole_resolved.json", 0);
 VAHF_CONTACT_CASE(PistonRod, "hydraulic_cylinder.json", 0);
 VAHF_CONTACT_CASE(GuideSleeve, "hydraulic_cylinder.json", 1);
 VAHF_CONTACT_CASE(SealRing, "hydraulic_cylinder.json", 2);
+
+// The same states with the fit oiled (VG 46 at about 25 C, 0.085 Pa s): the
+// squeeze film (squeeze_film.h) added to the exact contact, its Jacobian by
+// forward-mode AutoDiff.
+BENCHMARK_CAPTURE(Evaluations, Peg_resolving_oiled,
+                  std::string("peg_in_hole_resolved.json"), 0, std::string("resolving"),
+                  0.085)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK_CAPTURE(Evaluations, PistonRod_resolving_oiled,
+                  std::string("hydraulic_cylinder.json"), 0, std::string("resolving"),
+                  0.085)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace
 
