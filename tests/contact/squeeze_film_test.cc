@@ -18,6 +18,7 @@
 
 #include "support/motion_differences.h"
 #include "vahf/contact/contact_registry.h"
+#include "vahf/core/error.h"
 
 namespace vahf::contact {
 namespace {
@@ -244,6 +245,27 @@ TEST(SqueezeFilm, AnOiledSceneAddsTheFilmAndTheLubricatedFriction) {
   const ContactForces film = Film(0.039, s.params.film_floor).Evaluate(m);
   EXPECT_EQ(oiled.film_force, film.film_force);
   EXPECT_LT(oiled.film_force.x(), 0.0);
+}
+
+TEST(SqueezeFilm, AFloorAtOrAboveAClearanceIsRefusedNamingTheParameter) {
+  const geometry::Shape rod = Rod(0.039), bore = Bore();
+  ContactSetup s;
+  s.moving = {&rod, Eigen::Isometry3d::Identity(), 0.15, 0.05};
+  s.fixed.push_back({&bore, Eigen::Isometry3d::Identity(), 0.15, 1.1});
+  s.params.lubricant_viscosity = kMu;
+  s.params.film_floor = kC;  // the fit's clearance: no film is left
+  try {
+    BuildContact("shell", s);
+    FAIL() << "a floor at the clearance was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/parameters/contact/film_floor");
+    EXPECT_NE(e.rule().find("below the radial clearance"), std::string::npos) << e.rule();
+  }
+  s.params.film_floor = 0.5 * kC;
+  EXPECT_NO_THROW(BuildContact("shell", s));
+  s.params.lubricant_viscosity = 0;  // dry: the floor is not read
+  s.params.film_floor = 1e-3;
+  EXPECT_NO_THROW(BuildContact("shell", s));
 }
 
 }  // namespace

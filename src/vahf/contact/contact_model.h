@@ -52,8 +52,8 @@ struct ContactCounters {
   std::uint64_t pairs_skipped = 0;     // obstacle pairs rejected by bounding spheres
   std::uint64_t point_queries = 0;     // shell points tested against an obstacle
   std::uint64_t clusters_skipped = 0;  // shell tree nodes proven clear of an obstacle
-  std::uint64_t rims_skipped = 0;      // obstacles' rims wholly clear of the moving sphere
-  std::uint64_t rim_queries = 0;       // rim points tested against the moving part
+  std::uint64_t rims_skipped = 0;  // obstacles' rims wholly clear of the moving sphere
+  std::uint64_t rim_queries = 0;   // rim points tested against the moving part
   std::uint64_t rim_blocks_skipped = 0;  // runs of rim points proven clear of it
   // Profile edges the point and rim queries examined (SignedDistance::
   // Penetration): their work beyond the count, which grows with a profile's

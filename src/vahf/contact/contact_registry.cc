@@ -1,5 +1,7 @@
 #include "vahf/contact/contact_registry.h"
 
+#include <fmt/format.h>
+
 #include <variant>
 
 #include "vahf/contact/composite_contact.h"
@@ -143,6 +145,16 @@ std::shared_ptr<const SqueezeFilm> Films(const ContactSetup& s) {
       faces.insert(faces.end(), more.begin(), more.end());
     }
   if (faces.empty()) return nullptr;
+  // The law caps the film's eccentricity at 1 - floor / c: a floor at or
+  // above a clearance leaves no film. InputError without a file: the trial
+  // model that builds the contact names its scene.
+  for (const FilmFace& f : faces)
+    if (!(s.params.film_floor < f.clearance))
+      throw InputError(
+          "", "/parameters/contact/film_floor", fmt::format("{:g}", s.params.film_floor),
+          fmt::format("below the radial clearance of every oiled fit ({:g} m "
+                      "here)",
+                      f.clearance));
   return std::make_shared<SqueezeFilm>(
       std::move(faces), FilmParams{s.params.lubricant_viscosity, s.params.film_floor});
 }

@@ -36,6 +36,18 @@ using Ad = Eigen::AutoDiffScalar<Eigen::Matrix<double, 12, 1>>;
 double Value(double x) { return x; }
 double Value(const Ad& x) { return x.value(); }
 
+// The cap's shrink q_cap / q = 1 / (1 + (q / q_max)^16)^(1/16): 1 at q = 0
+// (q^16 underflows), so q_cap = q s never divides by q.
+template <typename T>
+T CapShrink(const T& q, double q_max) {
+  using std::pow;
+  return 1.0 / T(pow(T(1.0 + T(pow(T(q / q_max), 16.0))), 1.0 / 16.0));
+}
+
+double MaxEccentricitySquared(double floor_over_clearance) {
+  return (1.0 - floor_over_clearance) * (1.0 - floor_over_clearance);
+}
+
 // The film of one face pair on the moving part at origin p, rotation R,
 // velocity v and angular velocity w (world).
 template <typename T>
@@ -59,7 +71,8 @@ void AddFace(const FilmFace& f, const FilmParams& params, const Vec3<T>& p,
   // C0 phi, the harmonic finite-length factor phi = L^2 / (L^2 + 12 R^2).
   const T scale = 12.0 * M_PI * params.viscosity * r * r * r / (c * c * c) *
                   (length * length / (length * length + 12.0 * r * r));
-  const double floor_ratio = params.film_floor / c;
+  const double q_max = MaxEccentricitySquared(params.film_floor / c);
+  const Mat3<T> F = f.fixed_pose.linear().template cast<T>();
   const Vec3<T> vf = Ft * v, wf = Ft * w;  // fixed frame
   for (int k = 0; k < kNodes; ++k) {
     const T z = 0.5 * (lo + hi) + 0.5 * length * kNode[k];
@@ -69,12 +82,9 @@ void AddFace(const FilmFace& f, const FilmParams& params, const Vec3<T>& p,
     const Eigen::Matrix<T, 2, 1> e(point(0) / c, point(1) / c);  // eps vector
     const Eigen::Matrix<T, 2, 1> de(rate(0), rate(1));
     const T q = e.squaredNorm();
-    // s = q_cap / q, the cap's shrink; at q = 0 it is 1 (q^16 underflows).
-    const double q_max = (1.0 - floor_ratio) * (1.0 - floor_ratio);
-    using std::pow;
-    using std::sqrt;
-    const T s = 1.0 / T(pow(T(1.0 + T(pow(T(q / q_max), 16.0))), 1.0 / 16.0));
+    const T s = CapShrink(q, q_max);
     const T qc = q * s;
+    using std::sqrt;
     const T root = T(sqrt(T(1.0 - qc)));
     const T tangential = 2.0 / ((2.0 + qc) * root);
     // (radial - tangential) / qc = 3 / ((2 + q) (1 - q)^(3/2)): the radial
@@ -84,7 +94,7 @@ void AddFace(const FilmFace& f, const FilmParams& params, const Vec3<T>& p,
         -(tangential * de + excess * s * e.dot(de) * e) * scale;
     const Vec3<T> load(f2(0), f2(1), T(0));
     const T weight = 0.5 * length * kWeight[k];
-    const Vec3<T> load_world = f.fixed_pose.linear().template cast<T>() * load * weight;
+    const Vec3<T> load_world = F * load * weight;
     out->force += load_world;
     out->torque += (R.col(2) * z).cross(load_world);
   }
@@ -115,13 +125,8 @@ std::vector<FilmFace> FilmFaces(const geometry::RevolvedProfile& moving,
   return out;
 }
 
-double FilmRadialFactor(double q) { return 1.0 / std::pow(1.0 - q, 1.5); }
-
-double FilmTangentialFactor(double q) { return 2.0 / ((2.0 + q) * std::sqrt(1.0 - q)); }
-
 double CappedEccentricitySquared(double q, double floor_over_clearance) {
-  const double q_max = (1.0 - floor_over_clearance) * (1.0 - floor_over_clearance);
-  return q / std::pow(1.0 + std::pow(q / q_max, 16.0), 1.0 / 16.0);
+  return q * CapShrink(q, MaxEccentricitySquared(floor_over_clearance));
 }
 
 SqueezeFilm::SqueezeFilm(std::vector<FilmFace> faces, FilmParams params)

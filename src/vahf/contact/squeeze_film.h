@@ -77,14 +77,10 @@ class SqueezeFilm final : public ContactModel {
   FilmParams params_;
 };
 
-// The local law's two coefficients relative to C0 at eps^2 = q (< 1): along
-// the offset, (1 - q)^(-3/2); across it, 2 / ((2 + q) sqrt(1 - q)).
-double FilmRadialFactor(double q);
-double FilmTangentialFactor(double q);
-
 // The smooth cap of eps^2 the film floor sets: q / (1 + (q / q_max)^16)^(1/16)
-// with q_max = (1 - floor / c)^2. Within 1 % of q below 0.85 q_max; it rises
-// monotonically to q_max / 2^(1/16).
+// with q_max = (1 - floor / c)^2 (floor < c: the registry refuses a floor at
+// or above a film's clearance). Within 1 % of q below 0.85 q_max; it rises
+// monotonically to q_max / 2^(1/16). The law uses the same cap.
 double CappedEccentricitySquared(double q, double floor_over_clearance);
 
 }  // namespace vahf::contact

@@ -25,12 +25,13 @@ struct ImpedancePartials {
 };
 
 // The partials of ImpedanceForce at the same arguments.
-ImpedancePartials ImpedanceForceJacobian(const GuidanceParams& params, double psi, double mass,
-                                         const Eigen::Vector3d& position,
+ImpedancePartials ImpedanceForceJacobian(const GuidanceParams& params, double psi,
+                                         double mass, const Eigen::Vector3d& position,
                                          const Eigen::Vector3d& estimated_target,
                                          const Eigen::Vector3d& velocity,
                                          const FeltContact& contact, double blend_force,
-                                         const Eigen::Vector3d& weight, double fade_length);
+                                         const Eigen::Vector3d& weight,
+                                         double fade_length);
 
 // Partials of AssemblyTorque: w.r.t. a small world rotation dtheta of the part
 // (rotation -> exp([dtheta]x) rotation, inertia_world turning with it:

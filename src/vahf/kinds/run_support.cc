@@ -19,13 +19,15 @@ std::string DescribeHand(const sim::TrialModel& m) {
   const auto& g = m.scene->params.guidance;
   const double w = m.torque_params.torque_frequency;
   const double i_law = m.torque_inertia_body(0, 0);
-  const double k = i_law * w * w, b = i_law * 2 * m.torque_params.torque_damping_ratio * w;
+  const double k = i_law * w * w,
+               b = i_law * 2 * m.torque_params.torque_damping_ratio * w;
   const double inertia = m.inertia_body(0, 0);
   return fmt::format(
       "    hand: {} torque law, rotational stiffness {:.3g} N m/rad, damping {:.3g} N m "
       "s/rad about the part's x axis (inertia {:.3g} kg m^2): natural frequency {:.3g} "
       "rad/s, damping ratio {:.3g}; in contact the push acts at the {}\n",
-      g.torque_law, k, b, inertia, std::sqrt(k / inertia), b / (2 * std::sqrt(k * inertia)),
+      g.torque_law, k, b, inertia, std::sqrt(k / inertia),
+      b / (2 * std::sqrt(k * inertia)),
       m.compliance_at_leading_end ? "part's leading end" : "grasp");
 }
 
@@ -53,14 +55,16 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-int FinishRun(const scene::ExperimentFile& file, const RunContext& context, double seconds,
-              const report::RunOutput& written, const std::string& detail) {
-  std::printf("%s: %s, seed %llu, %.1f s on %d thread(s)%s%s\nresults digest %s\n"
-              "report: %s/report.md\n",
-              file.name.c_str(), file.kind.c_str(),
-              static_cast<unsigned long long>(context.settings.seed), seconds,
-              context.settings.threads, detail.empty() ? "" : ", ", detail.c_str(),
-              written.results_digest.c_str(), context.directory->path().c_str());
+int FinishRun(const scene::ExperimentFile& file, const RunContext& context,
+              double seconds, const report::RunOutput& written,
+              const std::string& detail) {
+  std::printf(
+      "%s: %s, seed %llu, %.1f s on %d thread(s)%s%s\nresults digest %s\n"
+      "report: %s/report.md\n",
+      file.name.c_str(), file.kind.c_str(),
+      static_cast<unsigned long long>(context.settings.seed), seconds,
+      context.settings.threads, detail.empty() ? "" : ", ", detail.c_str(),
+      written.results_digest.c_str(), context.directory->path().c_str());
   for (const std::string& failure : written.failed_plots)
     std::fprintf(stderr, "vahf: error: plot not rendered (results kept): %s\n",
                  failure.c_str());

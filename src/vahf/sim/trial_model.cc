@@ -165,7 +165,12 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
                                   (part.initial.position - part.target.position).norm()
                             : 0.0;
     setup.steady_load = pull + part.mass * scene.gravity.norm();
-    m.contact = contact::BuildContact(params.contact.model, setup);
+    try {
+      m.contact = contact::BuildContact(params.contact.model, setup);
+    } catch (const InputError& e) {  // the contact knows the rule, not the scene
+      throw InputError(scene.file, e.where(), e.value(),
+                       fmt::format("{} (part '{}')", e.rule(), part.name));
+    }
   }
   // Eq. 1 by ray casting only when the scene asks for it and something could
   // hide the part; a scene with V given or switched off tessellates nothing.
