@@ -311,9 +311,9 @@ double IntegrateWithCvode(TrialContext& c, double sample_interval,
         if (deepening_limit > 0 && !deepens && h > sim.step_floor &&
             Travel(kept_y, y, model.bounding_radius) > deepening_limit) {
           const contact::RigidMotion mid = path(kept_t + 0.5 * (t - kept_t));
-          deepens = IsFinite(mid) && c.ContactAt(mid).max_depth -
-                                             std::max(depth, kept_depth) >
-                                         deepening_limit;
+          deepens =
+              IsFinite(mid) &&
+              c.ContactAt(mid).max_depth - std::max(depth, kept_depth) > deepening_limit;
         }
         if (deepening_limit > 0 && deepens && h > sim.step_floor) {
           harvest();
