@@ -159,8 +159,6 @@ void SetAbsoluteTolerances(const TrialModel& model, double accuracy, double time
   a.segment<3>(10).setConstant(accuracy / (length * time_scale));
 }
 
-// The cubic Hermite interpolant at ts in [t0, t1] of states y0, y1 with
-// slopes d0, d1: exact for cubics, and within the step's two ends and slopes.
 // How far a step from y0 to y1 moves the part's farthest point, about: the
 // origin's displacement plus the radius times the turn (twice the
 // quaternion's change).
@@ -169,6 +167,8 @@ double Travel(const BodyState& y0, const BodyState& y1, double radius) {
          2 * radius * (y1.segment<4>(3) - y0.segment<4>(3)).norm();
 }
 
+// The cubic Hermite interpolant at ts in [t0, t1] of states y0, y1 with
+// slopes d0, d1: exact for cubics, and fixed by the step's two ends and slopes.
 BodyState Hermite(double t0, const BodyState& y0, const BodyState& d0, double t1,
                   const BodyState& y1, const BodyState& d1, double ts) {
   const double h = t1 - t0;
