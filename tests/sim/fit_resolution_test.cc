@@ -147,5 +147,31 @@ TEST(FitResolution, ResolvedPegCompletesWithinTheBound) {
   }
 }
 
+// The resolved peg held by a co-contracted wrist (guidance/torque_law wrist,
+// 20 N m/rad, 1 N m s/rad) on seeds 108 and 112: one CVODE step carried
+// the peg's rim through the bore's chamfer between two clear ends, 9.3 and
+// 13.7 um deep on its 0.5 ms samples against the 5 um bound, while every
+// accepted step stayed within it. The stepper now checks the midpoint of a
+// step that moves the part farther than the barrier's deepening limit and
+// samples on the same Hermite path (docs/physics.md, Integrators).
+TEST(FitResolution, NoStepPassesThroughAContactNeitherEndTouches) {
+  scene::Scene s = scene::LoadScene(
+      std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/peg_in_hole_resolved.json");
+  s.params.guidance.torque_law = "wrist";
+  s.params.guidance.wrist_stiffness = 20;
+  s.params.guidance.wrist_damping = 1;
+  TrialOptions options;
+  options.record_trace = false;
+  options.sample_interval = 0.5e-3;
+  for (std::uint64_t seed : {108u, 112u}) {
+    const TrialResult r = RunTrial(s, {seed, 0}, options);
+    ASSERT_EQ(r.status, Status::kCompleted) << "seed " << seed << ": " << r.detail;
+    const double deepest = DeepestOverTrial(s, r);
+    std::printf("wrist peg seed %llu: deepest %.3g um by the oracle\n",
+                static_cast<unsigned long long>(seed), deepest * 1e6);
+    EXPECT_LT(deepest, r.penetration_bound) << "seed " << seed;
+  }
+}
+
 }  // namespace
 }  // namespace vahf::sim

@@ -7,7 +7,8 @@
 # - the peg tilted by theta about x over the plate, its frame origin at
 #   height 0.01 + R sin(theta) - d: its lowest rim point is d deep;
 # - a part earlier in the sequence is fixed at its target;
-# - bad input: a missing pose column and a box part (exit 2, one line).
+# - bad input: a missing pose column, a box part and a part without a
+#   profile (exit 2, one line).
 #
 # Usage: penetration_check_test.sh REPO_ROOT
 set -uo pipefail
@@ -93,6 +94,14 @@ cat "$work/scene.json" |
 err=$("$check" "$work/box.json" "$work/trace.csv" 2>&1 >/dev/null)
 status=$?
 [[ $status -eq 2 && $err == *box.json*plate*box* ]] || fail "a box part: exit $status, '$err'"
+
+cat "$work/scene.json" |
+  python3 -c 'import json,sys; s=json.load(sys.stdin); del s["parts"][0]["geometry"]["profile"]; json.dump(s,sys.stdout)' \
+  >"$work/noprofile.json"
+err=$("$check" "$work/noprofile.json" "$work/trace.csv" 2>&1 >/dev/null)
+status=$?
+[[ $status -eq 2 && $(wc -l <<<"$err") -eq 1 && $err == *noprofile.json*profile* ]] ||
+  fail "a part without a profile: exit $status, '$err'"
 
 if [[ $failures -gt 0 ]]; then
   echo "$failures failure(s)" >&2

@@ -282,13 +282,17 @@ double IntegrateWithCvode(TrialContext& c, double sample_interval,
         double h = 0;
         CVodeGetLastStep(cv.mem, &h);
         // The step's two ends and their slopes (CVODE's, at each end): its
-        // cubic Hermite is the path checked and sampled below.
-        CVodeGetDky(cv.mem, t, 1, cv.dky);
-        const BodyState slope = Of(cv.dky);
-        if (!kept_slope_known) {  // the first step since a (re)start
-          CVodeGetDky(cv.mem, kept_t, 1, cv.dky);
-          kept_slope = Of(cv.dky);
-          kept_slope_known = true;
+        // cubic Hermite is the path checked and sampled below, when either
+        // is asked for.
+        BodyState slope = BodyState::Zero();
+        if (deepening_limit > 0 || sample_interval > 0) {
+          CVodeGetDky(cv.mem, t, 1, cv.dky);
+          slope = Of(cv.dky);
+          if (!kept_slope_known) {  // the first step since a (re)start
+            CVodeGetDky(cv.mem, kept_t, 1, cv.dky);
+            kept_slope = Of(cv.dky);
+            kept_slope_known = true;
+          }
         }
         const auto path = [&](double ts) {
           BodyState ys = Hermite(kept_t, kept_y, kept_slope, t, y, slope, ts);
@@ -307,15 +311,17 @@ double IntegrateWithCvode(TrialContext& c, double sample_interval,
         // contact does. Either is taken back and retaken with a quarter of
         // the step; the depth is continuous in time, so the retakes end. Not
         // below the step floor.
-        bool deepens = depth - kept_depth > deepening_limit;
-        if (deepening_limit > 0 && !deepens && h > sim.step_floor &&
-            Travel(kept_y, y, model.bounding_radius) > deepening_limit) {
-          const contact::RigidMotion mid = path(kept_t + 0.5 * (t - kept_t));
-          deepens =
-              IsFinite(mid) &&
-              c.ContactAt(mid).max_depth - std::max(depth, kept_depth) > deepening_limit;
+        bool retake = false;
+        if (deepening_limit > 0 && h > sim.step_floor) {
+          retake = depth - kept_depth > deepening_limit;
+          if (!retake && Travel(kept_y, y, model.bounding_radius) > deepening_limit) {
+            const contact::RigidMotion mid = path(kept_t + 0.5 * (t - kept_t));
+            retake = IsFinite(mid) &&
+                     c.ContactAt(mid).max_depth - std::max(depth, kept_depth) >
+                         deepening_limit;
+          }
         }
-        if (deepening_limit > 0 && deepens && h > sim.step_floor) {
+        if (retake) {
           harvest();
           --done.steps_taken;  // attempted, not taken
           Of(cv.y) = kept_y;
