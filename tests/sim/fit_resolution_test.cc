@@ -155,8 +155,8 @@ TEST(FitResolution, ResolvedPegCompletesWithinTheBound) {
 // step that moves the part farther than the barrier's deepening limit and
 // samples on the same Hermite path (docs/physics.md, Integrators).
 TEST(FitResolution, NoStepPassesThroughAContactNeitherEndTouches) {
-  scene::Scene s = scene::LoadScene(
-      std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/peg_in_hole_resolved.json");
+  scene::Scene s = scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
+                                    "/experiments/scenes/peg_in_hole_resolved.json");
   s.params.guidance.torque_law = "wrist";
   s.params.guidance.wrist_stiffness = 20;
   s.params.guidance.wrist_damping = 1;
