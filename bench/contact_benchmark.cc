@@ -125,7 +125,7 @@ void Evaluations(benchmark::State& state, const std::string& scene_file, int pos
       ->Unit(benchmark::kMillisecond)                                           \
       ->Iterations(1)
 
-VAHF_CONTACT_CASE(Peg, "peg_in_hole_resolved.json", 0);
+VAHF_CONTACT_CASE(Peg, "peg_in_hole.json", 0);
 VAHF_CONTACT_CASE(PistonRod, "hydraulic_cylinder.json", 0);
 VAHF_CONTACT_CASE(GuideSleeve, "hydraulic_cylinder.json", 1);
 VAHF_CONTACT_CASE(SealRing, "hydraulic_cylinder.json", 2);
@@ -133,9 +133,8 @@ VAHF_CONTACT_CASE(SealRing, "hydraulic_cylinder.json", 2);
 // The same states with the fit oiled (VG 46 at about 25 C, 0.085 Pa s): the
 // squeeze film (squeeze_film.h) added to the exact contact, its Jacobian by
 // forward-mode AutoDiff.
-BENCHMARK_CAPTURE(Evaluations, Peg_resolving_oiled,
-                  std::string("peg_in_hole_resolved.json"), 0, std::string("resolving"),
-                  0.085)
+BENCHMARK_CAPTURE(Evaluations, Peg_resolving_oiled, std::string("peg_in_hole.json"), 0,
+                  std::string("resolving"), 0.085)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 BENCHMARK_CAPTURE(Evaluations, PistonRod_resolving_oiled,

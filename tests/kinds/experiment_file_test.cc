@@ -187,6 +187,7 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       {"precision_peg.json", "precision"},
       {"precision_cylinder.json", "precision"},
       {"precision_peg_resolved.json", "precision"},
+      {"precision_cylinder_resolved.json", "precision"},
       {"calibrate_synthetic.json", "calibrate"},
       {"calibrate_paper.json", "calibrate"},
       {"compare_synthetic.json", "compare"},
@@ -215,7 +216,7 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
       EXPECT_EQ(e.scene_path, e.precision.scenes.at(0).path) << name;
     } else if (e.kind == "stability") {  // its first case's
       EXPECT_EQ(e.scene_path, e.stability.cases.at(0).scene_path) << name;
-      EXPECT_EQ(e.scene.name, "peg_in_hole") << name;
+      EXPECT_EQ(e.scene.name, "peg_in_hole_shell") << name;
     } else {
       EXPECT_TRUE(std::filesystem::equivalent(e.scene_path, CylinderScene())) << name;
       EXPECT_EQ(e.scene.name, "hydraulic_cylinder") << name;

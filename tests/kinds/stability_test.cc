@@ -71,8 +71,8 @@ ExperimentFile Load(const json& doc) {
 void ExpectError(const json& doc, const std::string& where, const std::string& rule,
                  const std::string& value = "") {
   const std::string path = WriteFile(TestDir() / "stability.json", doc.dump(1));
-  testing::ExpectInputError([&] { kinds::CheckExperiment(kinds::LoadExperiment(path)); }, path,
-                            where, rule, value);
+  testing::ExpectInputError([&] { kinds::CheckExperiment(kinds::LoadExperiment(path)); },
+                            path, where, rule, value);
 }
 
 TEST(StabilityFile, LoadsCasesWithTheirPatchesOverridesAndIntegrators) {
@@ -85,7 +85,8 @@ TEST(StabilityFile, LoadsCasesWithTheirPatchesOverridesAndIntegrators) {
   EXPECT_EQ(tight.pointer, "/cases/0");
   EXPECT_EQ(tight.seeds, 2);
   EXPECT_THAT(tight.expect, ElementsAre("completed", "jammed"));
-  EXPECT_THAT(tight.expect_pointers, ElementsAre("/cases/0/expect/0", "/cases/0/expect/1"));
+  EXPECT_THAT(tight.expect_pointers,
+              ElementsAre("/cases/0/expect/0", "/cases/0/expect/1"));
   EXPECT_THAT(tight.integrators, ElementsAre("CVODE", "RungeKuttaMerson"));
   ASSERT_EQ(tight.scenes.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
@@ -93,7 +94,7 @@ TEST(StabilityFile, LoadsCasesWithTheirPatchesOverridesAndIntegrators) {
     EXPECT_EQ(s.params.simulation.integrator, tight.integrators[i]);
     EXPECT_EQ(s.params.simulation.time_limit, 1.5);
     EXPECT_EQ(s.params.contact.stiffness, 1e12);
-    EXPECT_EQ(s.params.simulation.accuracy, 5e-5);  // the scene's own, kept
+    EXPECT_EQ(s.params.simulation.accuracy, 1e-4);  // the scene's own, kept
     EXPECT_EQ(s.parts[1].friction, 0.4);
     EXPECT_EQ(s.parts[0].friction, 0.15);  // unpatched
   }
@@ -110,7 +111,8 @@ TEST(StabilityFile, APatchPointerMustNameAValueTheSceneHolds) {
   ExpectError(e, "/cases/0/patch/~1parts~11~1mass", "the scene has no 'mass' at /parts/1",
               "0.001");
   e["cases"][0]["patch"] = {{"/parts/7/friction", 0.2}};
-  ExpectError(e, "/cases/0/patch/~1parts~17~1friction", "holds 2 elements; '7' names none");
+  ExpectError(e, "/cases/0/patch/~1parts~17~1friction",
+              "holds 2 elements; '7' names none");
   e["cases"][0]["patch"] = {{"parts/1/friction", 0.2}};
   ExpectError(e, "/cases/0/patch/parts~11~1friction", "starts with '/'");
   e["cases"][0]["patch"] = {{"/parts/99999999999999999999999/friction", 0.2}};
@@ -135,7 +137,8 @@ TEST(StabilityFile, APatchedSceneBreakingARuleNamesThePatchEntry) {
   e["cases"][1]["patch"] = {{"/parts/1/density", -5}};
   ExpectError(e, "/cases/1/patch/~1parts~11~1density", "must lie in [1, 1e7]", "-5");
   // Inside a patched value: the pointer goes on into it.
-  e["cases"][1]["patch"] = {{"/parts/1/geometry/profile", {{0, 0}, {-0.01, 0}, {0, 0.05}, {0, 0}}}};
+  e["cases"][1]["patch"] = {
+      {"/parts/1/geometry/profile", {{0, 0}, {-0.01, 0}, {0, 0.05}, {0, 0}}}};
   ExpectError(e, "/cases/1/patch/~1parts~11~1geometry~1profile/1", "negative", "-0.01");
   // A rule the patch breaks elsewhere in the scene names the case.
   e["cases"][1]["patch"] = {{"/parts/1/role", "base"}};
@@ -178,8 +181,9 @@ TEST(StabilityFile, OverridesIntegratorsSeedsAndPositionFollowTheirRules) {
 TEST(StabilityFile, AnExpectedClassIsATrialStatus) {
   json e = Stability();
   e["cases"][1]["expect"] = {"numerical_failure", "crashed"};
-  ExpectError(e, "/cases/1/expect/1", "a trial status: completed, timeout, exhausted, "
-                                      "unreachable, jammed, numerical_failure, step_budget",
+  ExpectError(e, "/cases/1/expect/1",
+              "a trial status: completed, timeout, exhausted, "
+              "unreachable, jammed, numerical_failure, step_budget",
               "crashed");
   e["cases"][1]["expect"] = {"jammed", "jammed"};
   ExpectError(e, "/cases/1/expect/1", "listed once");
@@ -216,13 +220,15 @@ StabilityCase Expecting(std::vector<std::string> classes) {
 }
 
 TEST(StabilityVerdict, PassesAnExpectedFiniteTrialWithinItsSteps) {
-  EXPECT_THAT(experiment::StabilityFailures(Expecting({"jammed", "completed"}), Completed(), 800),
-              ::testing::IsEmpty());
+  EXPECT_THAT(
+      experiment::StabilityFailures(Expecting({"jammed", "completed"}), Completed(), 800),
+      ::testing::IsEmpty());
 }
 
 TEST(StabilityVerdict, FailsAnUnexpectedStatus) {
-  EXPECT_THAT(experiment::StabilityFailures(Expecting({"jammed", "timeout"}), Completed(), 1000),
-              ElementsAre("ended completed, expected jammed or timeout"));
+  EXPECT_THAT(
+      experiment::StabilityFailures(Expecting({"jammed", "timeout"}), Completed(), 1000),
+      ElementsAre("ended completed, expected jammed or timeout"));
 }
 
 TEST(StabilityVerdict, FailsANumberThatIsNotFinite) {

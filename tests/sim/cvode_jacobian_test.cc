@@ -317,13 +317,13 @@ void ComparePegStates(const std::string& file, const std::string& model_name,
 // Measured: the worst block off by 8.8 % at 244 um (the shell contact's
 // strike on the chamfer), 3.9 % at 144 um, 2.3 % at 32 um, 0.1 % at 4.9 um.
 TEST(CvodeJacobian, PegStatesFromATrial) {
-  ComparePegStates("peg_in_hole.json", "", 0.12, 5e-3);
+  ComparePegStates("peg_in_hole_shell.json", "", 0.12, 5e-3);
 }
 
 // The resolved peg on the sampled contact: measured 0.2 % at 2.2 um, 0.002 %
 // at 0.15 um.
 TEST(CvodeJacobian, SampledPegStatesFromATrial) {
-  ComparePegStates("peg_in_hole_resolved.json", "sampled", 0.01, 5e-3);
+  ComparePegStates("peg_in_hole.json", "sampled", 0.01, 5e-3);
 }
 
 // The resolved peg on its exact contact (the scene's): the Jacobian holds
@@ -337,7 +337,7 @@ TEST(CvodeJacobian, SampledPegStatesFromATrial) {
 // same for steps of 1e-11 to 1e-7 m, so the error is the Jacobian's). CVODE
 // needs only a Jacobian good enough for its Newton iteration to converge.
 TEST(CvodeJacobian, ResolvedPegStatesFromATrial) {
-  ComparePegStates("peg_in_hole_resolved.json", "", 0.2, 5e-3, 1e-6);
+  ComparePegStates("peg_in_hole.json", "", 0.2, 5e-3, 1e-6);
 }
 
 // A whole trial: the analytic Jacobian and CVODE's difference quotients give
@@ -345,7 +345,7 @@ TEST(CvodeJacobian, ResolvedPegStatesFromATrial) {
 // without the 13 right-hand sides per Jacobian.
 TEST(CvodeJacobian, AgreesWithDifferenceQuotientsOnATrial) {
   scene::Scene s = scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
-                                    "/experiments/scenes/peg_in_hole.json");
+                                    "/experiments/scenes/peg_in_hole_shell.json");
   s.params.simulation.integrator = "CVODE";
   s.params.simulation.accuracy = 1e-8;
   TrialOptions dq;

@@ -60,13 +60,13 @@ TEST(CvodeStepper, PegConvergesToMersonsCompletionTime) {
   double t[3];
   const double accuracies[3] = {1e-6, 1e-7, 1e-8};
   for (int k = 0; k < 3; ++k) {
-    const TrialResult r = RunSeed1(LoadExample("peg_in_hole.json", accuracies[k]));
+    const TrialResult r = RunSeed1(LoadExample("peg_in_hole_shell.json", accuracies[k]));
     ASSERT_EQ(r.status, Status::kCompleted) << accuracies[k] << ": " << r.detail;
     t[k] = r.completion_time;
   }
   EXPECT_LT(std::abs(t[1] - t[2]), std::abs(t[0] - t[2]) + 1e-9);
   EXPECT_NEAR(t[1], t[2], 2e-4 * t[2]);
-  scene::Scene rkm = LoadExample("peg_in_hole.json", 1e-8);
+  scene::Scene rkm = LoadExample("peg_in_hole_shell.json", 1e-8);
   rkm.params.simulation.integrator = "RungeKuttaMerson";
   const TrialResult reference = RunSeed1(rkm);
   ASSERT_EQ(reference.status, Status::kCompleted) << reference.detail;
@@ -79,7 +79,7 @@ TEST(CvodeStepper, PegConvergesToMersonsCompletionTime) {
 // still held: the completion time stays within 2 % of RungeKuttaMerson at
 // 1e-8 (0.105250 s against 0.103848 s; 0.102793 s at 1 s).
 TEST(CvodeStepper, AShorterVelocityTimeScaleStepsOverTheVibration) {
-  const scene::Scene tight = LoadExample("peg_in_hole.json");
+  const scene::Scene tight = LoadExample("peg_in_hole_shell.json");
   scene::Scene loose = tight;
   loose.params.simulation.velocity_time_scale = 0.1;
   const TrialResult a = RunSeed1(tight), b = RunSeed1(loose);
@@ -91,10 +91,10 @@ TEST(CvodeStepper, AShorterVelocityTimeScaleStepsOverTheVibration) {
 }
 
 TEST(CvodeStepper, PistonRodAgreesWithMerson) {
-  const TrialResult cvode = RunSeed1(LoadExample("hydraulic_cylinder.json", 1e-8));
+  const TrialResult cvode = RunSeed1(LoadExample("hydraulic_cylinder_shell.json", 1e-8));
   ASSERT_EQ(cvode.status, Status::kCompleted) << cvode.detail;
   // RungeKuttaMerson at 1e-8: 0.829087 s (trial_test.cc, measured).
-  scene::Scene rkm = LoadExample("hydraulic_cylinder.json", 1e-8);
+  scene::Scene rkm = LoadExample("hydraulic_cylinder_shell.json", 1e-8);
   rkm.params.simulation.integrator = "RungeKuttaMerson";
   const TrialResult reference = RunSeed1(rkm);
   ASSERT_EQ(reference.status, Status::kCompleted) << reference.detail;
@@ -103,7 +103,7 @@ TEST(CvodeStepper, PistonRodAgreesWithMerson) {
 }
 
 TEST(CvodeStepper, SameInputsSameBitsAndSamplesChangeNothing) {
-  const scene::Scene s = LoadExample("peg_in_hole.json");
+  const scene::Scene s = LoadExample("peg_in_hole_shell.json");
   const TrialResult a = RunSeed1(s);
   const TrialResult b = RunSeed1(s);
   const TrialResult sampled = RunSeed1(s, 0, 0.5e-3);
@@ -138,7 +138,7 @@ TEST(CvodeStepper, AnEndingAtTheFirstDecisionReadsNoCounters) {
 }
 
 TEST(CvodeStepper, StiffContactIsCheckedAtEveryStep) {
-  scene::Scene s = LoadExample("peg_in_hole.json");
+  scene::Scene s = LoadExample("peg_in_hole_shell.json");
   s.params.contact.stiffness = 1e7;  // Pa/m: far too soft for the 50 um fit
   const TrialResult r = RunSeed1(s);
   EXPECT_GT(r.max_penetration, r.penetration_bound);

@@ -76,12 +76,12 @@ double DeepestOverTrial(const scene::Scene& s, const TrialResult& r) {
   return deepest;
 }
 
-// The shipped resolving configuration (experiments/scenes/peg_in_hole_resolved.json:
+// The shipped resolving configuration (experiments/scenes/peg_in_hole.json:
 // stiffness by the bound rule with its barrier, the exact revolved contact,
 // CVODE 1e-4 at BDF order at most 2).
 TEST(FitResolution, PegStaysWithinTenPercentOfItsClearance) {
-  const scene::Scene s = scene::LoadScene(
-      std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/peg_in_hole_resolved.json");
+  const scene::Scene s = scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
+                                          "/experiments/scenes/peg_in_hole.json");
   ASSERT_EQ(s.params.contact.model, "resolving");
   TrialOptions options;
   options.record_trace = false;
@@ -128,8 +128,8 @@ TEST(FitResolution, PegStaysWithinTenPercentOfItsClearance) {
 // at the bound (the barrier now stands 2 % inside it, kBarrierMargin). Each
 // must complete within the bound, by the model and by the geometric oracle.
 TEST(FitResolution, ResolvedPegCompletesWithinTheBound) {
-  const scene::Scene s = scene::LoadScene(
-      std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/peg_in_hole_resolved.json");
+  const scene::Scene s = scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
+                                          "/experiments/scenes/peg_in_hole.json");
   TrialOptions options;
   options.record_trace = false;
   options.sample_interval = 0.5e-3;
@@ -156,7 +156,7 @@ TEST(FitResolution, ResolvedPegCompletesWithinTheBound) {
 // samples on the same Hermite path (docs/physics.md, Integrators).
 TEST(FitResolution, NoStepPassesThroughAContactNeitherEndTouches) {
   scene::Scene s = scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
-                                    "/experiments/scenes/peg_in_hole_resolved.json");
+                                    "/experiments/scenes/peg_in_hole.json");
   s.params.guidance.torque_law = "wrist";
   s.params.guidance.wrist_stiffness = 20;
   s.params.guidance.wrist_damping = 1;

@@ -42,7 +42,7 @@ PlainAndSampled RunBoth(const scene::Scene& s, bool record_trace) {
 }
 
 TEST(TrialHealth, SamplesDoNotChangeTheTrajectory) {
-  const auto [a, b] = RunBoth(LoadExample("peg_in_hole.json"), true);
+  const auto [a, b] = RunBoth(LoadExample("peg_in_hole_shell.json"), true);
   ASSERT_EQ(a.trace.size(), b.trace.size());
   for (std::size_t i = 0; i < a.trace.size(); ++i) {
     EXPECT_EQ(a.trace[i].position, b.trace[i].position) << "decision " << i;
@@ -68,7 +68,7 @@ TEST(TrialHealth, SamplesDoNotChangeTheTrajectory) {
 // either (the resolved peg scene, integrated by CPodes, its reference), nor
 // under the scene's own CVODE.
 TEST(TrialHealth, SamplesDoNotChangeAStiffTrajectory) {
-  scene::Scene s = LoadExample("peg_in_hole_resolved.json");
+  scene::Scene s = LoadExample("peg_in_hole.json");
   ASSERT_EQ(s.params.simulation.integrator, "CVODE");
   EXPECT_GT(RunBoth(s, false).b.samples.size(), 200u);
   s.params.simulation.integrator = "CPodes";
@@ -82,7 +82,7 @@ TEST(TrialHealth, SamplesDoNotChangeAStiffTrajectory) {
 TEST(TrialHealth, TimingThePhasesChangesNoBit) {
   for (const char* integrator : {"CVODE", "RungeKuttaMerson"}) {
     SCOPED_TRACE(integrator);
-    scene::Scene s = LoadExample("peg_in_hole.json");
+    scene::Scene s = LoadExample("peg_in_hole_shell.json");
     s.params.simulation.integrator = integrator;
     TrialOptions plain, timed;
     plain.record_trace = timed.record_trace = false;
@@ -107,7 +107,7 @@ TEST(TrialHealth, TimingThePhasesChangesNoBit) {
 }
 
 TEST(TrialHealth, TooSoftAContactIsAPenetrationWarning) {
-  scene::Scene s = LoadExample("peg_in_hole.json");
+  scene::Scene s = LoadExample("peg_in_hole_shell.json");
   s.params.contact.stiffness = 1e7;  // Pa/m: a thousand times too soft for the fit
   const TrialResult r = RunTrial(s, {1, 0}, {0, 0.0, false});
   EXPECT_NEAR(r.clearance, 50e-6, 1e-12);

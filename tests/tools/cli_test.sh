@@ -101,7 +101,8 @@ run check "$scene"
 expect_status "check valid scene" 0
 expect_in "check valid scene" "$out" "valid scene"
 # It builds each part's trial model, as a run would, and says what it holds.
-expect_in "check valid scene" "$out" "trial model 'peg': contact shell, 3831 shell points, radial clearance 50 um, penetration bound 5 um, V by ray casting"
+expect_in "check valid scene" "$out" "trial model 'peg': contact resolving, 0 shell points, radial clearance 50 um, penetration bound 5 um, V by ray casting"
+expect_in "check valid scene" "$out" "hand: wrist torque law, rotational stiffness 20 N m/rad, damping 1 N m s/rad"
 expect_lines "check valid scene" "$err" 0
 
 # --- check: a scene whose peg has a negative mass.
@@ -179,7 +180,7 @@ expect_in "check experiment" "$out" "valid experiment"
 # --- check: the precision experiment lists its scenes, reference and settings.
 run check "$root/experiments/precision.json"
 expect_status "check precision" 0
-for text in "kind precision" "peg_in_hole (" "hydraulic_cylinder (" \
+for text in "kind precision" "peg_in_hole_shell (" "hydraulic_cylinder_shell (" \
     "reference: RungeKuttaMerson 1e-8 (/reference)" "settings (18):" \
     "RungeKuttaMerson 1e-3" "CPodes 1e-6" "CVODE 1e-4" "(/settings/8): simulation/accuracy = 1e-06" "visibility/grid 32" "contact/shell_spacing 5e-4" \
     "valid experiment"; do
@@ -492,7 +493,7 @@ expect_in "trial on a lab dataset" "$err" "this is a lab dataset"
 
 # --- a scene's accuracy lies in (0, 1): Simbody asserts it.
 accuracy_one=$tmp/accuracy_one.json
-sed 's/"accuracy": 5e-05/"accuracy": 1/' "$scene" >"$accuracy_one"
+sed 's/"accuracy": 1e-4/"accuracy": 1/' "$scene" >"$accuracy_one"
 run check "$accuracy_one"
 expect_status "check a scene with accuracy 1" 2
 expect_lines "check a scene with accuracy 1" "$err" 1
