@@ -94,7 +94,7 @@ TEST(StabilityFile, LoadsCasesWithTheirPatchesOverridesAndIntegrators) {
     EXPECT_EQ(s.params.simulation.integrator, tight.integrators[i]);
     EXPECT_EQ(s.params.simulation.time_limit, 1.5);
     EXPECT_EQ(s.params.contact.stiffness, 1e12);
-    EXPECT_EQ(s.params.simulation.accuracy, 1e-4);  // the scene's own, kept
+    EXPECT_EQ(s.params.simulation.accuracy, 3e-5);  // the scene's own, kept
     EXPECT_EQ(s.parts[1].friction, 0.4);
     EXPECT_EQ(s.parts[0].friction, 0.15);  // unpatched
   }

@@ -493,7 +493,7 @@ expect_in "trial on a lab dataset" "$err" "this is a lab dataset"
 
 # --- a scene's accuracy lies in (0, 1): Simbody asserts it.
 accuracy_one=$tmp/accuracy_one.json
-sed 's/"accuracy": 1e-4/"accuracy": 1/' "$scene" >"$accuracy_one"
+sed 's/"accuracy": 3e-5/"accuracy": 1/' "$scene" >"$accuracy_one"
 run check "$accuracy_one"
 expect_status "check a scene with accuracy 1" 2
 expect_lines "check a scene with accuracy 1" "$err" 1
