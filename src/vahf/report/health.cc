@@ -76,12 +76,10 @@ nlohmann::json HealthJson(const experiment::DesignRun& run) {
 std::string HealthMarkdown(const experiment::DesignRun& run) {
   std::string md =
       "\n### Numerical health\n\nPer condition: cycles ended by a numerical failure "
-      "(left "
-      "out of success rates), the part trial that came nearest its penetration bound "
-      "(a tenth of its part's smallest radial clearance): its part, its deepest "
-      "contact and its bound, and the "
-      "warnings of every accepted step (counts; the first occurrence is in "
-      "summary.json).\n\n"
+      "(left out of success rates), the part trial that came nearest its penetration "
+      "bound (a tenth of its part's smallest radial clearance): its part, its deepest "
+      "contact and its bound, and the warnings of every accepted step (counts; the "
+      "first occurrence is in summary.json).\n\n"
       "| condition | cycles | numerical failures | nearest its bound | deepest contact "
       "(um) | bound (um) | warnings |\n| --- | --- | --- | --- | --- | --- | --- |\n";
   const std::vector<ConditionHealth> health = Collect(run);
