@@ -736,5 +736,39 @@ TEST(SignedDistanceNear, AgreesWithTheWholeProfileInsideItsBox) {
   EXPECT_EQ(wall.edge(0).a, Eigen::Vector2d(kHole, -0.001));
 }
 
+// The load's direction inside a solid (LoadNormal) at the cylinder's top
+// corner (r = R, z = H), whose medial axis is r - R = z - H: on the axis the
+// bisector; off it, the nearest face's normal blended in with weight
+// s(t) = 3 t^2 - 2 t^3, t = 1 - (depth difference) / band; the nearest
+// face's alone past the band, and with band 0; the same from the near edges
+// of a box about the point (NearEdges) as from the whole profile.
+TEST(SignedDistanceLoadNormal, BlendsAcrossTheMedialAxisOfACorner) {
+  const SignedDistance f(Cylinder());
+  const double band = 1e-6, depth = 3e-6;
+  const auto at = [](double r, double z) { return Polar(r, 0.3, z); };
+  const Eigen::Vector3d radial = Radial(0.3), up(0, 0, 1);
+  // On the axis: the bisector.
+  const Eigen::Vector3d p = at(kR - depth, kH - depth);
+  EXPECT_LT((f.LoadNormal(p, f.At(p), band) - (radial + up).normalized()).norm(), 1e-9);
+  for (double u : {0.1e-6, 0.4e-6, 0.8e-6}) {
+    // Nearer the top by u: the side's direction weighs s(1 - u / band).
+    const Eigen::Vector3d q = at(kR - depth, kH - depth + u);
+    const Distance d = f.At(q);
+    ASSERT_LT((d.normal - up).norm(), 1e-12);
+    const double t = 1 - u / band, w = t * t * (3 - 2 * t);
+    EXPECT_LT((f.LoadNormal(q, d, band) - (up + w * radial).normalized()).norm(), 1e-9)
+        << u;
+    const NearEdges near = f.Near({kR - 2 * depth, kR, kH - 2 * depth, kH});
+    ASSERT_GE(near.count(), 0);
+    EXPECT_EQ(near.LoadNormal(q, near.At(q), band), f.LoadNormal(q, d, band)) << u;
+  }
+  // Past the band, with band 0, and outside: the nearest face's normal.
+  const Eigen::Vector3d past = at(kR - depth, kH - depth + 1.5 * band);
+  EXPECT_EQ(f.LoadNormal(past, f.At(past), band), f.At(past).normal);
+  EXPECT_EQ(f.LoadNormal(p, f.At(p), 0.0), f.At(p).normal);
+  const Eigen::Vector3d outside = at(kR + depth, kH + depth);
+  EXPECT_EQ(f.LoadNormal(outside, f.At(outside), band), f.At(outside).normal);
+}
+
 }  // namespace
 }  // namespace vahf::contact

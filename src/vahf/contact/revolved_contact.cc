@@ -84,14 +84,15 @@ void RevolvedContact::IntegrateArc(const Pass& pass, const PlacedCircle& circle,
     const double x = -d.distance;
     if (!(x > 0)) return x;
     const Eigen::Vector3d r = r_world_moving * (pass.field_to_moving * p);
-    const PointLoad point{r,
-                          m.velocity + m.angular_velocity.cross(r),
-                          sign * (pass.field_to_world * d.normal),
-                          x,
-                          true,
-                          length,
-                          pass.mu,
-                          pass.moving_rim ? PointFrame::kMoving : PointFrame::kFixed};
+    const PointLoad point{
+        r,
+        m.velocity + m.angular_velocity.cross(r),
+        sign * (pass.field_to_world * solid.LoadNormal(p, d, params_.edge_blend)),
+        x,
+        true,
+        length,
+        pass.mu,
+        pass.moving_rim ? PointFrame::kMoving : PointFrame::kFixed};
     if (AddPointLoad(params_, point, m.angular_velocity, out, jacobian))
       ++out->rim_points_in_contact;
     return x;

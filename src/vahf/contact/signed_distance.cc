@@ -144,6 +144,13 @@ bool SignedDistance::FartherThan(const Eigen::Vector3d& p, double radius) const 
   return std::sqrt(best) > radius;
 }
 
+Eigen::Vector3d SignedDistance::LoadNormal(const Eigen::Vector3d& p, const Distance& d,
+                                           double band) const {
+  if (is_box_ || !(band > 0) || !(d.distance < 0)) return d.normal;
+  return detail::BlendedNormal(p, d, band, surface_.begin(), surface_.end(),
+                               [](const Edge& e) -> const ProfileEdge& { return e; });
+}
+
 namespace {
 
 // Whether the segment a + t ab, t in [0, 1], meets the closed box [lo, hi]

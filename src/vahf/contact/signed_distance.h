@@ -61,6 +61,11 @@ class NearEdges {
   // given, gains the edges examined, and `meridian` is set to (|p_xy|, p_z).
   Distance At(const Eigen::Vector3d& p, std::uint64_t* edges = nullptr,
               Eigen::Vector2d* meridian = nullptr) const;
+  // The direction of a contact load at p inside the solid, d = At(p): d's
+  // normal, blended across the solid's medial axis (SignedDistance::
+  // LoadNormal).
+  Eigen::Vector3d LoadNormal(const Eigen::Vector3d& p, const Distance& d,
+                             double band) const;
   // The edges kept, in the profile's order; -1: all of them (not listed).
   int count() const { return count_; }
   const ProfileEdge& edge(int k) const { return *edges_[k]; }
@@ -89,6 +94,19 @@ class SignedDistance {
   // within radius: the broad phase's test (a sphere of that radius about p
   // holds no point of the solid).
   bool FartherThan(const Eigen::Vector3d& p, double radius) const;
+  // The direction of a contact load at p strictly inside the solid, d =
+  // At(p). Inside a corner where two faces meet at an angle (a sharp edge of
+  // the part), the nearest face changes across the corner's medial axis and
+  // d's normal jumps there, by the corner's turn: a load along it would jump
+  // with position, which no integrator steps across. So each surface edge
+  // whose distance d_e is within `band` of the depth -d.distance adds its
+  // direction (from p to its nearest point) with the weight s(t), t = 1 -
+  // (d_e + d.distance) / band, s(t) = 3 t^2 - 2 t^3 (C1, 1 for the nearest):
+  // equal halves on the axis, the nearest face's alone `band` of depth
+  // difference from it. The depth stays exact. A box, a point outside, or
+  // band <= 0: d's normal.
+  Eigen::Vector3d LoadNormal(const Eigen::Vector3d& p, const Distance& d,
+                             double band) const;
   // The contact query: At(p) when p is strictly inside the solid, nothing
   // otherwise. One inside test and, only for points inside, one distance pass.
   // `edges`, when given, gains the number of profile edges the two examined:
@@ -181,7 +199,43 @@ inline Distance FromNearest(const Eigen::Vector3d& p, double r, const Eigen::Vec
           Eigen::Vector3d(n2.x() * radial.x(), n2.x() * radial.y(), n2.y())};
 }
 
+// LoadNormal over the edges [first, last) (pointers to edges, or edges):
+// each edge's direction from q = (|p_xy|, p_z) to its nearest point, weighed
+// by s(t), summed, normalized and turned into p's meridian half-plane; d's
+// normal when no edge weighs.
+template <typename It, typename Deref>
+Eigen::Vector3d BlendedNormal(const Eigen::Vector3d& p, const Distance& d, double band,
+                              It first, It last, Deref edge_of) {
+  const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+  const Eigen::Vector2d q(r, p.z());
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (It it = first; it != last; ++it) {
+    const ProfileEdge& e = edge_of(*it);
+    const double s = std::clamp((q - e.a).dot(e.ab) / e.ab2, 0.0, 1.0);
+    const Eigen::Vector2d to = e.a + s * e.ab - q;
+    const double de = to.norm();
+    const double t = std::min(1.0, 1.0 - (de + d.distance) / band);
+    if (!(t > 0) || !(de > 1e-12)) continue;
+    sum += t * t * (3 - 2 * t) / de * to;
+  }
+  const double norm = sum.norm();
+  if (!(norm > 0)) return d.normal;
+  const Eigen::Vector2d n2 = sum / norm;
+  const Eigen::Vector2d radial =
+      r > 0 ? Eigen::Vector2d(p.x() / r, p.y() / r) : Eigen::Vector2d(1, 0);
+  return Eigen::Vector3d(n2.x() * radial.x(), n2.x() * radial.y(), n2.y());
+}
+
 }  // namespace detail
+
+inline Eigen::Vector3d NearEdges::LoadNormal(const Eigen::Vector3d& p, const Distance& d,
+                                             double band) const {
+  if (count_ < 0) return solid_->LoadNormal(p, d, band);
+  if (!(band > 0) || !(d.distance < 0)) return d.normal;
+  return detail::BlendedNormal(
+      p, d, band, edges_, edges_ + count_,
+      [](const ProfileEdge* e) -> const ProfileEdge& { return *e; });
+}
 
 // Defined here so that a rim's queries (rim_arcs.cc) compile it in.
 inline Distance NearEdges::At(const Eigen::Vector3d& p, std::uint64_t* edges,

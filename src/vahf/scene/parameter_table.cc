@@ -173,6 +173,10 @@ std::vector<ParamSpec> MakeTable() {
       {"contact", "onset_depth", "m", R::kClosed, 1e-9, 1e-2,
        "depth of the C1 quadratic onset of the normal law",
        VAHF_REAL(contact.onset_depth)},
+      {"contact", "edge_blend", "m", R::kClosed, 0, 1e-3,
+       "depth difference over which a load's direction blends across a sharp edge's "
+       "medial axis (resolving, revolved pairs)",
+       VAHF_REAL(contact.edge_blend)},
       {"contact", "dissipation", "s/m", R::kClosed, 0, 1e3, "Hunt-Crossley dissipation",
        VAHF_REAL(contact.dissipation)},
       {"contact", "friction_transition_speed", "m/s", R::kClosed, 1e-6, 1,
