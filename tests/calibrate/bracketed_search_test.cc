@@ -69,12 +69,14 @@ TEST(BracketedSearch, ReusesABracketThatStillHolds) {
     ++calls;
     return std::pow(std::log(x / 37.0), 2);
   };
-  const BracketedSearch s = MinimizeBracketed(cost, 1, 400, 30, 0.01, 50, {{20.0, 30.0, 80.0}});
+  const BracketedSearch s =
+      MinimizeBracketed(cost, 1, 400, 30, 0.01, 50, {{20.0, 30.0, 80.0}});
   EXPECT_NE(s.log.find("bracket from the last round"), std::string::npos) << s.log;
   EXPECT_EQ(s.log.find("walk:"), std::string::npos) << s.log;
   EXPECT_NEAR(s.estimate, 37.0, 0.4);
   // A hint that no longer brackets is dropped for a walk.
-  const BracketedSearch t = MinimizeBracketed(cost, 1, 400, 30, 0.01, 50, {{1.0, 2.0, 3.0}});
+  const BracketedSearch t =
+      MinimizeBracketed(cost, 1, 400, 30, 0.01, 50, {{1.0, 2.0, 3.0}});
   EXPECT_NE(t.log.find("walk:"), std::string::npos) << t.log;
   EXPECT_NEAR(t.estimate, 37.0, 0.4);
 }

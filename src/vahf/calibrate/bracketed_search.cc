@@ -45,7 +45,8 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
                                   int max_iterations,
                                   const std::optional<std::array<double, 3>>& hint) {
   if (!(lower < upper && lower <= start && start <= upper && tolerance > 0))
-    throw std::invalid_argument("MinimizeBracketed: needs lower <= start <= upper, tolerance > 0");
+    throw std::invalid_argument(
+        "MinimizeBracketed: needs lower <= start <= upper, tolerance > 0");
   const Scale scale{lower > 0};
   const double lo = scale.ToU(lower), hi = scale.ToU(upper);
   BracketedSearch out;
@@ -85,7 +86,8 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
     b.m = seen.begin();
     for (auto it = seen.begin(); it != seen.end(); ++it)
       if (it->second < b.m->second ||
-          (it->second == b.m->second && std::fabs(it->first - u0) < std::fabs(b.m->first - u0)))
+          (it->second == b.m->second &&
+           std::fabs(it->first - u0) < std::fabs(b.m->first - u0)))
         b.m = it;
     for (auto it = b.m; it != seen.begin();) {
       --it;
@@ -110,11 +112,13 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
   };
   bool hinted = false;
   if (hint) {
-    const double a = scale.ToU((*hint)[0]), m = scale.ToU((*hint)[1]), c = scale.ToU((*hint)[2]);
+    const double a = scale.ToU((*hint)[0]), m = scale.ToU((*hint)[1]),
+                 c = scale.ToU((*hint)[2]);
     const double fm = f(m);
     hinted = a < m && m < c && fm < f(a) && fm < f(c);
-    if (hinted) out.log += fmt::format("bracket from the last round: [{:.6g}, {:.6g}, {:.6g}]\n",
-                                       (*hint)[0], (*hint)[1], (*hint)[2]);
+    if (hinted)
+      out.log += fmt::format("bracket from the last round: [{:.6g}, {:.6g}, {:.6g}]\n",
+                             (*hint)[0], (*hint)[1], (*hint)[2]);
   }
   // How narrow a bracket must get, in u, around `u`.
   const auto narrow_enough = [&](double a, double c, double u) {
@@ -174,7 +178,8 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
   // points.
   const GslHandlerOff handler;
   std::unique_ptr<gsl_min_fminimizer, decltype(&gsl_min_fminimizer_free)> s(
-      gsl_min_fminimizer_alloc(gsl_min_fminimizer_goldensection), &gsl_min_fminimizer_free);
+      gsl_min_fminimizer_alloc(gsl_min_fminimizer_goldensection),
+      &gsl_min_fminimizer_free);
   // An exception (an interrupt, an input error at a new point) must not
   // unwind through GSL's C frames: it is kept and rethrown here.
   using Cost = decltype(f);
@@ -193,8 +198,9 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
     }
   };
   fn.params = &call;
-  if (gsl_min_fminimizer_set_with_values(s.get(), &fn, b.m->first, b.m->second, b.a->first,
-                                         b.a->second, b.c->first, b.c->second) != GSL_SUCCESS)
+  if (gsl_min_fminimizer_set_with_values(s.get(), &fn, b.m->first, b.m->second,
+                                         b.a->first, b.a->second, b.c->first,
+                                         b.c->second) != GSL_SUCCESS)
     throw std::logic_error("MinimizeBracketed: GSL refused a strict bracket");
   auto narrow = [&] {
     return narrow_enough(gsl_min_fminimizer_x_lower(s.get()),

@@ -21,8 +21,8 @@
 // or the walk reaches a bound. Ties (a plateau) are walked across, since GSL
 // needs f(m) < f(a) and f(m) < f(b). When one side stays flat up to its bound,
 // the gap between the other side's higher point and the flat run (which the
-// growing steps may have jumped, with a narrow dip in it) is bisected. For a parameter whose lower bound is
-// positive the search runs in log(x), where a factor is a step.
+// growing steps may have jumped, with a narrow dip in it) is bisected. For a parameter
+// whose lower bound is positive the search runs in log(x), where a factor is a step.
 #pragma once
 
 #include <array>
@@ -33,17 +33,17 @@
 namespace vahf::calibrate {
 
 struct BracketedSearch {
-  double estimate = 0;      // the lowest cost's parameter value
-  double cost = 0;          // there
-  bool converged = false;   // the bracket closed to the tolerance
+  double estimate = 0;     // the lowest cost's parameter value
+  double cost = 0;         // there
+  bool converged = false;  // the bracket closed to the tolerance
   // No higher cost on one side up to its bound (flat or falling there): the
   // minimum is not bracketed, and `estimate` is the lowest cost seen.
   bool at_bound = false;
-  int iterations = 0;       // golden-section iterations
+  int iterations = 0;  // golden-section iterations
   // The final bracket (lower, best, upper), in the parameter's values: a
   // later search with other weights may start from it.
   std::array<double, 3> bracket = {0, 0, 0};
-  std::string log;          // one line per walk step and iteration
+  std::string log;  // one line per walk step and iteration
 };
 
 // Minimises `cost` over [lower, upper] from `start`. `hint`, if given and

@@ -36,15 +36,23 @@ class VirtualModel {
  public:
   VirtualModel(const scene::Scene& scene, const data::LabDataset& lab,
                const CalibrationSpec& spec, const StageSpec& stage,
-               const std::vector<Target>& targets,
-               const std::string& experiment_file, std::uint64_t seed, int trials,
-               const experiment::RunnerOptions& options, const CalibrationProgress& progress)
-      : scene_(scene), lab_(lab), spec_(spec), stage_(stage), targets_(targets), file_(experiment_file),
-        seed_(seed), trials_(trials), options_(options), progress_(progress) {
+               const std::vector<Target>& targets, const std::string& experiment_file,
+               std::uint64_t seed, int trials, const experiment::RunnerOptions& options,
+               const CalibrationProgress& progress)
+      : scene_(scene),
+        lab_(lab),
+        spec_(spec),
+        stage_(stage),
+        targets_(targets),
+        file_(experiment_file),
+        seed_(seed),
+        trials_(trials),
+        options_(options),
+        progress_(progress) {
     options_.progress = false;  // one line per evaluation instead (progress_)
     for (const Target& t : targets_)
-      if (t.spec.segment > 0 &&
-          std::find(segments_.begin(), segments_.end(), t.spec.segment - 1) == segments_.end())
+      if (t.spec.segment > 0 && std::find(segments_.begin(), segments_.end(),
+                                          t.spec.segment - 1) == segments_.end())
         segments_.push_back(t.spec.segment - 1);
     std::sort(segments_.begin(), segments_.end());
   }
@@ -57,23 +65,25 @@ class VirtualModel {
     const scene::Scene s = WithParameters(scene_, stage_.parameters, key, file_);
     std::vector<Statistic> stats;
     if (segments_.empty()) {
-      const experiment::DesignRun run = experiment::RunDesign(LabConditions(s, lab_, trials_),
-                                                              trials_, seed_, false, options_);
+      const experiment::DesignRun run = experiment::RunDesign(
+          LabConditions(s, lab_, trials_), trials_, seed_, false, options_);
       for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, run));
     } else {
       // The scene's operator works the hour; only the segments the targets
       // name are run (the pilot, which measures the work rate, always is).
       const experiment::FatigueRun f =
-          experiment::RunFatigue(std::make_shared<const scene::Scene>(s), spec_.fatigue, trials_,
-                                 seed_, options_, options_, segments_);
-      for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, f.run, f.segments));
+          experiment::RunFatigue(std::make_shared<const scene::Scene>(s), spec_.fatigue,
+                                 trials_, seed_, options_, options_, segments_);
+      for (const Target& t : targets_)
+        stats.push_back(VirtualStatistic(t, f.run, f.segments));
     }
     ++evaluations_;
     if (progress_)
       progress_(fmt::format(
           "calibrate: evaluation {} at {} ({:.1f} s)", evaluations_,
           VectorText(stage_.parameters, x),
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+              .count()));
     return cache_.emplace(std::move(key), std::move(stats)).first->second;
   }
 
@@ -91,7 +101,8 @@ class VirtualModel {
   experiment::RunnerOptions options_;
   CalibrationProgress progress_;
   std::map<std::vector<double>, std::vector<Statistic>> cache_;
-  std::vector<int> segments_;  // 0-based segments the targets read; empty: no fatigue design
+  std::vector<int>
+      segments_;  // 0-based segments the targets read; empty: no fatigue design
   int evaluations_ = 0;
 };
 
@@ -112,15 +123,16 @@ struct Residual {
 };
 
 // sigma_i = sqrt(lab variance + virtual variance) at the virtual statistics `v`.
-std::vector<double> Weights(const std::vector<Target>& targets, const std::vector<Statistic>& v,
-                            const std::string& where) {
+std::vector<double> Weights(const std::vector<Target>& targets,
+                            const std::vector<Statistic>& v, const std::string& where) {
   std::vector<double> sigma;
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const double var = LabVariance(targets[i].lab, v[i]) + v[i].variance;
     if (!std::isfinite(v[i].value) || !(std::isfinite(var) && var > 0))
       throw std::runtime_error(fmt::format(
           "calibration: the virtual design at {} gives no usable {} ({} samples): "
-          "too few completed trials to weigh this target; widen `trials` or change the start",
+          "too few completed trials to weigh this target; widen `trials` or change the "
+          "start",
           where, targets[i].label, v[i].n));
     sigma.push_back(std::sqrt(var));
   }
@@ -135,7 +147,8 @@ ceres::LossFunction* MakeLoss(const CalibrationSpec& spec) {
 
 }  // namespace
 
-scene::Scene WithParameters(const scene::Scene& scene, const std::vector<ParameterSpec>& params,
+scene::Scene WithParameters(const scene::Scene& scene,
+                            const std::vector<ParameterSpec>& params,
                             const std::vector<double>& values,
                             const std::string& experiment_file) {
   VAHF_CHECK(params.size() == values.size(), "one value per fitted parameter");
@@ -177,9 +190,10 @@ double Cost(VirtualModel& model, const std::vector<Target>& targets,
 }
 
 // The stage's problem at `x`: one residual block per target, bounds.
-void BuildProblem(ceres::Problem* problem, VirtualModel* model, const CalibrationSpec& spec,
-                  const StageSpec& stage, const std::vector<Target>& targets,
-                  const std::vector<double>& sigma, double* x) {
+void BuildProblem(ceres::Problem* problem, VirtualModel* model,
+                  const CalibrationSpec& spec, const StageSpec& stage,
+                  const std::vector<Target>& targets, const std::vector<double>& sigma,
+                  double* x) {
   ceres::NumericDiffOptions diff;
   diff.relative_step_size = spec.relative_step;
   const int p = static_cast<int>(stage.parameters.size());
@@ -191,8 +205,10 @@ void BuildProblem(ceres::Problem* problem, VirtualModel* model, const Calibratio
     problem->AddResidualBlock(cost, MakeLoss(spec), x);
   }
   for (int i = 0; i < p; ++i) {
-    problem->SetParameterLowerBound(x, i, stage.parameters[static_cast<std::size_t>(i)].lower);
-    problem->SetParameterUpperBound(x, i, stage.parameters[static_cast<std::size_t>(i)].upper);
+    problem->SetParameterLowerBound(x, i,
+                                    stage.parameters[static_cast<std::size_t>(i)].lower);
+    problem->SetParameterUpperBound(x, i,
+                                    stage.parameters[static_cast<std::size_t>(i)].upper);
   }
 }
 
@@ -208,10 +224,12 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
   const int p = static_cast<int>(stage.parameters.size());
   const int m = static_cast<int>(targets.size());
   VAHF_CHECK(p >= 1 && m >= 1, "a calibration fits at least one parameter to one target");
-  VAHF_CHECK(stage.solver != "golden_section" || p == 1, "the golden_section solver fits one parameter");
-  VirtualModel model(scene, lab, spec, stage, targets, experiment_file, seed, trials, options,
-                     progress);
-  const std::string prefix = stage.name.empty() ? "calibrate" : "calibrate (" + stage.name + ")";
+  VAHF_CHECK(stage.solver != "golden_section" || p == 1,
+             "the golden_section solver fits one parameter");
+  VirtualModel model(scene, lab, spec, stage, targets, experiment_file, seed, trials,
+                     options, progress);
+  const std::string prefix =
+      stage.name.empty() ? "calibrate" : "calibrate (" + stage.name + ")";
 
   std::vector<double> x;
   for (const ParameterSpec& s : stage.parameters) x.push_back(s.start);
@@ -220,7 +238,8 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
   CalibrationResult out;
   out.stage = stage.name;
   out.solver = stage.solver;
-  std::vector<double> sigma = Weights(targets, at_start, VectorText(stage.parameters, x.data()));
+  std::vector<double> sigma =
+      Weights(targets, at_start, VectorText(stage.parameters, x.data()));
   std::optional<std::array<double, 3>> bracket;
   for (int round = 1; round <= kMaxRounds; ++round) {
     out.rounds = round;
@@ -230,8 +249,8 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
     if (stage.solver == "golden_section") {
       const ParameterSpec& ps = stage.parameters[0];
       const BracketedSearch search = MinimizeBracketed(
-          [&](double v) { return Cost(model, targets, sigma, spec, v); }, ps.lower, ps.upper,
-          x[0], spec.tolerance, spec.max_iterations, bracket);
+          [&](double v) { return Cost(model, targets, sigma, spec, v); }, ps.lower,
+          ps.upper, x[0], spec.tolerance, spec.max_iterations, bracket);
       x[0] = search.estimate;
       bracket = search.bracket;
       out.search_log += fmt::format("round {}:\n{}", round, search.log);
@@ -240,8 +259,9 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
       brief = fmt::format(
           "golden section (GSL): {} iterations, cost {:.6g}, bracket [{:.6g}, {:.6g}]{}",
           search.iterations, search.cost, search.bracket[0], search.bracket[2],
-          search.at_bound ? ", the cost still falls at a bound"
-                          : search.converged ? ", converged" : ", not converged");
+          search.at_bound    ? ", the cost still falls at a bound"
+          : search.converged ? ", converged"
+                             : ", not converged");
     } else {
       ceres::Solver::Options solver;
       solver.linear_solver_type = ceres::DENSE_QR;
@@ -267,7 +287,8 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
     const std::vector<double> refit =
         Weights(targets, at_fit, VectorText(stage.parameters, x.data()));
     bool stable = true;
-    for (int i = 0; i < m; ++i) stable = stable && std::abs(refit[i] / sigma[i] - 1) < 0.1;
+    for (int i = 0; i < m; ++i)
+      stable = stable && std::abs(refit[i] / sigma[i] - 1) < 0.1;
     if (!stable && round < kMaxRounds) {
       sigma = refit;
       continue;
@@ -309,7 +330,8 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
     out.targets.push_back(t);
   }
   out.evaluations = model.evaluations();
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  out.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return out;
 }
 
@@ -317,19 +339,19 @@ scene::Scene WithEstimates(const scene::Scene& scene,
                            const std::vector<CalibrationResult>& stages) {
   scene::Scene out = scene;
   for (const CalibrationResult& r : stages)
-    for (const FittedParameter& f : r.parameters) scene::FindParam(f.name)->real(out.params) = f.estimate;
+    for (const FittedParameter& f : r.parameters)
+      scene::FindParam(f.name)->real(out.params) = f.estimate;
   return out;
 }
 
-std::vector<CalibrationResult> Calibrate(const scene::Scene& scene, const data::LabDataset& lab,
-                                         const CalibrationSpec& spec,
-                                         const std::string& experiment_file, std::uint64_t seed,
-                                         int trials, const experiment::RunnerOptions& options,
-                                         const CalibrationProgress& progress) {
+std::vector<CalibrationResult> Calibrate(
+    const scene::Scene& scene, const data::LabDataset& lab, const CalibrationSpec& spec,
+    const std::string& experiment_file, std::uint64_t seed, int trials,
+    const experiment::RunnerOptions& options, const CalibrationProgress& progress) {
   std::vector<CalibrationResult> out;
   for (const StageSpec& stage : spec.stages)
-    out.push_back(CalibrateStage(WithEstimates(scene, out), lab, spec, stage, experiment_file,
-                                 seed, trials, options, progress));
+    out.push_back(CalibrateStage(WithEstimates(scene, out), lab, spec, stage,
+                                 experiment_file, seed, trials, options, progress));
   return out;
 }
 

@@ -52,7 +52,8 @@ inline constexpr int kMaxRounds = 3;
 // The scene with `values` (one per spec parameter) set. Values that break a
 // rule tying parameters together (D1 < D2 < D3, say) are an InputError naming
 // `experiment_file`'s parameters: their bounds admit a scene that is not one.
-scene::Scene WithParameters(const scene::Scene& scene, const std::vector<ParameterSpec>& params,
+scene::Scene WithParameters(const scene::Scene& scene,
+                            const std::vector<ParameterSpec>& params,
                             const std::vector<double>& values,
                             const std::string& experiment_file);
 
@@ -66,8 +67,8 @@ struct FittedParameter {
 
 struct FittedTarget {
   Target target;
-  Statistic start;     // virtual, at the start vector
-  Statistic fitted;    // virtual, at the estimate
+  Statistic start;      // virtual, at the start vector
+  Statistic fitted;     // virtual, at the estimate
   double residual = 0;  // (fitted - lab) / sigma at the estimate
 };
 
@@ -81,8 +82,8 @@ struct CalibrationResult {
   std::vector<FittedTarget> targets;
   bool converged = false;  // Ceres reported convergence in the last round
   int rounds = 0;
-  int evaluations = 0;     // virtual designs run (each `trials` cycles per condition)
-  double final_cost = 0;   // 1/2 sum of robustified squared residuals
+  int evaluations = 0;      // virtual designs run (each `trials` cycles per condition)
+  double final_cost = 0;    // 1/2 sum of robustified squared residuals
   std::string ceres_brief;  // Summary::BriefReport of each round (LM), or the search's
   std::string ceres_full;   // Summary::FullReport of the last round (LM)
   std::string search_log;   // golden_section: the walk and each iteration, every round
@@ -103,11 +104,10 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
                                  const CalibrationProgress& progress = {});
 
 // Every stage in order, each on the scene with the earlier stages' estimates.
-std::vector<CalibrationResult> Calibrate(const scene::Scene& scene, const data::LabDataset& lab,
-                                         const CalibrationSpec& spec,
-                                         const std::string& experiment_file, std::uint64_t seed,
-                                         int trials, const experiment::RunnerOptions& options,
-                                         const CalibrationProgress& progress = {});
+std::vector<CalibrationResult> Calibrate(
+    const scene::Scene& scene, const data::LabDataset& lab, const CalibrationSpec& spec,
+    const std::string& experiment_file, std::uint64_t seed, int trials,
+    const experiment::RunnerOptions& options, const CalibrationProgress& progress = {});
 
 // `scene` with every stage's estimates set.
 scene::Scene WithEstimates(const scene::Scene& scene,

@@ -45,12 +45,13 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
   nlohmann::json stages_json = nlohmann::json::array();
   std::string md = fmt::format(
       "## Calibration against {}\n\n{}\n\nLab dataset `{}`: {} (provenance: {}). "
-      "Each residual is whitened by the lab's and the virtual statistic's standard errors; "
+      "Each residual is whitened by the lab's and the virtual statistic's standard "
+      "errors; "
       "{} loss (scale {} sd); central differences over {} of each value on common random "
       "numbers; {} design evaluations in {} stage(s).{}\n",
       lab.name, file.description, file.calibration.lab_path, lab.description,
-      lab.provenance.value("source", ""), d.loss, d.loss_scale, d.relative_step, evaluations,
-      stages.size(),
+      lab.provenance.value("source", ""), d.loss, d.loss_scale, d.relative_step,
+      evaluations, stages.size(),
       stages.size() > 1
           ? " Each stage starts from the scene with the earlier stages' estimates; its "
             "intervals are conditional on them (an earlier estimate's uncertainty is not "
@@ -62,19 +63,21 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
     const calibrate::CalibrationResult& r = stages[k];
     const scene::CalibrationStage& spec = d.stages[k];
     const std::string stage = r.stage.empty() ? "1" : r.stage;
-    const std::string solver =
-        r.solver == "golden_section"
-            ? fmt::format("a bracketed golden-section search (GSL) to {} of the value, then Ceres' "
-                          "covariance at the estimate",
-                          d.tolerance)
-            : "Ceres' Levenberg-Marquardt";
+    const std::string solver = r.solver == "golden_section"
+                                   ? fmt::format(
+                                         "a bracketed golden-section search (GSL) to {} "
+                                         "of the value, then Ceres' "
+                                         "covariance at the estimate",
+                                         d.tolerance)
+                                   : "Ceres' Levenberg-Marquardt";
     md += fmt::format(
         "\n### {}\n\n{} parameter(s) to {} target(s) by {}; {} design evaluations, {} "
         "round(s) of re-weighting, {:.0f} s; {}.\n\n"
-        "| parameter | unit | the scene's value | start | bounds | estimate | standard error | "
+        "| parameter | unit | the scene's value | start | bounds | estimate | standard "
+        "error | "
         "95 % interval |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n",
-        r.stage.empty() ? "Fit" : "Stage: " + r.stage, r.parameters.size(), r.targets.size(),
-        solver, r.evaluations, r.rounds, r.seconds,
+        r.stage.empty() ? "Fit" : "Stage: " + r.stage, r.parameters.size(),
+        r.targets.size(), solver, r.evaluations, r.rounds, r.seconds,
         r.converged ? "converged" : "**the solver did not report convergence**");
     for (std::size_t i = 0; i < r.parameters.size(); ++i) {
       const calibrate::FittedParameter& p = r.parameters[i];
@@ -95,29 +98,32 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
                              {"ci", {p.ci.lower, p.ci.upper}},
                              {"at_bound", at_bound}});
       md += fmt::format("| `{}` | {} | {} | {} | [{}, {}] | **{}** | {} | [{}, {}]{} |\n",
-                        p.name, unit, Number(p.scene_value), Number(p.start), Number(ps.lower),
-                        Number(ps.upper),
-                        Number(p.estimate), Number(p.standard_error), Number(p.ci.lower),
-                        Number(p.ci.upper), at_bound ? " (at a bound)" : "");
+                        p.name, unit, Number(p.scene_value), Number(p.start),
+                        Number(ps.lower), Number(ps.upper), Number(p.estimate),
+                        Number(p.standard_error), Number(p.ci.lower), Number(p.ci.upper),
+                        at_bound ? " (at a bound)" : "");
     }
     if (!r.covariance_ok)
-      md += "\nThe covariance is rank deficient (the targets do not move within a "
-            "central-difference step of the estimate, or a parameter they do not "
-            "determine): no standard errors.\n";
+      md +=
+          "\nThe covariance is rank deficient (the targets do not move within a "
+          "central-difference step of the estimate, or a parameter they do not "
+          "determine): no standard errors.\n";
 
-    md += "\n| target | lab (se, n) | virtual at start (se) | virtual at the fit (se) | "
-          "residual (sd) |\n| --- | --- | --- | --- | --- |\n";
+    md +=
+        "\n| target | lab (se, n) | virtual at start (se) | virtual at the fit (se) | "
+        "residual (sd) |\n| --- | --- | --- | --- | --- |\n";
     for (const calibrate::FittedTarget& t : r.targets) {
       const double lab_var = calibrate::LabVariance(t.target.lab, t.fitted);
-      targets.AddRow({stage, t.target.label, t.target.unit, t.target.lab.value, Sd(lab_var),
-                      std::int64_t{t.target.lab.n}, t.start.value, Sd(t.start.variance),
-                      t.fitted.value, Sd(t.fitted.variance), std::int64_t{t.fitted.n},
-                      t.residual});
-      md += fmt::format("| {} ({}) | {} ({}{}, {}) | {} ({}) | {} ({}) | {:.2f} |\n",
-                        t.target.label, t.target.unit, Number(t.target.lab.value),
-                        Number(Sd(lab_var)), t.target.lab.single_draw ? ": one draw" : "",
-                        t.target.lab.n, Number(t.start.value), Number(Sd(t.start.variance)),
-                        Number(t.fitted.value), Number(Sd(t.fitted.variance)), t.residual);
+      targets.AddRow({stage, t.target.label, t.target.unit, t.target.lab.value,
+                      Sd(lab_var), std::int64_t{t.target.lab.n}, t.start.value,
+                      Sd(t.start.variance), t.fitted.value, Sd(t.fitted.variance),
+                      std::int64_t{t.fitted.n}, t.residual});
+      md +=
+          fmt::format("| {} ({}) | {} ({}{}, {}) | {} ({}) | {} ({}) | {:.2f} |\n",
+                      t.target.label, t.target.unit, Number(t.target.lab.value),
+                      Number(Sd(lab_var)), t.target.lab.single_draw ? ": one draw" : "",
+                      t.target.lab.n, Number(t.start.value), Number(Sd(t.start.variance)),
+                      Number(t.fitted.value), Number(Sd(t.fitted.variance)), t.residual);
       // x, label, lab, lab half-width, start, start hw, fit, fit hw (95 %)
       data += fmt::format("{} \"{}\" {} {} {} {} {} {}\n", row++, t.target.label,
                           t.target.lab.value, 1.96 * Sd(lab_var), t.start.value,
@@ -126,18 +132,21 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
     }
     md += fmt::format("\nSolver:\n\n```\n{}```\n", r.ceres_brief);
     if (!r.search_log.empty())
-      md += fmt::format("\n<details><summary>The bracketed search, step by step</summary>"
-                        "\n\n```\n{}```\n\n</details>\n",
-                        r.search_log);
+      md += fmt::format(
+          "\n<details><summary>The bracketed search, step by step</summary>"
+          "\n\n```\n{}```\n\n</details>\n",
+          r.search_log);
     if (!r.ceres_full.empty())
-      md += fmt::format("\n<details><summary>Ceres' full report (last round)</summary>"
-                        "\n\n```\n{}```\n\n</details>\n",
-                        r.ceres_full);
+      md += fmt::format(
+          "\n<details><summary>Ceres' full report (last round)</summary>"
+          "\n\n```\n{}```\n\n</details>\n",
+          r.ceres_full);
     for (std::size_t i = 0; i < r.parameters.size(); ++i)
       for (std::size_t j = 0; j < r.parameters.size(); ++j)
-        covariance.AddRow({stage, r.parameters[i].name, r.parameters[j].name,
-                           static_cast<double>(r.covariance(static_cast<Eigen::Index>(i),
-                                                            static_cast<Eigen::Index>(j)))});
+        covariance.AddRow(
+            {stage, r.parameters[i].name, r.parameters[j].name,
+             static_cast<double>(r.covariance(static_cast<Eigen::Index>(i),
+                                              static_cast<Eigen::Index>(j)))});
     stages_json.push_back({{"stage", stage},
                            {"solver", r.solver},
                            {"converged", r.converged},
@@ -146,9 +155,10 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
                            {"rounds", r.rounds},
                            {"final_cost", r.final_cost}});
   }
-  md += fmt::format("\nThe fitted values are in `{}`, a parameter-override file: "
-                    "`vahf run EXPERIMENT --overrides {}` runs any experiment with them.\n\n",
-                    kOverridesFile, kOverridesFile);
+  md += fmt::format(
+      "\nThe fitted values are in `{}`, a parameter-override file: "
+      "`vahf run EXPERIMENT --overrides {}` runs any experiment with them.\n\n",
+      kOverridesFile, kOverridesFile);
 
   out.tables.emplace_back("calibrate_parameters.csv", std::move(params));
   out.tables.emplace_back("calibrate_targets.csv", std::move(targets));
@@ -166,7 +176,9 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
        "$d << EOD\n" + data +
            "EOD\nset title 'Lab against virtual, before and after the fit'\n"
            "set ylabel 'value (the target unit: s for times, 1 for rates)'\n"
-           "set xrange [-0.5:" + std::to_string(row) + "-0.5]\n"
+           "set xrange [-0.5:" +
+           std::to_string(row) +
+           "-0.5]\n"
            "set grid y\nset key outside bottom center horizontal\n"
            "plot $d using ($1-0.15):3:4:xtic(2) with yerrorbars pt 7 title 'lab', "
            "'' using 1:5:6 with yerrorbars pt 6 title 'virtual at start', "
