@@ -102,5 +102,54 @@ TEST(BracketedSearch, RefusesAStartOutsideTheBounds) {
                std::invalid_argument);
 }
 
+// The profile interval (ProfileBounds): of a whitened quadratic cost, 1/2
+// ((x - 37) / 2)^2, it is the normal interval 37 +- 1.96 * 2 to its
+// tolerance; of a step function, the steps within the rise; where the cost
+// stays within the rise up to a bound, that side is open.
+TEST(ProfileInterval, OfAQuadraticCostIsTheNormalInterval) {
+  const auto cost = [](double x) { return 0.5 * std::pow((x - 37.0) / 2.0, 2); };
+  const double rise = 0.5 * 3.841458820694124;
+  const ProfileInterval p = ProfileBounds(cost, 1, 400, 37, 0, rise, 0.05, 0.001);
+  EXPECT_FALSE(p.open_lower);
+  EXPECT_FALSE(p.open_upper);
+  EXPECT_NEAR(p.lower, 37 - 1.959964 * 2, 37 * 0.001) << p.log;
+  EXPECT_NEAR(p.upper, 37 + 1.959964 * 2, 37 * 0.001) << p.log;
+  EXPECT_LT(p.evaluations, 40);
+  // Linear search where the range is not positive: the same interval.
+  const auto shifted = [&](double x) { return cost(x + 37.0); };
+  const ProfileInterval q = ProfileBounds(shifted, -100, 100, 0, 0, rise, 0.05, 0.001);
+  EXPECT_NEAR(q.lower, -1.959964 * 2, 0.01) << q.log;
+  EXPECT_NEAR(q.upper, 1.959964 * 2, 0.01) << q.log;
+}
+
+TEST(ProfileInterval, OfAStepFunctionEndsAtItsSteps) {
+  // 0 on [20, 30), 1 on [10, 20) and [30, 40), 5 elsewhere: within the rise
+  // 1.92 of the minimum on [10, 40).
+  const auto cost = [](double x) {
+    return x >= 20 && x < 30 ? 0.0 : (x >= 10 && x < 40) ? 1.0 : 5.0;
+  };
+  const ProfileInterval p = ProfileBounds(cost, 1, 1000, 25, 0, 1.92, 0.05, 0.01);
+  EXPECT_NEAR(p.lower, 10, 0.2) << p.log;
+  EXPECT_NEAR(p.upper, 40, 0.5) << p.log;
+}
+
+TEST(ProfileInterval, IsOpenWhereTheCostStaysWithinTheRiseToABound) {
+  // Flat above 30 (a parameter the data stop seeing), rising below.
+  const auto cost = [](double x) {
+    return x >= 30 ? 0.0 : std::pow(std::log(30 / x), 2) * 50;
+  };
+  const ProfileInterval p = ProfileBounds(cost, 1, 400, 40, 0, 1.92, 0.05, 0.01);
+  EXPECT_TRUE(p.open_upper);
+  EXPECT_EQ(p.upper, 400);
+  EXPECT_FALSE(p.open_lower);
+  EXPECT_NEAR(p.lower, 30 * std::exp(-std::sqrt(1.92 / 50)), 0.3) << p.log;
+  // A non-finite cost counts as past the rise.
+  const auto broken = [](double x) { return x < 20 ? std::nan("") : 0.0; };
+  const ProfileInterval b = ProfileBounds(broken, 1, 400, 40, 0, 1.92, 0.05, 0.01);
+  EXPECT_NEAR(b.lower, 20, 0.3) << b.log;
+  EXPECT_THROW(ProfileBounds(cost, 1, 400, 500, 0, 1.92, 0.05, 0.01),
+               std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace vahf::calibrate

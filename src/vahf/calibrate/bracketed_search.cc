@@ -226,4 +226,62 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
   return out;
 }
 
+ProfileInterval ProfileBounds(const std::function<double(double)>& cost, double lower,
+                              double upper, double estimate, double cost_at_estimate,
+                              double rise, double first_step, double tolerance) {
+  if (!(lower <= estimate && estimate <= upper && rise > 0 && first_step > 0 &&
+        tolerance > 0))
+    throw std::invalid_argument(
+        "ProfileBounds: needs lower <= estimate <= upper and positive rise, step, "
+        "tolerance");
+  const Scale scale{lower > 0};
+  const double lo = scale.ToU(lower), hi = scale.ToU(upper), u0 = scale.ToU(estimate);
+  const double limit = cost_at_estimate + rise;
+  ProfileInterval out;
+  // Whether the cost at u is within the rise; the bounds at their exact x.
+  const auto inside = [&](double u) {
+    const double x = u <= lo ? lower : u >= hi ? upper : scale.ToX(u);
+    const double c = cost(x);
+    ++out.evaluations;
+    out.log += fmt::format("profile: cost {:.6g} at {:.6g}\n", c, x);
+    return std::isfinite(c) && c <= limit;
+  };
+  // In x, steps and the tolerance are fractions of the estimate's magnitude,
+  // or of a thousandth of the range about an estimate at or near 0.
+  const double magnitude = std::max(std::fabs(estimate), 1e-3 * (upper - lower));
+  const double step0 = scale.logs ? std::log1p(first_step) : first_step * magnitude;
+  const double width = scale.logs ? std::log1p(tolerance) : tolerance * magnitude;
+  // One side (dir -1 or +1): the end in u, and whether it is the bound.
+  const auto side = [&](int dir, bool* open) {
+    const double bound = dir < 0 ? lo : hi;
+    double in = u0, step = step0;
+    for (;;) {
+      const double u = dir < 0 ? std::max(in - step, lo) : std::min(in + step, hi);
+      if (u == in) {  // the estimate is at the bound
+        *open = true;
+        return bound;
+      }
+      if (!inside(u)) {
+        double out_u = u;
+        while (std::fabs(out_u - in) > width) {
+          const double mid = 0.5 * (in + out_u);
+          if (mid == in || mid == out_u) break;  // adjacent doubles
+          (inside(mid) ? in : out_u) = mid;
+        }
+        return 0.5 * (in + out_u);
+      }
+      in = u;
+      if (u == bound) {
+        *open = true;
+        return bound;
+      }
+      step *= kGrow;
+    }
+  };
+  const double a = side(-1, &out.open_lower), b = side(1, &out.open_upper);
+  out.lower = out.open_lower ? lower : scale.ToX(a);
+  out.upper = out.open_upper ? upper : scale.ToX(b);
+  return out;
+}
+
 }  // namespace vahf::calibrate

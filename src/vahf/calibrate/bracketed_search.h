@@ -56,4 +56,28 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
                                   int max_iterations,
                                   const std::optional<std::array<double, 3>>& hint = {});
 
+// The profile interval of a one-parameter cost about its minimum: the values
+// whose cost is at most `rise` above `cost_at_estimate` (for a cost of 1/2
+// the sum of whitened squared residuals, rise = chi^2_1(0.95) / 2 gives the
+// 95 % likelihood-ratio interval: S. S. Wilks, Ann. Math. Statist. 9, 1938;
+// D. J. Venzon and S. H. Moolgavkar, Appl. Statist. 37, 1988). Unlike a
+// covariance from the cost's slope at the estimate, it needs no derivative,
+// so it holds for a piecewise constant cost. Each side is walked from the
+// estimate by steps that start at `first_step` of the value (a factor 1 +
+// first_step where the search runs in log(x)) and grow by the golden ratio
+// until the cost passes the rise or the walk reaches the bound (the side is
+// then open: the data do not bound it there); then the crossing is bisected
+// to `tolerance` of the value, as MinimizeBracketed's bracket. A non-finite
+// cost counts as past the rise.
+struct ProfileInterval {
+  double lower = 0, upper = 0;
+  bool open_lower = false,
+       open_upper = false;  // the cost stays within the rise up to the bound
+  int evaluations = 0;      // calls of the cost
+  std::string log;          // one line per call
+};
+ProfileInterval ProfileBounds(const std::function<double(double)>& cost, double lower,
+                              double upper, double estimate, double cost_at_estimate,
+                              double rise, double first_step, double tolerance);
+
 }  // namespace vahf::calibrate

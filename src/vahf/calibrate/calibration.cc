@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 #include <fmt/format.h>
+#include <gsl/gsl_cdf.h>
 
 #include <algorithm>
 #include <chrono>
@@ -21,6 +22,10 @@ namespace {
 
 // Two-sided 95 % normal quantile, for intervals from the covariance.
 constexpr double kZ95 = 1.959963984540054;
+// chi^2 with one degree of freedom at 0.95 (3.841459, gsl_cdf_chisq_Pinv),
+// halved: the rise of a cost of 1/2 sum r^2 that bounds the 95 % profile
+// interval.
+const double kProfileRise = 0.5 * gsl_cdf_chisq_Pinv(0.95, 1.0);
 
 std::string VectorText(const std::vector<ParameterSpec>& params, const double* x) {
   std::string out;
@@ -308,6 +313,19 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
     break;
   }
 
+  // The profile interval of a golden_section stage, on the last round's
+  // weights (those of its search and covariance).
+  std::optional<ProfileInterval> profile;
+  if (stage.solver == "golden_section") {
+    const ParameterSpec& ps = stage.parameters[0];
+    profile = ProfileBounds(
+        [&](double v) { return Cost(model, targets, sigma, spec, v); }, ps.lower,
+        ps.upper, x[0], out.final_cost, kProfileRise, spec.relative_step, spec.tolerance);
+    out.search_log += profile->log;
+    if (progress)
+      progress(fmt::format("{}: profile interval [{:.6g}, {:.6g}] ({} evaluations)",
+                           prefix, profile->lower, profile->upper, profile->evaluations));
+  }
   for (int i = 0; i < p; ++i) {
     FittedParameter f;
     f.name = stage.parameters[static_cast<std::size_t>(i)].name;
@@ -317,6 +335,12 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
     f.estimate = x[static_cast<std::size_t>(i)];
     f.standard_error = out.covariance_ok ? std::sqrt(out.covariance(i, i)) : std::nan("");
     f.ci = {f.estimate - kZ95 * f.standard_error, f.estimate + kZ95 * f.standard_error};
+    if (profile) {
+      f.has_profile = true;
+      f.profile = {profile->lower, profile->upper};
+      f.profile_open_lower = profile->open_lower;
+      f.profile_open_upper = profile->open_upper;
+    }
     out.parameters.push_back(f);
   }
   const std::vector<Statistic>& fitted = model.At(x.data());

@@ -63,6 +63,14 @@ struct FittedParameter {
   double start = 0, estimate = 0;
   double standard_error = 0;  // NaN when the covariance is rank deficient
   stats::Interval ci;         // estimate +- 1.96 standard errors (normal)
+  // The golden_section solver's cost is piecewise constant, where a
+  // covariance from its slope at the estimate says little: its stage also
+  // gives the profile interval (ProfileBounds, rise chi^2_1(0.95) / 2), each
+  // end open (the parameter's bound) when the cost stays within the rise up
+  // to it.
+  bool has_profile = false;
+  stats::Interval profile;
+  bool profile_open_lower = false, profile_open_upper = false;
 };
 
 struct FittedTarget {

@@ -36,7 +36,9 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
   for (const calibrate::CalibrationResult& r : stages) evaluations += r.evaluations;
 
   Table params({"stage", "parameter", "unit", "scene_value", "start", "lower", "upper",
-                "estimate", "standard_error", "ci_lower", "ci_upper", "at_bound"});
+                "estimate", "standard_error", "ci_lower", "ci_upper", "at_bound",
+                "profile_lower", "profile_upper", "profile_open_lower",
+                "profile_open_upper"});
   Table targets({"stage", "target", "unit", "lab", "lab_se", "lab_n", "virtual_start",
                  "virtual_start_se", "virtual_fitted", "virtual_fitted_se", "virtual_n",
                  "residual"});
@@ -75,7 +77,9 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
         "round(s) of re-weighting, {:.0f} s; {}.\n\n"
         "| parameter | unit | the scene's value | start | bounds | estimate | standard "
         "error | "
-        "95 % interval |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n",
+        "95 % interval | 95 % profile interval |\n| --- | --- | --- | --- | --- | --- | "
+        "--- | --- "
+        "| --- |\n",
         r.stage.empty() ? "Fit" : "Stage: " + r.stage, r.parameters.size(),
         r.targets.size(), solver, r.evaluations, r.rounds, r.seconds,
         r.converged ? "converged" : "**the solver did not report convergence**");
@@ -86,23 +90,48 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
       // curvature's, not a confidence statement (docs/calibration.md).
       const bool at_bound = p.estimate <= ps.lower || p.estimate >= ps.upper;
       const std::string unit = scene::FindParam(p.name)->unit;
-      params.AddRow({stage, p.name, unit, p.scene_value, p.start, ps.lower, ps.upper,
-                     p.estimate, p.standard_error, p.ci.lower, p.ci.upper,
-                     std::int64_t{at_bound ? 1 : 0}});
-      params_json.push_back({{"stage", stage},
-                             {"name", p.name},
-                             {"unit", unit},
-                             {"scene_value", p.scene_value},
-                             {"estimate", p.estimate},
-                             {"standard_error", p.standard_error},
-                             {"ci", {p.ci.lower, p.ci.upper}},
-                             {"at_bound", at_bound}});
-      md += fmt::format("| `{}` | {} | {} | {} | [{}, {}] | **{}** | {} | [{}, {}]{} |\n",
-                        p.name, unit, Number(p.scene_value), Number(p.start),
-                        Number(ps.lower), Number(ps.upper), Number(p.estimate),
-                        Number(p.standard_error), Number(p.ci.lower), Number(p.ci.upper),
-                        at_bound ? " (at a bound)" : "");
+      const double nan = std::nan("");
+      params.AddRow(
+          {stage, p.name, unit, p.scene_value, p.start, ps.lower, ps.upper, p.estimate,
+           p.standard_error, p.ci.lower, p.ci.upper, std::int64_t{at_bound ? 1 : 0},
+           p.has_profile ? p.profile.lower : nan, p.has_profile ? p.profile.upper : nan,
+           std::int64_t{p.profile_open_lower ? 1 : 0},
+           std::int64_t{p.profile_open_upper ? 1 : 0}});
+      params_json.push_back(
+          {{"stage", stage},
+           {"name", p.name},
+           {"unit", unit},
+           {"scene_value", p.scene_value},
+           {"estimate", p.estimate},
+           {"standard_error", p.standard_error},
+           {"ci", {p.ci.lower, p.ci.upper}},
+           {"at_bound", at_bound},
+           {"profile_ci", p.has_profile ? nlohmann::json{p.profile.lower, p.profile.upper}
+                                        : nlohmann::json(nullptr)},
+           {"profile_open", {p.profile_open_lower, p.profile_open_upper}}});
+      const std::string profile =
+          p.has_profile
+              ? fmt::format("[{}{}, {}{}]", p.profile_open_lower ? "open at " : "",
+                            Number(p.profile.lower), Number(p.profile.upper),
+                            p.profile_open_upper ? ", open" : "")
+              : "-";
+      md += fmt::format(
+          "| `{}` | {} | {} | {} | [{}, {}] | **{}** | {} | [{}, {}]{} | {} |\n", p.name,
+          unit, Number(p.scene_value), Number(p.start), Number(ps.lower),
+          Number(ps.upper), Number(p.estimate), Number(p.standard_error),
+          Number(p.ci.lower), Number(p.ci.upper), at_bound ? " (at a bound)" : "",
+          profile);
     }
+    if (r.solver == "golden_section")
+      md +=
+          "\nThe profile interval holds the values whose cost (1/2 the sum of the "
+          "whitened "
+          "squared residuals, on common random numbers) is within chi^2_1(0.95) / 2 = "
+          "1.92 "
+          "of the estimate's: it needs no slope, so it holds where the cost is a step "
+          "function and the standard error, from Ceres' slope at the estimate, does not; "
+          "an "
+          "end that reaches the parameter's bound is open there (docs/calibration.md).\n";
     if (!r.covariance_ok)
       md +=
           "\nThe covariance is rank deficient (the targets do not move within a "
