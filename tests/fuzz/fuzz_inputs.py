@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Fuzz test of the vahf command: mutated input files must never crash it.
 
-Issue 13, item 4. Whatever the input, vahf exits 0, 1 (a failure of the
+Whatever the input, vahf exits 0, 1 (a failure of the
 computation, stated) or 2 (bad input, in one line). This script takes the
 repository's own files as mutation bases, mutates them with a seeded
 generator and runs vahf on every mutant:
@@ -45,7 +45,7 @@ generator and runs vahf on every mutant:
             and 4x that plus 60 s of wall); on exit 2, stderr
             is exactly one line starting with "vahf: error: ".
   records   "check accepts what trial rejects": `check` says "valid scene"
-            (exit 0) and `trial` exits 2. Issue 13 wants none; they are counted
+            (exit 0) and `trial` exits 2. The input rules want none; they are counted
             apart and fail the run only with --strict-check.
 
 Generation is deterministic: mutant i is made by its own random.Random seeded
@@ -1551,7 +1551,7 @@ def main(argv=None):
                                                                   tree))
                         exit1.setdefault(sig, [0, m, o])[0] += 1
                         # check computes nothing: its exit 1 is bad input
-                        # that escaped the rules (issue 13 wants exit 2).
+                        # that escaped the rules (bad input wants exit 2).
                         if a.strict_check and o.argv[1] == "check":
                             failures.append((m, o, "check-exit-1"))
                             failed = True

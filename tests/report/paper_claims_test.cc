@@ -1,4 +1,4 @@
-// The paper's claims (issue 5), tested statistically on seeded runs of the
+// The paper's claims, tested statistically on seeded runs of the
 // shipped experiments at a reduced size. Each run is deterministic, so these
 // tests never flake; they fail when the model's behaviour changes. Where the
 // model with defensible parameters does not reproduce a claim, the test
@@ -58,7 +58,7 @@ std::unique_ptr<Ran> RunShipped(const std::string& name, int trials) {
 // Table 1, Sec. 4: eta rises as each part nears its final position.
 // Reproduced for the piston rod and the guide sleeve. The seal ring's rise is
 // not significant at this size since the guidance became continuous in the
-// state (issue 10): eta(d) - eta(a) = 0.038, 95 % CI [-0.027, 0.103] over 4
+// state: eta(d) - eta(a) = 0.038, 95 % CI [-0.027, 0.103] over 4
 // cycles (measured); it stays positive, and the paper run's size tests it.
 TEST(PaperClaims, EtaRisesAsEachPartNearsItsTarget) {
   const auto r = RunShipped("table1", 4);

@@ -573,7 +573,7 @@ const BadCase kBadCases[] = {
     {"GridZero", [](json& d) { d["parameters"]["visibility"]["grid"] = 0; },
      "/parameters/visibility/grid", "must lie in [1, 1024]", "0"},
 
-    // Finite bounds the code can honour (issue 13): each of these once
+    // Finite bounds the code can honour: each of these once
     // passed `check` and then aborted, hung or overflowed a trial.
     {"OperatorFarAway", [](json& d) { d["operator"]["position"][0] = 1e308; },
      "/operator/position/0", "must lie in [-100, 100]", "1e+308"},

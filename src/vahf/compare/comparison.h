@@ -1,4 +1,4 @@
-// A virtual design against a lab dataset, quantity by quantity (issue 12's
+// A virtual design against a lab dataset, quantity by quantity (the
 // `compare` kind; docs/experiments.md, "compare"). A quantity is a part's
 // mean assembly time or success rate, over all operators or per operator, of
 // a lab condition and of a segment of the hour of work. The virtual side runs

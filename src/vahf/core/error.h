@@ -1,6 +1,6 @@
 // Errors a user can cause (bad input files, bad options) and their exit code.
 //
-// Two tiers (STYLE.md 7): a user's bad input throws vahf::InputError, which the
+// Two tiers: a user's bad input throws vahf::InputError, which the
 // command reports in one line and exits with kExitInputError; a broken internal
 // invariant is a bug and aborts loudly through VAHF_CHECK.
 #pragma once

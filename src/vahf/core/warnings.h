@@ -1,5 +1,5 @@
 // A trial's record of numerical trouble, in the spirit of MuJoCo's
-// mjData.warning (STYLE.md 8, docs/design.md decision 12): for each kind, how often
+// mjData.warning (docs/design.md decision 12): for each kind, how often
 // it happened, when first, and what was seen then. Experiments sum the
 // records of their trials; a test fails on any warning it did not expect.
 #pragma once

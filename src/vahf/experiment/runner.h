@@ -1,8 +1,7 @@
 // Monte Carlo over trial indices on a pool of threads (docs/design.md, "Runner").
 //
 // Results are stored by trial index and returned in index order, so the output
-// never depends on the thread count or on scheduling (docs/design.md, decision 9;
-// STYLE.md 5). Each trial must own everything it mutates: `fn` is called
+// never depends on the thread count or on scheduling (docs/design.md, decision 9). Each trial must own everything it mutates: `fn` is called
 // concurrently from several threads.
 #pragma once
 

@@ -25,7 +25,7 @@ inline constexpr double kMaxOutcomeShare = 0.05;
 // The level of the KS test of the rule: a setting whose completion times the
 // two-sample KS test tells from the reference's at this level (p below it)
 // changes the distribution detectably, however small the shift that would
-// explain D. At 200 cycles it is issue 11's D < 0.136 (1.36 sqrt(2 / 200)).
+// explain D. At 200 cycles it is D < 0.136 (1.36 sqrt(2 / 200)).
 // With common random numbers the two samples are positively correlated,
 // which makes the test conservative (it rejects less often than its level).
 inline constexpr double kKsLevel = 0.05;

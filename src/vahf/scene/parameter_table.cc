@@ -55,8 +55,7 @@ const std::string& StepperHelp() {
 
 std::vector<ParamSpec> MakeTable() {
   using R = ParamRule;
-  // Every number has a finite range (issue 13: "rules that match the
-  // numerics"). The ranges are wide, orders of magnitude around any physical
+  // Every number has a finite range: rules that match the numerics. The ranges are wide, orders of magnitude around any physical
   // value, and exist so that no accepted value overflows the model's
   // arithmetic or stalls its integration; where a bound has a source, it says so.
   std::vector<ParamSpec> t = {
@@ -231,7 +230,7 @@ std::vector<ParamSpec> MakeTable() {
        "N of the N x N ray grid", nullptr, VAHF_COUNT(visibility.grid)},
       {"visibility", "tessellation_tolerance", "m", R::kClosed, 1e-6, 0.1,
        "chord error of part meshes", VAHF_REAL(visibility.tessellation_tolerance)},
-      // 1 ms to 10 s: the range issue 13's stability suite spans; the paper's
+      // 1 ms to 10 s: the range the stability suite spans; the paper's
       // operator decides about every 0.1 s (parameters.h).
       {"simulation", "decision_interval", "s", R::kClosed, 1e-3, 10,
        "time between the operator's decisions", VAHF_REAL(simulation.decision_interval)},

@@ -16,8 +16,8 @@
 namespace vahf::scene {
 namespace {
 
-// The bounds of a scene's numbers (issue 13: finite bounds the code can
-// honour). A workcell spans metres; 100 m holds any of them, and keeps the
+// The bounds of a scene's numbers: finite bounds the code can honour
+// (docs/scene-format.md, "Scene": the bounds). A workcell spans metres; 100 m holds any of them, and keeps the
 // operator's shoulder offsets (centimetres) far above the rounding of a
 // coordinate (2.2e-16 * 100 m = 2e-14 m).
 constexpr double kMaxCoordinate = 100.0;  // m, every position

@@ -1,6 +1,6 @@
 // What one trial returns: how it ended and why, when, the work it took, and a
-// trace with one row per decision instant (STYLE.md 9: results are objects
-// with a status).
+// trace with one row per decision instant (a result is an object with a
+// status, not an exception or a sentinel).
 #pragma once
 
 #include <Eigen/Core>
