@@ -50,8 +50,8 @@ void Penetration(benchmark::State& state) {
     }
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(points.size()));
-  state.counters["inside"] = benchmark::Counter(static_cast<double>(inside),
-                                                benchmark::Counter::kAvgIterations);
+  state.counters["inside"] =
+      benchmark::Counter(static_cast<double>(inside), benchmark::Counter::kAvgIterations);
 }
 
 void At(benchmark::State& state) {

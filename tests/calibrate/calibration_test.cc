@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -33,7 +33,8 @@ SyntheticLabSpec BlockLab(std::uint64_t seed) {
   spec.scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   spec.scene.params.guidance.kappa = kKappaTrue;
   spec.truth = {{"guidance/kappa", kKappaTrue}};
-  spec.operators = {{"female 1", "female", 1.62, 0.70, ""}, {"male 1", "male", 1.78, 0.77, ""}};
+  spec.operators = {{"female 1", "female", 1.62, 0.70, ""},
+                    {"male 1", "male", 1.78, 0.77, ""}};
   spec.repetitions = 12;
   spec.seed = seed;
   spec.time_sd = 0.02;
@@ -51,8 +52,9 @@ CalibrationSpec KappaFromTime() {
 
 // A calibration of one stage.
 CalibrationResult Fit(const scene::Scene& scene, const data::LabDataset& lab,
-                      const CalibrationSpec& spec, const std::string& file, std::uint64_t seed,
-                      int trials, const experiment::RunnerOptions& options,
+                      const CalibrationSpec& spec, const std::string& file,
+                      std::uint64_t seed, int trials,
+                      const experiment::RunnerOptions& options,
                       const CalibrationProgress& progress = {}) {
   const std::vector<CalibrationResult> stages =
       Calibrate(scene, lab, spec, file, seed, trials, options, progress);
@@ -68,11 +70,12 @@ experiment::RunnerOptions Quiet() {
 }
 
 TEST(Calibration, RecoversKappaFromASyntheticLabWithinItsInterval) {
-  const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   const data::LabDataset lab = GenerateSyntheticLab(BlockLab(101), Quiet());
   ASSERT_EQ(lab.trials.size(), 24u);
   const CalibrationResult r = Fit(scene, lab, KappaFromTime(), "test", 7, 24, Quiet(),
-                                        [](const std::string& l) { std::puts(l.c_str()); });
+                                  [](const std::string& l) { std::puts(l.c_str()); });
   ASSERT_TRUE(r.covariance_ok) << r.ceres_full;
   const FittedParameter& k = r.parameters[0];
   EXPECT_GT(k.standard_error, 0.0);
@@ -85,7 +88,8 @@ TEST(Calibration, RecoversKappaFromASyntheticLabWithinItsInterval) {
 }
 
 TEST(Calibration, SameInputsGiveTheSameBitsOnAnyThreadCount) {
-  const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   const data::LabDataset lab = GenerateSyntheticLab(BlockLab(5), Quiet());
   experiment::RunnerOptions one = Quiet();
   one.threads = 1;
@@ -109,7 +113,8 @@ TEST(Calibration, NinetyFivePercentIntervalsCoverTheTruthAsOftenAsTheyClaim) {
   // assertion then scales: at least 85 % covered).
   const char* env = std::getenv("VAHF_COVERAGE_DATASETS");
   const int kDatasets = env ? std::max(1, std::atoi(env)) : 20;
-  const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   int covered = 0;
   double se_sum = 0;
   for (int d = 0; d < kDatasets; ++d) {
@@ -121,17 +126,20 @@ TEST(Calibration, NinetyFivePercentIntervalsCoverTheTruthAsOftenAsTheyClaim) {
     const bool holds = k.ci.lower <= kKappaTrue && kKappaTrue <= k.ci.upper;
     covered += holds;
     se_sum += k.standard_error;
-    std::printf("dataset %d: kappa %.1f +- %.1f (95 %%: [%.1f, %.1f]) %s, %d evaluations\n", d,
-                k.estimate, k.standard_error, k.ci.lower, k.ci.upper,
-                holds ? "holds" : "misses", r.evaluations);
+    std::printf(
+        "dataset %d: kappa %.1f +- %.1f (95 %%: [%.1f, %.1f]) %s, %d evaluations\n", d,
+        k.estimate, k.standard_error, k.ci.lower, k.ci.upper, holds ? "holds" : "misses",
+        r.evaluations);
   }
-  std::printf("coverage of kappa_true = %.0f N/m: %d of %d 95 %% intervals; mean se %.1f N/m\n",
-              kKappaTrue, covered, kDatasets, se_sum / kDatasets);
+  std::printf(
+      "coverage of kappa_true = %.0f N/m: %d of %d 95 %% intervals; mean se %.1f N/m\n",
+      kKappaTrue, covered, kDatasets, se_sum / kDatasets);
   EXPECT_GE(covered, env ? static_cast<int>(0.85 * kDatasets) : 17);
 }
 
 TEST(Calibration, BoundsThatAdmitABrokenSceneAreNamed) {
-  const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   CalibrationSpec spec;
   // D1 = 3 arm lengths lies beyond D2 = 0.39 h: not a reach curve.
   const std::vector<ParameterSpec> parameters = {
@@ -147,10 +155,12 @@ TEST(Calibration, BoundsThatAdmitABrokenSceneAreNamed) {
 }
 
 TEST(Calibration, ATargetTheLabCannotSupplyIsAnInputError) {
-  const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   const data::LabDataset lab = GenerateSyntheticLab(BlockLab(9), Quiet());
   CalibrationSpec spec = KappaFromTime();
-  spec.stages[0].targets = {{"assembly_time", "piston_rod", false, "/targets/0", 0, 0, ""}};
+  spec.stages[0].targets = {
+      {"assembly_time", "piston_rod", false, "/targets/0", 0, 0, ""}};
   EXPECT_THROW(Calibrate(scene, lab, spec, "calib.json", 1, 4, Quiet()), InputError);
 }
 
@@ -158,7 +168,8 @@ TEST(Calibration, ATargetTheLabCannotSupplyIsAnInputError) {
 // take (D1 = 0.85 arm > D2 = 0.39 height) is an input error naming the row,
 // before any simulation, not an abort inside the human model.
 TEST(Calibration, ALabOperatorTheReachCurveCannotTakeIsNamed) {
-  const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   data::LabDataset lab;
   lab.folder = "lab";
   lab.trials_file = "trials.csv";

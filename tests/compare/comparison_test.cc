@@ -3,7 +3,6 @@
 // metrics): the verdicts and the sentences that carry them. The lab's side of
 // a comparison file's quantities (LabSide), and which virtual designs a
 // comparison runs.
-#include "vahf/kinds/kind.h"
 #include "vahf/compare/comparison.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +12,7 @@
 
 #include "vahf/core/error.h"
 #include "vahf/data/lab_dataset.h"
+#include "vahf/kinds/kind.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/stats/proportion.h"
 
@@ -75,7 +75,8 @@ TEST(CompareSamples, RatesAgreeOnlyWhenTheDataResolveTheMargin) {
   t.spec.quantity = "success_rate";
   t.unit = "1";
   calibrate::TargetSamples few_lab, few_virt, many_lab, many_virt;
-  for (int i = 0; i < 10; ++i) few_lab.Add(i < 9, 1.0, "op"), few_virt.Add(i < 9, 1.0, "op");
+  for (int i = 0; i < 10; ++i)
+    few_lab.Add(i < 9, 1.0, "op"), few_virt.Add(i < 9, 1.0, "op");
   for (int i = 0; i < 1000; ++i)
     many_lab.Add(i < 900, 1.0, "op"), many_virt.Add(i < 900, 1.0, "op");
   // Equal rates of 0.9: ten trials a side cannot show agreement within 0.1,
@@ -90,8 +91,8 @@ TEST(CompareSamples, RatesAgreeOnlyWhenTheDataResolveTheMargin) {
 // ---------------------------------------------------------------------------
 // Against a reported value: the normal approximation.
 
-calibrate::Target Reported(const std::string& quantity, double value, double variance, int n,
-                           bool single_draw = false) {
+calibrate::Target Reported(const std::string& quantity, double value, double variance,
+                           int n, bool single_draw = false) {
   calibrate::Target t = TimeTarget();
   t.spec.quantity = quantity;
   t.unit = quantity == "assembly_time" ? "s" : "1";
@@ -121,7 +122,8 @@ TEST(CompareReported, ATimeAgainstAReportedMeanByHand) {
   EXPECT_NEAR(q.tost_p, 0.033096289861096716, 1e-12);
   EXPECT_TRUE(q.agree) << q.verdict;
   EXPECT_EQ(q.verdict.rfind("agree:", 0), 0u) << q.verdict;
-  EXPECT_NE(q.verdict.find("against the value the lab reports"), std::string::npos) << q.verdict;
+  EXPECT_NE(q.verdict.find("against the value the lab reports"), std::string::npos)
+      << q.verdict;
   // Against a step at 1.5 s: (0.5 + 0.3 + 0.1 + 0.1) / 4.
   EXPECT_NEAR(q.area_metric, 0.25, 1e-12);
   EXPECT_NEAR(q.lab_variance, 0.01, 1e-15);
@@ -140,8 +142,8 @@ TEST(CompareReported, ATimeAgainstAReportedMeanByHand) {
 // population the virtual side samples: its variance is the virtual
 // per-sample one, s^2 = 0.2 / 3, so se = sqrt(s^2 / 4 + s^2).
 TEST(CompareReported, ASingleDrawIsWeighedByTheVirtualSpread) {
-  const QuantityComparison q = CompareReported(Reported("assembly_time", 2.0, kNaN, 1, true),
-                                               1.0, Times({1.0, 1.2, 1.4, 1.6}));
+  const QuantityComparison q = CompareReported(
+      Reported("assembly_time", 2.0, kNaN, 1, true), 1.0, Times({1.0, 1.2, 1.4, 1.6}));
   ASSERT_TRUE(q.testable) << q.verdict;
   const double s2 = 0.2 / 3;
   EXPECT_NEAR(q.lab_variance, s2, 1e-12);
@@ -199,8 +201,8 @@ TEST(CompareReported, ARateAgainstAReportedRateWithItsCount) {
 }
 
 TEST(CompareReported, AValueWithoutAnySpreadIsShownAndUntestable) {
-  const QuantityComparison q = CompareReported(Reported("assembly_time", 16, kNaN, 0), 1.0,
-                                               Times({1.0, 1.2, 1.4, 1.6}));
+  const QuantityComparison q = CompareReported(Reported("assembly_time", 16, kNaN, 0),
+                                               1.0, Times({1.0, 1.2, 1.4, 1.6}));
   EXPECT_FALSE(q.testable);
   EXPECT_EQ(q.verdict.rfind("untestable: the lab reports 16 s without sd and n", 0), 0u)
       << q.verdict;
@@ -212,7 +214,8 @@ TEST(CompareReported, AValueWithoutAnySpreadIsShownAndUntestable) {
 // ---------------------------------------------------------------------------
 // The lab's side: trials, or what the lab reports.
 
-scene::FitTarget Spec(const std::string& quantity, int segment, const std::string& condition,
+scene::FitTarget Spec(const std::string& quantity, int segment,
+                      const std::string& condition,
                       const std::string& pointer = "/quantities/0") {
   return {quantity, "all", false, pointer, 0.1, segment, condition};
 }
@@ -282,7 +285,8 @@ TEST(LabSide, NeitherTrialsNorAReportIsAnInputError) {
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where(), "/quantities/0/by");
-    EXPECT_NE(e.rule().find("no trials, hence no operators"), std::string::npos) << e.what();
+    EXPECT_NE(e.rule().find("no trials, hence no operators"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -294,7 +298,8 @@ TEST(Compare, RunsEachDesignOnlyWhenAQuantityNeedsIt) {
   experiment::RunnerOptions quiet;
   quiet.threads = 2;
   quiet.progress = false;
-  const scene::Scene scene = scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   data::LabDataset lab = data::LoadLabDataset(Path("data/synthetic_block/dataset.json"));
   data::LabSegment segment;
   segment.segment = 2;
@@ -306,8 +311,10 @@ TEST(Compare, RunsEachDesignOnlyWhenAQuantityNeedsIt) {
   lab.segments_file = "segments.csv";
   scene::ComparisonDesign design;
   design.fatigue = {60, 4, 2};
-  const scene::FitTarget time = {"assembly_time", "block", false, "/quantities/0", 0.03, 0, ""};
-  const scene::FitTarget rate = {"success_rate", "all", false, "/quantities/1", 0.1, 2, ""};
+  const scene::FitTarget time = {
+      "assembly_time", "block", false, "/quantities/0", 0.03, 0, ""};
+  const scene::FitTarget rate = {
+      "success_rate", "all", false, "/quantities/1", 0.1, 2, ""};
   const int trials = 3;
 
   design.quantities = {rate};

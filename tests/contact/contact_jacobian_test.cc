@@ -16,21 +16,21 @@
 #include <cstdio>
 #include <vector>
 
+#include "peg_in_bore.h"
+#include "support/motion_differences.h"
 #include "vahf/contact/penalty_contact.h"
 #include "vahf/contact/point_load.h"
 #include "vahf/contact/point_shell.h"
 #include "vahf/contact/rim.h"
 #include "vahf/contact/signed_distance.h"
 #include "vahf/geometry/shape.h"
-#include "peg_in_bore.h"
-#include "support/motion_differences.h"
 
 namespace vahf::contact {
 namespace {
 
+using Eigen::Vector3d;
 using geometry::Box;
 using geometry::Shape;
-using Eigen::Vector3d;
 
 const Shape kPart = Box{{0.02, 0.02, 0.01}};      // 20 x 20 x 10 mm
 const Shape kPedestal = Box{{0.01, 0.01, 0.01}};  // 10 mm cube
@@ -53,19 +53,21 @@ Obstacle Floor() { return MakeObstacle(Box{{1.0, 1.0, 0.2}}, At({0, 0, -0.1}), f
 Obstacle Pedestal() { return MakeObstacle(kPedestal, At({0, 0, -0.005}), true); }
 
 enum Sample { kShell = 1, kMovingRim = 2 };
-PenaltyContact Model(std::vector<Obstacle> obstacles, int samples, const ContactParams& p) {
-  return PenaltyContact(samples & kShell ? MakePointShell(kPart, 1e-3) : std::vector<ShellPoint>{},
-                        SignedDistance(kPart),
-                        geometry::ComputeMassProperties(kPart).bounding_radius, 0.5,
-                        std::move(obstacles), p,
-                        samples & kMovingRim ? MakeRims(kPart, 0.5e-3) : std::vector<RimPoint>{});
+PenaltyContact Model(std::vector<Obstacle> obstacles, int samples,
+                     const ContactParams& p) {
+  return PenaltyContact(
+      samples & kShell ? MakePointShell(kPart, 1e-3) : std::vector<ShellPoint>{},
+      SignedDistance(kPart), geometry::ComputeMassProperties(kPart).bounding_radius, 0.5,
+      std::move(obstacles), p,
+      samples & kMovingRim ? MakeRims(kPart, 0.5e-3) : std::vector<RimPoint>{});
 }
 
 // The box's bottom 20 um (centre) into z = 0, off centre and tilted 1 mrad
 // about an oblique horizontal axis: its bottom face is 6-34 um deep.
 RigidMotion Pressed(bool sliding) {
   RigidMotion m;
-  m.pose.linear() = Eigen::AngleAxisd(1e-3, Vector3d(1, 2, 0).normalized()).toRotationMatrix();
+  m.pose.linear() =
+      Eigen::AngleAxisd(1e-3, Vector3d(1, 2, 0).normalized()).toRotationMatrix();
   m.pose.translation() = Vector3d(1.3e-3, -0.7e-3, 0.005 - 20e-6);
   if (sliding) {  // slip 20-60 mm/s everywhere: Coulomb
     m.velocity = {0.05, 0.02, -0.01};
@@ -182,8 +184,8 @@ TEST(ContactJacobian, CurvedRimContactIsCloseButNotExact) {
   const Obstacle bore = MakeObstacle(ChamferedBore(), At({0, 0, 0}), true);
   const Shape peg = ChamferedPeg();
   const PenaltyContact model(MakePointShell(peg, 1e-3), SignedDistance(peg),
-                             geometry::ComputeMassProperties(peg).bounding_radius, 0.5, {bore},
-                             p);
+                             geometry::ComputeMassProperties(peg).bounding_radius, 0.5,
+                             {bore}, p);
   RigidMotion m;
   m.pose = TiltedPegPose(Vector3d::Zero(), 10e-6);
   m.velocity = {0.01, -0.002, -0.05};
@@ -202,21 +204,25 @@ TEST(ContactJacobian, CurvedRimContactIsCloseButNotExact) {
 TEST(ContactJacobian, LawSlopesAgreeWithDifferencesAndChangeNoBit) {
   ContactParams p;
   p.dissipation = 0.5;
-  struct Point { double barrier, depth, rate; };
+  struct Point {
+    double barrier, depth, rate;
+  };
   // Onset, linear, inside the barrier, on its tangent (past b (1 - eps)),
   // receding, and the Hunt-Crossley factor clamped at zero.
-  for (const Point& q : {Point{0, 0.4e-6, 0.1}, Point{0, 5e-6, -0.3}, Point{50e-6, 20e-6, 0.2},
-                         Point{50e-6, 49.99e-6, 0.2}, Point{50e-6, 49.9e-6, -1.0},
-                         Point{0, 5e-6, -3.0}}) {
+  for (const Point& q :
+       {Point{0, 0.4e-6, 0.1}, Point{0, 5e-6, -0.3}, Point{50e-6, 20e-6, 0.2},
+        Point{50e-6, 49.99e-6, 0.2}, Point{50e-6, 49.9e-6, -1.0}, Point{0, 5e-6, -3.0}}) {
     p.barrier_depth = q.barrier;
     LawSlopes s;
     const double value = Pressure(p, q.depth, q.rate, &s);
     EXPECT_EQ(value, Pressure(p, q.depth, q.rate));
     const double hx = 1e-12, hr = 1e-7;
-    const double dx = (Pressure(p, q.depth + hx, q.rate) -
-                       Pressure(p, q.depth - hx, q.rate)) / (2 * hx);
-    const double dr = (Pressure(p, q.depth, q.rate + hr) -
-                       Pressure(p, q.depth, q.rate - hr)) / (2 * hr);
+    const double dx =
+        (Pressure(p, q.depth + hx, q.rate) - Pressure(p, q.depth - hx, q.rate)) /
+        (2 * hx);
+    const double dr =
+        (Pressure(p, q.depth, q.rate + hr) - Pressure(p, q.depth, q.rate - hr)) /
+        (2 * hr);
     EXPECT_NEAR(s.depth, dx, 1e-6 * std::abs(dx) + 1e-3) << q.depth;
     EXPECT_NEAR(s.rate, dr, 1e-6 * std::abs(dr) + 1e-9) << q.depth;
     if (1 + p.dissipation * q.rate < 0) {

@@ -34,7 +34,8 @@ inline geometry::Shape ChamferedBore() {
 // Radius 10 mm, 50 mm long, a 0.5 mm x 45 deg chamfer at its bottom (z = 0).
 constexpr double kPegRadius = 0.01;
 inline geometry::Shape ChamferedPeg() {
-  return Revolved({{0, 0}, {0.0095, 0}, {kPegRadius, 0.0005}, {kPegRadius, 0.05}, {0, 0.05}});
+  return Revolved(
+      {{0, 0}, {0.0095, 0}, {kPegRadius, 0.0005}, {kPegRadius, 0.05}, {0, 0.05}});
 }
 
 // The peg tilted by 2 deg about x, top towards +y, with the point of the
@@ -48,7 +49,8 @@ constexpr double kTiltRad = 2.0 * M_PI / 180;
 inline Eigen::Isometry3d TiltedPegPose(const Eigen::Vector3d& bore_at, double depth) {
   const double up_axis = 1.49e-3;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = Eigen::AngleAxisd(-kTiltRad, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  pose.linear() =
+      Eigen::AngleAxisd(-kTiltRad, Eigen::Vector3d::UnitX()).toRotationMatrix();
   const Eigen::Vector3d rim_point(0, kBoreRadius, -0.001);
   pose.translation() = bore_at + rim_point -
                        pose.linear() * Eigen::Vector3d(0, kPegRadius - depth, up_axis);

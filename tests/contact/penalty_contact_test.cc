@@ -16,7 +16,6 @@
 // rotated and shifted world. The rim law against closed forms is in
 // rim_test.cc.
 #include "vahf/contact/penalty_contact.h"
-#include "vahf/contact/point_load.h"
 
 #include <gtest/gtest.h>
 
@@ -26,11 +25,12 @@
 #include <utility>
 #include <vector>
 
+#include "peg_in_bore.h"
+#include "vahf/contact/point_load.h"
 #include "vahf/contact/point_shell.h"
 #include "vahf/contact/rim.h"
 #include "vahf/contact/signed_distance.h"
 #include "vahf/geometry/shape.h"
-#include "peg_in_bore.h"
 
 namespace vahf::contact {
 namespace {
@@ -63,9 +63,9 @@ Obstacle Floor() {
 }
 
 PenaltyContact Model(const Shape& part, double spacing, std::vector<Obstacle> obstacles,
-                   const ContactParams& params = ContactParams()) {
+                     const ContactParams& params = ContactParams()) {
   return PenaltyContact(MakePointShell(part, spacing), SignedDistance(part),
-                      BoundingRadius(part), kMuPart, std::move(obstacles), params);
+                        BoundingRadius(part), kMuPart, std::move(obstacles), params);
 }
 
 // ---------------------------------------------------------------- pressure law
@@ -82,8 +82,7 @@ TEST(ContactPressure, QuadraticOnsetIsC1AtZero) {
   const ContactParams p;
   const double k = p.stiffness, x0 = p.onset_depth;
   for (double x : {1e-9, 1e-8, 1e-7, 5e-7, 0.999e-6})
-    EXPECT_NEAR(Pressure(p, x, 0.0), k * x * x / (2 * x0), 1e-12 * k * x0)
-        << x;
+    EXPECT_NEAR(Pressure(p, x, 0.0), k * x * x / (2 * x0), 1e-12 * k * x0) << x;
   // The value and the forward-difference slope both vanish as the depth does:
   // slope(h) = k h / x0 (1 + 1/2 from the difference) shrinks linearly with h.
   for (double h : {1e-8, 1e-10, 1e-12}) {
@@ -120,8 +119,7 @@ TEST(ContactPressure, HuntCrossleyFactorClampedAtZero) {
   for (double x : {5e-7, 2e-5}) {
     const double elastic = Pressure(p, x, 0.0);
     for (double rate : {0.3, 1.0, 10.0, -0.3, -1.0, -1.9})
-      EXPECT_NEAR(Pressure(p, x, rate), elastic * (1 + 0.5 * rate),
-                  1e-12 * elastic)
+      EXPECT_NEAR(Pressure(p, x, rate), elastic * (1 + 0.5 * rate), 1e-12 * elastic)
           << "depth " << x << ", rate " << rate;
     // Separating faster than 1/c = 2 m/s: no pull, exactly zero.
     for (double rate : {-2.0, -2.5, -100.0})
@@ -139,8 +137,7 @@ TEST(ContactPressure, BarrierHardensTowardItsDepthAndLeavesAlongTheTangent) {
   barrier.barrier_depth = b;
   for (double x : {0.5e-6, 2e-6, 4e-6, 4.9e-6}) {
     const double s = 1.0 / (1.0 - x / b);
-    EXPECT_NEAR(Pressure(barrier, x, 0.0),
-                Pressure(plain, x, 0.0) * s * s,
+    EXPECT_NEAR(Pressure(barrier, x, 0.0), Pressure(plain, x, 0.0) * s * s,
                 1e-12 * Pressure(barrier, x, 0.0))
         << "depth " << x;
   }
@@ -151,7 +148,7 @@ TEST(ContactPressure, BarrierHardensTowardItsDepthAndLeavesAlongTheTangent) {
   const double slope_out = (Pressure(barrier, xc + 1e-12, 0.0) - at) / 1e-12;
   EXPECT_NEAR(slope_out, slope_in, 1e-2 * slope_in);  // C1 at xc
   EXPECT_NEAR(Pressure(barrier, xc + 1e-9, 0.0), at + slope_out * 1e-9,
-              1e-6 * at);  // linear beyond
+              1e-6 * at);                         // linear beyond
   EXPECT_GT(at, 1e5 * Pressure(plain, xc, 0.0));  // 1/eps^2 = 1e6 stiffer
 }
 
@@ -444,8 +441,8 @@ TEST(ContactModelBroadPhase, ShellTreeCullsWithoutLosingAContactPoint) {
   const Shape peg = Peg();
   const std::vector<ShellPoint> shell = MakePointShell(peg, 0.5e-3);
   const Obstacle floor = Floor();
-  const PenaltyContact model(shell, SignedDistance(peg), BoundingRadius(peg), kMuPart, {floor},
-                           ContactParams());
+  const PenaltyContact model(shell, SignedDistance(peg), BoundingRadius(peg), kMuPart,
+                             {floor}, ContactParams());
   RigidMotion m;
   m.pose = PegPose({0.5 * M_PI / 180, 50e-6});  // a 5.7 mm wide patch
   ContactCounters counters;
@@ -484,9 +481,9 @@ TEST(ContactModelFrame, OriginOffsetFromTheCentroidDoesNotMatter) {
   // (and frame B's would be the peg's shifted off its axis, which no profile
   // describes); ContactModelFrame.RimContact... below shifts along the axis.
   const PenaltyContact a(shell_a, SignedDistance(peg), radius_a, kMuPart, {Floor()},
-                       ContactParams());
-  const PenaltyContact b(shell_b, SignedDistance(peg), radius_a + g.norm(), kMuPart, {Floor()},
-                       ContactParams());
+                         ContactParams());
+  const PenaltyContact b(shell_b, SignedDistance(peg), radius_a + g.norm(), kMuPart,
+                         {Floor()}, ContactParams());
 
   RigidMotion ma;
   ma.pose = PegPose({2.0 * M_PI / 180, 20e-6});
@@ -573,14 +570,14 @@ TEST(ContactModelBroadPhase, RimBlocksCullWithoutChangingABit) {
   EXPECT_EQ(f.max_depth, brute.max_depth);
   EXPECT_GT(f.friction_force.norm(), 0.5 * kMu * f.normal_force.norm());
 
-
-  const std::size_t blocks =
-      (bore.rim.size() + PenaltyContact::kRimBlockSize - 1) / PenaltyContact::kRimBlockSize;
-  std::printf("peg tilted in the bore mouth: %zu rim points in %zu blocks, %llu queried "
-              "(%llu blocks skipped), %llu shell points queried of %zu\n",
-              bore.rim.size(), blocks, static_cast<unsigned long long>(c.rim_queries),
-              static_cast<unsigned long long>(c.rim_blocks_skipped),
-              static_cast<unsigned long long>(c.point_queries), model.shell().size());
+  const std::size_t blocks = (bore.rim.size() + PenaltyContact::kRimBlockSize - 1) /
+                             PenaltyContact::kRimBlockSize;
+  std::printf(
+      "peg tilted in the bore mouth: %zu rim points in %zu blocks, %llu queried "
+      "(%llu blocks skipped), %llu shell points queried of %zu\n",
+      bore.rim.size(), blocks, static_cast<unsigned long long>(c.rim_queries),
+      static_cast<unsigned long long>(c.rim_blocks_skipped),
+      static_cast<unsigned long long>(c.point_queries), model.shell().size());
   EXPECT_EQ(c.rims_skipped, 0u);
   EXPECT_GT(c.rim_blocks_skipped, blocks / 2);
   // Queried and skipped blocks account for every point.
@@ -601,8 +598,9 @@ TEST(ContactModelBroadPhase, APegInsideItsBoreIsClearedWithoutPointQueries) {
   // point touches (50 um radial clearance). The meridian bounds
   // (sector_bound.h) clear it all.
   const Shape peg = testing::ChamferedPeg();
-  const PenaltyContact model(MakePointShell(peg, 1e-3), SignedDistance(peg), BoundingRadius(peg),
-                             kMuPart, {BoreWithRims()}, ContactParams(), MakeRims(peg, 0.5e-3));
+  const PenaltyContact model(MakePointShell(peg, 1e-3), SignedDistance(peg),
+                             BoundingRadius(peg), kMuPart, {BoreWithRims()},
+                             ContactParams(), MakeRims(peg, 0.5e-3));
   RigidMotion m;
   m.pose.linear() =
       Eigen::AngleAxisd(0.01 * M_PI / 180, Eigen::Vector3d::UnitX()).toRotationMatrix();
@@ -621,7 +619,8 @@ TEST(ContactModelBroadPhase, APegAgainstItsBoreWallIsQueriedOnlyNearTheWall) {
   // every shell point (no rims here), and only clusters near that side are
   // queried.
   const Shape peg = testing::ChamferedPeg();
-  const Obstacle bore = MakeObstacle(testing::ChamferedBore(), Translation(kBoreAt), kMuFloor);
+  const Obstacle bore =
+      MakeObstacle(testing::ChamferedBore(), Translation(kBoreAt), kMuFloor);
   const PenaltyContact model = Model(peg, 1e-3, {bore});
   RigidMotion m;
   m.pose.translation() = kBoreAt + Eigen::Vector3d(0, 55e-6, -0.02);
@@ -639,8 +638,9 @@ TEST(ContactModelBroadPhase, APegAgainstItsBoreWallIsQueriedOnlyNearTheWall) {
   ASSERT_GT(touching, 100);
   EXPECT_EQ(f.points_in_contact, touching);
   EXPECT_NEAR((f.normal_force - brute).norm(), 0.0, 1e-12 * brute.norm());
-  std::printf("peg 55 um off the bore's axis: %d shell points touching, %llu queried of %zu\n",
-              touching, static_cast<unsigned long long>(c.point_queries), model.shell().size());
+  std::printf(
+      "peg 55 um off the bore's axis: %d shell points touching, %llu queried of %zu\n",
+      touching, static_cast<unsigned long long>(c.point_queries), model.shell().size());
   EXPECT_LT(c.point_queries, 3u * static_cast<unsigned>(touching));
   // Each touching point's distance pass examines every surface edge of the
   // bore's profile (6): the work the trial's contact test budget counts.
@@ -653,9 +653,11 @@ TEST(ContactModelBroadPhase, RimsAwayFromTheMovingPartAreSkippedWhole) {
   // has rims only at its ends; a 40 mm box 50 mm below its foot is inside the
   // rod's bounding sphere but 0.55 m from the centre of the rims' sphere
   // (radius 0.5 m), beyond the two radii's sum.
-  Obstacle rod = MakeObstacle(testing::Revolved({{0, 0}, {0.01, 0}, {0.01, 1.0}, {0, 1.0}}),
-                              Eigen::Isometry3d::Identity(), kMuFloor);
-  rod.rim = MakeRims(testing::Revolved({{0, 0}, {0.01, 0}, {0.01, 1.0}, {0, 1.0}}), 0.5e-3);
+  Obstacle rod =
+      MakeObstacle(testing::Revolved({{0, 0}, {0.01, 0}, {0.01, 1.0}, {0, 1.0}}),
+                   Eigen::Isometry3d::Identity(), kMuFloor);
+  rod.rim =
+      MakeRims(testing::Revolved({{0, 0}, {0.01, 0}, {0.01, 1.0}, {0, 1.0}}), 0.5e-3);
   const PenaltyContact model = Model(Box{kPartSize}, 1e-3, {rod});
   RigidMotion m;
   m.pose = Translation({0.05, 0, -0.05});
@@ -684,7 +686,7 @@ TEST(ContactModelFrame, RimContactWithTheOriginMovedAlongTheAxis) {
   const double radius_a = BoundingRadius(peg_a);
   const PenaltyContact a = Model(peg_a, 1e-3, {BoreWithRims()});
   const PenaltyContact b(shell_b, SignedDistance(peg_b), radius_a + g, kMuPart,
-                       {BoreWithRims()}, ContactParams());
+                         {BoreWithRims()}, ContactParams());
 
   const RigidMotion ma = TiltedPegMoving();
   RigidMotion mb = ma;
@@ -701,7 +703,8 @@ TEST(ContactModelFrame, RimContactWithTheOriginMovedAlongTheAxis) {
   EXPECT_NEAR((fb.friction_force - fa.friction_force).norm(), 0.0, 1e-9 * scale);
   EXPECT_GT(fa.friction_force.norm(), 0.5 * kMu * scale);  // friction is exercised
   const Eigen::Vector3d total = fa.normal_force + fa.friction_force;
-  EXPECT_NEAR((fb.torque - (fa.torque - rg.cross(total))).norm(), 0.0, 1e-9 * scale * 0.05);
+  EXPECT_NEAR((fb.torque - (fa.torque - rg.cross(total))).norm(), 0.0,
+              1e-9 * scale * 0.05);
   EXPECT_NEAR(fb.max_depth, fa.max_depth, 1e-15);
 }
 

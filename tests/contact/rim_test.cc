@@ -22,11 +22,11 @@
 #include <utility>
 #include <vector>
 
+#include "peg_in_bore.h"
 #include "vahf/contact/penalty_contact.h"
 #include "vahf/contact/point_shell.h"
 #include "vahf/contact/signed_distance.h"
 #include "vahf/geometry/shape.h"
-#include "peg_in_bore.h"
 
 namespace vahf::contact {
 namespace {
@@ -81,7 +81,8 @@ TEST(MakeRims, CylinderHasItsTwoEndCircles) {
     ExpectCircles(rim, s, {{r, 0}, {r, h}});
   }
   // 2 pi 10 mm / 0.5 mm = 125.66: 126 samples a circle.
-  EXPECT_EQ(MakeRims(Revolved({{0, 0}, {r, 0}, {r, h}, {0, h}}), 0.5e-3).size(), 2u * 126);
+  EXPECT_EQ(MakeRims(Revolved({{0, 0}, {r, 0}, {r, h}, {0, h}}), 0.5e-3).size(),
+            2u * 126);
 }
 
 // The size rule (kMaxRimPoints) is checked against this bound before any rim
@@ -121,7 +122,8 @@ TEST(MakeRims, StraightAndNearlyStraightVerticesGiveNone) {
   // the two end circles. Bent by 2 deg: a third circle at the bend.
   const double r = 0.01, h = 0.04;
   const double s = 1e-3;
-  const auto straight = MakeRims(Revolved({{0, 0}, {r, 0}, {r, h / 2}, {r, h}, {0, h}}), s);
+  const auto straight =
+      MakeRims(Revolved({{0, 0}, {r, 0}, {r, h / 2}, {r, h}, {0, h}}), s);
   ExpectCircles(straight, s, {{r, 0}, {r, h}});
   // The upper half leans inwards by `bend`: the vertex at mid height turns left.
   const auto bent = [&](double bend_deg) {
@@ -153,9 +155,9 @@ TEST(MakeRims, GroovedTubeHasNoCircleAtTheGrooveBottom) {
                                       {0.01, 0.02},
                                       {0.005, 0.02}}),
                             1e-3);
-  ExpectCircles(rim, 1e-3,
-                {{0.005, 0}, {0.01, 0}, {0.01, 0.01}, {0.01, 0.012}, {0.01, 0.02},
-                 {0.005, 0.02}});
+  ExpectCircles(
+      rim, 1e-3,
+      {{0.005, 0}, {0.01, 0}, {0.01, 0.01}, {0.01, 0.012}, {0.01, 0.02}, {0.005, 0.02}});
   for (const RimPoint& q : rim)
     EXPECT_GT(std::abs(std::hypot(q.position.x(), q.position.y()) - 0.008), 1e-3);
 }
@@ -213,9 +215,9 @@ Obstacle WithRims(const Shape& shape, const Eigen::Isometry3d& pose, double rim_
 }
 
 PenaltyContact Model(const Shape& part, std::vector<Obstacle> obstacles,
-                   const ContactParams& params = ContactParams()) {
+                     const ContactParams& params = ContactParams()) {
   return PenaltyContact(MakePointShell(part, params.shell_spacing), SignedDistance(part),
-                      BoundingRadius(part), kMuPart, std::move(obstacles), params);
+                        BoundingRadius(part), kMuPart, std::move(obstacles), params);
 }
 
 // The C1 onset shape of both laws: x^2 / (2 x0), then x - x0 / 2; and its slope.
@@ -284,10 +286,11 @@ TEST(RimContact, BoreMouthInAnOffsetCylinderAgainstTheClosedForm) {
     EXPECT_EQ(without.rim_points_in_contact, 0);
     const Eigen::Vector3d f = with.normal_force - without.normal_force;
     const Eigen::Vector3d tau = with.torque - without.torque;
-    std::printf("  rim spacing %.2f mm: %d rim points, force %.6g N (%+.3f%%), "
-                "max depth %.3f um\n",
-                s * 1e3, with.rim_points_in_contact, f.x(),
-                100 * (f.x() / expected.x() - 1), with.max_depth * 1e6);
+    std::printf(
+        "  rim spacing %.2f mm: %d rim points, force %.6g N (%+.3f%%), "
+        "max depth %.3f um\n",
+        s * 1e3, with.rim_points_in_contact, f.x(), 100 * (f.x() / expected.x() - 1),
+        with.max_depth * 1e6);
     EXPECT_NEAR(f.x() / expected.x(), 1.0, 0.01) << "spacing " << s;
     EXPECT_NEAR(f.y(), 0.0, 1e-9 * f.norm()) << "spacing " << s;
     EXPECT_NEAR(f.z(), 0.0, 1e-9 * f.norm()) << "spacing " << s;
@@ -307,13 +310,16 @@ TEST(RimContact, NoRimForceWithinTheClearance) {
   RigidMotion m;
   m.pose = CylinderPose(0.99 * kClearance);
   const ContactForces f =
-      Model(Cylinder(), {WithRims(PlainBore(), Translation(kBoreAt), 0.5e-3)}).Evaluate(m);
+      Model(Cylinder(), {WithRims(PlainBore(), Translation(kBoreAt), 0.5e-3)})
+          .Evaluate(m);
   EXPECT_FALSE(f.in_contact());
   EXPECT_EQ(f.normal_force, Eigen::Vector3d::Zero());
   EXPECT_EQ(f.max_depth, 0.0);
 }
 
-Eigen::Isometry3d TiltedPegPose(double depth) { return testing::TiltedPegPose(kBoreAt, depth); }
+Eigen::Isometry3d TiltedPegPose(double depth) {
+  return testing::TiltedPegPose(kBoreAt, depth);
+}
 
 TEST(RimContact, TiltedPegSeesTheBoreEdgeTheShellMisses) {
   const double depth = 10e-6;
@@ -335,12 +341,13 @@ TEST(RimContact, TiltedPegSeesTheBoreEdgeTheShellMisses) {
                                   testing::kBoreRadius * std::sin(phi), -0.001);
     deepest = std::max(deepest, -peg.At(m.pose.inverse() * w).distance);
   }
-  std::printf("peg tilted 2 deg: bore edge %.3f um deep in it (exact), shell alone "
-              "%d points, with rims %d rim points, max depth %.3f um, force (%.4g, %.4g, "
-              "%.4g) N\n",
-              deepest * 1e6, shell_only.points_in_contact, with.rim_points_in_contact,
-              with.max_depth * 1e6, with.normal_force.x(), with.normal_force.y(),
-              with.normal_force.z());
+  std::printf(
+      "peg tilted 2 deg: bore edge %.3f um deep in it (exact), shell alone "
+      "%d points, with rims %d rim points, max depth %.3f um, force (%.4g, %.4g, "
+      "%.4g) N\n",
+      deepest * 1e6, shell_only.points_in_contact, with.rim_points_in_contact,
+      with.max_depth * 1e6, with.normal_force.x(), with.normal_force.y(),
+      with.normal_force.z());
   EXPECT_NEAR(deepest, depth, 0.05 * depth);
   EXPECT_FALSE(shell_only.in_contact());
   EXPECT_EQ(shell_only.max_depth, 0.0);
@@ -373,7 +380,8 @@ void SweepAcrossOnset(const Shape& part, const Obstacle& obstacle,
   const ContactParams params;
   const PenaltyContact model = Model(part, {obstacle}, params);
   double max_rim_length = 0;
-  for (const RimPoint& q : obstacle.rim) max_rim_length = std::max(max_rim_length, q.length);
+  for (const RimPoint& q : obstacle.rim)
+    max_rim_length = std::max(max_rim_length, q.length);
   const double x0 = params.onset_depth, h = x0 / 50;
   const double k_shell = params.stiffness * max_shell_area;
   const double k_rim = params.line_stiffness * max_rim_length;
@@ -399,18 +407,19 @@ void SweepAcrossOnset(const Shape& part, const Obstacle& obstacle,
       first = i;
       // Nothing touched a step ago, so nothing is deeper than h now.
       EXPECT_LE(after.max_depth, h);
-      EXPECT_LE(after.normal_force.norm(),
-                (k_shell * after.points_in_contact + k_rim * after.rim_points_in_contact) *
-                    h * h / (2 * x0));
+      EXPECT_LE(after.normal_force.norm(), (k_shell * after.points_in_contact +
+                                            k_rim * after.rim_points_in_contact) *
+                                               h * h / (2 * x0));
     }
     before = after;
   }
   ASSERT_GT(first, 0) << "never touched";
   EXPECT_GT(before.max_depth, 2 * x0);  // swept well past the onset
-  std::printf("  first contact at step %d of %d, final depth %.3f um, %d shell + %d rim "
-              "points, largest change %.3f of the bound\n",
-              first, steps, before.max_depth * 1e6, before.points_in_contact,
-              before.rim_points_in_contact, worst);
+  std::printf(
+      "  first contact at step %d of %d, final depth %.3f um, %d shell + %d rim "
+      "points, largest change %.3f of the bound\n",
+      first, steps, before.max_depth * 1e6, before.points_in_contact,
+      before.rim_points_in_contact, worst);
 }
 
 TEST(RimContact, ForceIsContinuousAcrossOnsetForTheTiltedPeg) {

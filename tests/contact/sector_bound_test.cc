@@ -29,7 +29,8 @@ double Azimuth(const Eigen::Vector2d& e) { return std::atan2(e.y(), e.x()); }
 TEST(BoundSector, LeastArcOfAPatch) {
   std::vector<Eigen::Vector3d> points;
   for (double phi = 30; phi <= 100; phi += 5)
-    for (double zeta : {0.0, 0.002, 0.005}) points.push_back(OnCylinder(0.01, phi * kDeg, zeta));
+    for (double zeta : {0.0, 0.002, 0.005})
+      points.push_back(OnCylinder(0.01, phi * kDeg, zeta));
   const SectorBound s = BoundSector(points);
   EXPECT_NEAR(s.rho_min, 0.01, 1e-15);
   EXPECT_NEAR(s.rho_max, 0.01, 1e-15);
@@ -42,7 +43,8 @@ TEST(BoundSector, LeastArcOfAPatch) {
 
 TEST(BoundSector, ArcAcrossTheNegativeXAxisAndFullCircles) {
   std::vector<Eigen::Vector3d> points;
-  for (double phi : {170.0, 175.0, -178.0, -160.0}) points.push_back(OnCylinder(0.02, phi * kDeg, 0));
+  for (double phi : {170.0, 175.0, -178.0, -160.0})
+    points.push_back(OnCylinder(0.02, phi * kDeg, 0));
   const SectorBound s = BoundSector(points);
   EXPECT_NEAR(s.width, 30 * kDeg, 1e-8);
   EXPECT_NEAR(Azimuth(s.from), 170 * kDeg, 1e-8);
@@ -78,12 +80,14 @@ TEST(MeridianMap, EveryPointOfTheClusterLiesInItsBox) {
     // A patch of a cylinder or cone (arc up to 360 deg), or a random cloud.
     std::vector<Eigen::Vector3d> points;
     const double phi0 = 2 * M_PI * s.Uniform(), arc = 2 * M_PI * s.Uniform();
-    const double rho = 0.001 + 0.03 * s.Uniform(), slope = trial % 3 == 0 ? s.Uniform() : 0.0;
+    const double rho = 0.001 + 0.03 * s.Uniform(),
+                 slope = trial % 3 == 0 ? s.Uniform() : 0.0;
     for (int k = 0; k < 24; ++k) {
       const double zeta = 0.02 * s.Uniform();
       points.push_back(trial % 5 == 4 ? Eigen::Vector3d(0.02 * s.Uniform() - 0.01,
                                                         0.02 * s.Uniform() - 0.01, zeta)
-                                      : OnCylinder(rho + slope * zeta, phi0 + arc * s.Uniform(), zeta));
+                                      : OnCylinder(rho + slope * zeta,
+                                                   phi0 + arc * s.Uniform(), zeta));
     }
     const SectorBound bound = BoundSector(points);
     const Eigen::Isometry3d t =
@@ -106,7 +110,8 @@ TEST(MeridianMap, ExactWhenTheAxesCoincide) {
   // Turned about the common axis and shifted along it: r is rho, z is zeta
   // plus the shift, to within the margin.
   std::vector<Eigen::Vector3d> points;
-  for (double phi = 0; phi < 40; phi += 4) points.push_back(OnCylinder(0.01, phi * kDeg, 0.003));
+  for (double phi = 0; phi < 40; phi += 4)
+    points.push_back(OnCylinder(0.01, phi * kDeg, 0.003));
   points.push_back(OnCylinder(0.01, 10 * kDeg, 0.007));
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.linear() = Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
@@ -130,7 +135,8 @@ TEST(MeridianBoxClear, AgreesWithPointQueriesOnAGrid) {
   // holding one is never called clear. The chamfered bore and peg profiles.
   rng::Stream s({20261123, 2}, 0, rng::Purpose::kTest);
   int clear = 0, blocked = 0;
-  for (const geometry::Shape& shape : {testing::ChamferedBore(), testing::ChamferedPeg()}) {
+  for (const geometry::Shape& shape :
+       {testing::ChamferedBore(), testing::ChamferedPeg()}) {
     const SignedDistance field(shape);
     for (int trial = 0; trial < 2000; ++trial) {
       const double r0 = 0.035 * s.Uniform(), z0 = 0.11 * s.Uniform() - 0.06;
@@ -158,10 +164,12 @@ TEST(MeridianBoxClear, AgreesWithPointQueriesOnAGrid) {
 TEST(MeridianBoxClear, ABoxInTheBoreBesideItsWall) {
   const SignedDistance bore(testing::ChamferedBore());
   const double wall = testing::kBoreRadius;
-  EXPECT_TRUE(bore.MeridianBoxClear({0.0099, wall - 1e-6, -0.03, -0.002}));  // in the hole
-  EXPECT_FALSE(bore.MeridianBoxClear({0.0099, wall + 1e-6, -0.03, -0.002}));  // reaches the wall
-  EXPECT_FALSE(bore.MeridianBoxClear({0.012, 0.013, -0.03, -0.02}));          // inside the block
-  EXPECT_TRUE(bore.MeridianBoxClear({0.0, 0.005, 0.001, 0.01}));              // above it
+  EXPECT_TRUE(
+      bore.MeridianBoxClear({0.0099, wall - 1e-6, -0.03, -0.002}));  // in the hole
+  EXPECT_FALSE(
+      bore.MeridianBoxClear({0.0099, wall + 1e-6, -0.03, -0.002}));   // reaches the wall
+  EXPECT_FALSE(bore.MeridianBoxClear({0.012, 0.013, -0.03, -0.02}));  // inside the block
+  EXPECT_TRUE(bore.MeridianBoxClear({0.0, 0.005, 0.001, 0.01}));      // above it
   EXPECT_FALSE(SignedDistance(geometry::Box{Eigen::Vector3d(1, 1, 1)})
                    .MeridianBoxClear({5, 6, 5, 6}));  // a box field cannot tell
 }

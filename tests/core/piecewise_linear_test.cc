@@ -29,8 +29,9 @@ TEST(PiecewiseLinear, SingleKnotIsConstant) {
 
 TEST(PiecewiseLinear, ViolationNamesTheRule) {
   EXPECT_EQ(PiecewiseLinear::Violation({}), "a curve needs at least one knot");
-  EXPECT_NE(PiecewiseLinear::Violation({{0, 0}, {0, 1}}).find("increase strictly (knot 1)"),
-            std::string::npos);
+  EXPECT_NE(
+      PiecewiseLinear::Violation({{0, 0}, {0, 1}}).find("increase strictly (knot 1)"),
+      std::string::npos);
   EXPECT_NE(PiecewiseLinear::Violation({{0, 0}, {1, NAN}}).find("not finite"),
             std::string::npos);
   EXPECT_TRUE(PiecewiseLinear::Violation({{0, 0}, {1, 1}}).empty());

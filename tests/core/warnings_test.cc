@@ -20,7 +20,8 @@ TEST(Warnings, FirstOccurrenceStaysAndCountsAdd) {
   EXPECT_EQ(e.detail, "depth 4 um > 2.8 um");
   EXPECT_EQ(w.at(WarningKind::kStepSizeFloor).count, 0);
   EXPECT_EQ(w.total(), 4);
-  EXPECT_EQ(w.Summary(), "penetration_bound 4 (first at t = 0.25 s: depth 4 um > 2.8 um)");
+  EXPECT_EQ(w.Summary(),
+            "penetration_bound 4 (first at t = 0.25 s: depth 4 um > 2.8 um)");
 }
 
 TEST(Warnings, SumsAddKindByKind) {

@@ -17,7 +17,8 @@ std::string Source(const std::string& relative) {
 }
 
 TEST(Cycle, CarriesTimeAndWorkFromPartToPart) {
-  const scene::Scene s = scene::LoadScene(Source("experiments/scenes/hydraulic_cylinder.json"));
+  const scene::Scene s =
+      scene::LoadScene(Source("experiments/scenes/hydraulic_cylinder.json"));
   const CycleResult c = RunCycle(s, 1, 0, 100.0, false);
   ASSERT_TRUE(c.completed);
   ASSERT_EQ(c.parts.size(), s.sequence.size());

@@ -80,8 +80,8 @@ TEST(ProgressMeter, ALogGetsANewLineEveryTenSeconds) {
   ASSERT_NE(f, nullptr);
   EXPECT_FALSE(IsTerminal(f));
   ProgressMeter meter("mc", 100, true, f, "trials", ProgressMeter::Style::kLog);
-  meter.Update(10, 2.5);  // printed
-  meter.Update(20, 5.0);  // too soon for a log
+  meter.Update(10, 2.5);   // printed
+  meter.Update(20, 5.0);   // too soon for a log
   meter.Update(50, 12.5);  // printed
   meter.Finish(100, 20.0);
   EXPECT_EQ(Contents(f),

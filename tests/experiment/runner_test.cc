@@ -1,7 +1,7 @@
 // The Monte Carlo runner: results in index order and identical bits for 1, 2
-// and 4 threads (docs/design.md, decision 9); the lowest-index exception wins whatever the
-// scheduling; a stop request, by signal or test hook, ends the run with
-// Interrupted; bad thread counts are rejected.
+// and 4 threads (docs/design.md, decision 9); the lowest-index exception wins whatever
+// the scheduling; a stop request, by signal or test hook, ends the run with Interrupted;
+// bad thread counts are rejected.
 #include "vahf/experiment/runner.h"
 
 #include <gtest/gtest.h>

@@ -11,7 +11,9 @@
 namespace vahf::experiment {
 namespace {
 
-Table1 Load() { return LoadTable1(std::string(VAHF_SOURCE_DIR) + "/reference/paper/table1.json"); }
+Table1 Load() {
+  return LoadTable1(std::string(VAHF_SOURCE_DIR) + "/reference/paper/table1.json");
+}
 
 TEST(Table1, HasTwelveRowsOfThreeSubassemblies) {
   const Table1 t = Load();

@@ -40,8 +40,8 @@ TEST(BoundPoints, ReadsThePositionThroughTheProjectionOverASubrange) {
     Eigen::Vector3d at;
   };
   const std::vector<Item> items = {{0, {100, 100, 100}}, {1, {0, 0, 0}}, {2, {0, 0, 2}}};
-  const BoundingSphere s = BoundPoints(items.begin() + 1, items.end(),
-                                       [](const Item& i) { return i.at; });
+  const BoundingSphere s =
+      BoundPoints(items.begin() + 1, items.end(), [](const Item& i) { return i.at; });
   EXPECT_EQ(s.centre, Eigen::Vector3d(0, 0, 1));
   EXPECT_EQ(s.radius, 1.0);
 }

@@ -18,8 +18,13 @@ RevolvedProfile Profile(std::vector<ProfilePoint> p) {
 
 // The peg scene's bore block and peg (experiments/scenes/peg_in_hole.json).
 RevolvedProfile Bore() {
-  return Profile({{0.0, -0.05}, {0.03, -0.05}, {0.03, 0.0}, {0.01105, 0.0},
-                  {0.01005, -0.001}, {0.01005, -0.04}, {0.0, -0.04}});
+  return Profile({{0.0, -0.05},
+                  {0.03, -0.05},
+                  {0.03, 0.0},
+                  {0.01105, 0.0},
+                  {0.01005, -0.001},
+                  {0.01005, -0.04},
+                  {0.0, -0.04}});
 }
 RevolvedProfile Peg() {
   return Profile({{0.0, 0.0}, {0.0095, 0.0}, {0.01, 0.0005}, {0.01, 0.05}, {0.0, 0.05}});

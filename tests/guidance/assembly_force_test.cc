@@ -23,12 +23,15 @@ TEST(EstimatedTarget, Eq5ByHand) {
   EXPECT_EQ(EstimatedTarget(kTarget, kPosition, 0.3, 0.9, Eigen::Vector3d::Zero(), none),
             kTarget);
   // c = 1 and lambda_c = Psi_c: T' is the current position.
-  EXPECT_NEAR((EstimatedTarget(kTarget, kPosition, 0.5, 0.5, Eigen::Vector3d::Ones(), none) -
-               kPosition).norm(), 0.0, 1e-15);
+  EXPECT_NEAR(
+      (EstimatedTarget(kTarget, kPosition, 0.5, 0.5, Eigen::Vector3d::Ones(), none) -
+       kPosition)
+          .norm(),
+      0.0, 1e-15);
   // Componentwise c, and E_i adds.
-  const Eigen::Vector3d t = EstimatedTarget(kTarget, kPosition, 0.2, 0.8,
-                                            Eigen::Vector3d(1.0, 0.5, 0.0),
-                                            Eigen::Vector3d(0.01, 0, 0));
+  const Eigen::Vector3d t =
+      EstimatedTarget(kTarget, kPosition, 0.2, 0.8, Eigen::Vector3d(1.0, 0.5, 0.0),
+                      Eigen::Vector3d(0.01, 0, 0));
   EXPECT_NEAR(t.x(), 0.25 * 0.1 + 0.01, 1e-15);
   EXPECT_NEAR(t.y(), 0.25 * 0.5 * -0.2, 1e-15);
   EXPECT_NEAR(t.z(), 0.9, 1e-15);
@@ -53,8 +56,9 @@ TEST(DrawEstimatedTarget, MeanIsHalfwayScaledByLambdaOverPsi) {
   const Eigen::Vector3d expected = kTarget + lambda / psi / 2 * (kPosition - kTarget);
   for (int k = 0; k < 3; ++k) {
     // sd of c_k (x_k - x_t) lambda/psi is |x_k - x_t| lambda/psi / sqrt(12); plus E_i.
-    const double sd = std::abs(kPosition[k] - kTarget[k]) * lambda / psi / std::sqrt(12.0) +
-                      0.5 * params.vision_sigma_depth;
+    const double sd =
+        std::abs(kPosition[k] - kTarget[k]) * lambda / psi / std::sqrt(12.0) +
+        0.5 * params.vision_sigma_depth;
     EXPECT_NEAR(mean[k], expected[k], 5 * sd / std::sqrt(n)) << "axis " << k;
   }
 }
@@ -87,7 +91,8 @@ TEST(VisionError, DeeperAlongTheSightLine) {
   const double v_along = std::pow(eta * sd, 2), v_across = std::pow(eta * sl, 2);
   EXPECT_NEAR(along2, v_along, 5 * v_along * std::sqrt(2.0 / n));
   EXPECT_NEAR(across2, v_across, 5 * v_across * std::sqrt(2.0 / n));
-  EXPECT_EQ(VisionError(0.0, sight, sd, sl, Eigen::Vector3d(1, 1, 1)), Eigen::Vector3d::Zero());
+  EXPECT_EQ(VisionError(0.0, sight, sd, sl, Eigen::Vector3d(1, 1, 1)),
+            Eigen::Vector3d::Zero());
 }
 
 TEST(FreeAssemblyForce, Eq7) {
@@ -105,12 +110,12 @@ TEST(ContactAssemblyForce, Eq8PerpendicularToContactPlusFriction) {
   EXPECT_NEAR(f.norm(), 400.0 * 0.9 * 0.03 + 2.0, 1e-12);
   EXPECT_GT(f.x(), 0.0);
   // T_i T' along the contact normal leaves no direction to push in.
-  EXPECT_EQ(ContactAssemblyForce(400.0, 0.9, kPosition, kPosition + Eigen::Vector3d(0, 0, -0.1),
-                                 contact, 2.0),
+  EXPECT_EQ(ContactAssemblyForce(400.0, 0.9, kPosition,
+                                 kPosition + Eigen::Vector3d(0, 0, -0.1), contact, 2.0),
             Eigen::Vector3d::Zero());
   // No contact force: Eq. 8 is Eq. 7 plus friction along the same direction.
-  const Eigen::Vector3d free = ContactAssemblyForce(400.0, 0.9, kPosition, tp,
-                                                   Eigen::Vector3d::Zero(), 0.0);
+  const Eigen::Vector3d free =
+      ContactAssemblyForce(400.0, 0.9, kPosition, tp, Eigen::Vector3d::Zero(), 0.0);
   EXPECT_NEAR((free - FreeAssemblyForce(400.0, 0.9, kPosition, tp)).norm(), 0.0, 1e-12);
 }
 
@@ -132,8 +137,8 @@ struct ForceCase {
   Eigen::Vector3d velocity{0.1, 0.0, -0.3};
   Eigen::Vector3d weight{0.0, 0.0, -0.5 * 9.80665};
   Eigen::Vector3d Force(const FeltContact& c) const {
-    return ImpedanceForce(params, psi, mass, kPosition, target, velocity, c, blend, weight,
-                          fade);
+    return ImpedanceForce(params, psi, mass, kPosition, target, velocity, c, blend,
+                          weight, fade);
   }
 };
 
@@ -179,7 +184,8 @@ TEST(ImpedanceForce, FrictionPushIsBoundedByMaxPush) {
 
 TEST(ImpedanceForce, FreeIsEq7WithWeightSupportAndDamping) {
   const ForceCase k;
-  const double b = 2.0 * k.params.damping_ratio * std::sqrt(k.params.kappa * k.psi * k.mass);
+  const double b =
+      2.0 * k.params.damping_ratio * std::sqrt(k.params.kappa * k.psi * k.mass);
   const Eigen::Vector3d expected =
       FreeAssemblyForce(k.params.kappa, k.psi, kPosition, k.target) -
       k.params.weight_support * k.weight - b * k.velocity;
@@ -191,15 +197,17 @@ TEST(ImpedanceForce, FullContactIsEq8WithTheCurrentNormalAndFriction) {
   const Eigen::Vector3d n = Eigen::Vector3d(0.3, 0.0, 1.0).normalized();
   const double friction = 1.5;
   const Eigen::Vector3d f = k.Force({2.0 * n, friction});  // 2 N > blend 0.5 N
-  const double b = 2.0 * k.params.damping_ratio * std::sqrt(k.params.kappa * k.psi * k.mass);
+  const double b =
+      2.0 * k.params.damping_ratio * std::sqrt(k.params.kappa * k.psi * k.mass);
   const Eigen::Vector3d to = k.target - kPosition;
   const Eigen::Vector3d along = to - to.dot(n) * n;
   // Away from T' (|P(T' - T)| >> fade) the push is Eq. 8: kappa Psi |P(T'-T)| + f.
-  const Eigen::Vector3d eq8 = ContactAssemblyForce(k.params.kappa, k.psi, kPosition,
-                                                   k.target, n, friction);
+  const Eigen::Vector3d eq8 =
+      ContactAssemblyForce(k.params.kappa, k.psi, kPosition, k.target, n, friction);
   const Eigen::Vector3d expected =
       k.params.kappa * k.psi * along +
-      friction * along / std::sqrt(along.squaredNorm() + k.fade * k.fade) - b * k.velocity;
+      friction * along / std::sqrt(along.squaredNorm() + k.fade * k.fade) -
+      b * k.velocity;
   EXPECT_NEAR((f - expected).norm(), 0.0, 1e-12);
   EXPECT_NEAR((f + b * k.velocity - eq8).norm(), 1e-3 * eq8.norm(), 1e-3 * eq8.norm());
   EXPECT_NEAR((f + b * k.velocity).dot(n), 0.0, 1e-12);  // perpendicular to the normal

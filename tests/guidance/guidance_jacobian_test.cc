@@ -11,8 +11,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "vahf/guidance/assembly_torque.h"
 #include "support/motion_differences.h"
+#include "vahf/guidance/assembly_torque.h"
 
 namespace vahf::guidance {
 namespace {
@@ -42,10 +42,14 @@ Eigen::MatrixXd Differences(const GuidanceParams& g, const Felt& s) {
     Felt up = s, down = s;
     const double e = h[j / 3];
     const auto move = [&](Felt& f, double by) {
-      if (j < 3) f.position[j] += by;
-      else if (j < 6) f.velocity[j - 3] += by;
-      else if (j < 9) f.normal_force[j - 6] += by;
-      else f.friction += by;
+      if (j < 3)
+        f.position[j] += by;
+      else if (j < 6)
+        f.velocity[j - 3] += by;
+      else if (j < 9)
+        f.normal_force[j - 6] += by;
+      else
+        f.friction += by;
     };
     move(up, e);
     move(down, -e);
@@ -68,7 +72,8 @@ TEST(GuidanceJacobian, ImpedanceForceAcrossTheBlend) {
   g.weight_support = 0.8;
   const Vector3d direction = Vector3d(0.3, -0.2, 1.0).normalized();
   // |P (T' - T)| about 2 mm (beyond the 1 mm fade) and 0.5 mm (within it).
-  for (const Vector3d& target : {Vector3d(0.002, 0.0005, -0.01), Vector3d(0.0004, 0.0003, -0.01)})
+  for (const Vector3d& target :
+       {Vector3d(0.002, 0.0005, -0.01), Vector3d(0.0004, 0.0003, -0.01)})
     // Out of contact, 0.4 and 0.9 of the blend force, and 3 times it.
     for (double share : {0.0, 0.4, 0.9, 3.0}) {
       const Felt s{Vector3d(0.001, -0.002, 0.003), target, Vector3d(0.05, -0.02, -0.3),
@@ -94,8 +99,9 @@ TEST(GuidanceJacobian, ImpedanceForceWithTheFrictionPushBounded) {
 
 TEST(GuidanceJacobian, InverseRightJacobianLinearisesTheLog) {
   for (const Vector3d& theta : {Vector3d(1e-7, -2e-7, 0.0), Vector3d(0.2, -0.1, 0.25),
-                               Vector3d(1.5, 1.2, -1.0)}) {
-    const Matrix3d E = Eigen::AngleAxisd(theta.norm(), theta.normalized()).toRotationMatrix();
+                                Vector3d(1.5, 1.2, -1.0)}) {
+    const Matrix3d E =
+        Eigen::AngleAxisd(theta.norm(), theta.normalized()).toRotationMatrix();
     Matrix3d differences;
     const double h = 1e-7;
     for (int j = 0; j < 3; ++j) {
@@ -106,29 +112,32 @@ TEST(GuidanceJacobian, InverseRightJacobianLinearisesTheLog) {
       };
       differences.col(j) = (log(h) - log(-h)) / (2 * h);
     }
-    EXPECT_LT((InverseRightJacobian(theta) - differences).norm(), 1e-7) << theta.transpose();
+    EXPECT_LT((InverseRightJacobian(theta) - differences).norm(), 1e-7)
+        << theta.transpose();
   }
 }
 
 TEST(GuidanceJacobian, AssemblyTorqueRotationAndRate) {
   const GuidanceParams g;
   const Matrix3d body = Vector3d(2e-3, 3e-3, 1e-3).asDiagonal();
-  const Matrix3d R = Eigen::AngleAxisd(0.7, Vector3d(1, -1, 2).normalized()).toRotationMatrix();
+  const Matrix3d R =
+      Eigen::AngleAxisd(0.7, Vector3d(1, -1, 2).normalized()).toRotationMatrix();
   const Vector3d omega(0.4, -1.1, 0.3);
   for (double error : {0.0, 0.3, 2.5}) {
     const Matrix3d held =
         Eigen::AngleAxisd(error, Vector3d(2, 1, -1).normalized()).toRotationMatrix() * R;
     const auto torque = [&](const contact::RigidMotion& m) -> Eigen::VectorXd {
       const Matrix3d r = m.pose.linear();
-      return AssemblyTorque(g, 0.9, r * body * r.transpose(), r, held, m.angular_velocity);
+      return AssemblyTorque(g, 0.9, r * body * r.transpose(), r, held,
+                            m.angular_velocity);
     };
     contact::RigidMotion m;
     m.pose.linear() = R;
     m.angular_velocity = omega;
     const Eigen::MatrixXd differences =
         vahf::testing::MotionDifferences(torque, m, {1e-7, 1e-7, 1e-7, 1e-7});
-    const TorquePartials t = AssemblyTorqueJacobian(g, 0.9, R * body * R.transpose(), R, held,
-                                                    omega);
+    const TorquePartials t =
+        AssemblyTorqueJacobian(g, 0.9, R * body * R.transpose(), R, held, omega);
     Eigen::MatrixXd analytic = Eigen::MatrixXd::Zero(3, 12);
     analytic.block<3, 3>(0, 3) = t.rotation;
     analytic.block<3, 3>(0, 9) = t.omega;

@@ -13,7 +13,7 @@ TEST(SightCurve, PlateauOfSec321) {
   EXPECT_DOUBLE_EQ(f(30.0), 1.0);
   EXPECT_DOUBLE_EQ(f(37.5), 1.0);
   EXPECT_DOUBLE_EQ(f(45.0), 1.0);
-  EXPECT_LT(f(46.0), 1.0);   // "the estimation decreases over 45 deg"
+  EXPECT_LT(f(46.0), 1.0);  // "the estimation decreases over 45 deg"
   EXPECT_LT(f(29.0), 1.0);
   EXPECT_DOUBLE_EQ(f(0.0), 0.5);
   EXPECT_DOUBLE_EQ(f(180.0), 0.0);
@@ -30,7 +30,8 @@ TEST(GlanceCurve, PlateauOfSec322) {
 
 TEST(PlateauCurve, Violations) {
   EXPECT_TRUE(DefaultSightCurve().Violation().empty());
-  const PlateauCurve reversed{0.5, 50, 40, 0}, high{1.5, 30, 40, 0}, at_zero{0.5, 0, 40, 0};
+  const PlateauCurve reversed{0.5, 50, 40, 0}, high{1.5, 30, 40, 0},
+      at_zero{0.5, 0, 40, 0};
   EXPECT_NE(reversed.Violation().find("plateau"), std::string::npos);
   EXPECT_NE(high.Violation().find("value_at_0"), std::string::npos);
   EXPECT_NE(at_zero.Violation().find("0 < plateau_from_deg"), std::string::npos);

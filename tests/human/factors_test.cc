@@ -24,7 +24,7 @@ TEST(Visibility, Eq1) {
   EXPECT_DOUBLE_EQ(Visibility(100, 100), 1.0);  // nothing hides the part
   EXPECT_DOUBLE_EQ(Visibility(0, 100), 0.0);    // wholly hidden
   EXPECT_DOUBLE_EQ(Visibility(25, 100), 0.25);
-  EXPECT_DOUBLE_EQ(Visibility(0, 0), 0.0);      // V_b = 0: out of view, nothing seen
+  EXPECT_DOUBLE_EQ(Visibility(0, 0), 0.0);  // V_b = 0: out of view, nothing seen
 }
 
 TEST(Coefficients, Eqs2And3) {

@@ -30,7 +30,8 @@ TEST(FatigueCoefficient, Eq6InSI) {
   EXPECT_DOUBLE_EQ(FatigueCoefficient(0.0, p.a_max), 1.0);
   EXPECT_DOUBLE_EQ(FatigueCoefficient(0.25 * p.a_max, p.a_max), 0.75);
   EXPECT_DOUBLE_EQ(FatigueCoefficient(p.a_max, p.a_max), 0.0);
-  EXPECT_DOUBLE_EQ(FatigueCoefficient(2.0 * p.a_max, p.a_max), 0.0);  // held past exhaustion
+  EXPECT_DOUBLE_EQ(FatigueCoefficient(2.0 * p.a_max, p.a_max),
+                   0.0);  // held past exhaustion
 }
 
 TEST(IsExhausted, AtTheFloor) {

@@ -47,7 +47,8 @@ TEST(StandingPosture, TurnsWithTheOperator) {
   const Posture b = StandingPosture(Standing(120.0));
   const Eigen::Vector3d pivot(0.3, -0.4, 0.0);
   const Eigen::AngleAxisd turn(120.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ());
-  EXPECT_NEAR((turn * (a.left_shoulder - pivot) + pivot - b.left_shoulder).norm(), 0, 1e-12);
+  EXPECT_NEAR((turn * (a.left_shoulder - pivot) + pivot - b.left_shoulder).norm(), 0,
+              1e-12);
   EXPECT_NEAR((turn * a.forward - b.forward).norm(), 0, 1e-12);
 }
 

@@ -2,8 +2,6 @@
 // registered once with what parsing, checking and running need; a key only
 // other kinds read names them; a paper run lists designs of cycles only, and
 // every experiment it lists is validated before the first trial of any.
-#include "vahf/kinds/kind.h"
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -13,6 +11,7 @@
 
 #include "support/test_files.h"
 #include "vahf/core/error.h"
+#include "vahf/kinds/kind.h"
 #include "vahf/visibility/visibility.h"
 
 namespace vahf::kinds {
@@ -30,7 +29,8 @@ std::filesystem::path TestDir() { return scene::testing::TestDir("vahf_registry_
 // Writes `doc` into the running test's directory (made fresh by its first call).
 std::string Write(const std::string& name, const json& doc) {
   static std::string test;
-  const std::string running = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string running =
+      ::testing::UnitTest::GetInstance()->current_test_info()->name();
   static std::filesystem::path dir;
   if (test != running) {
     test = running;
@@ -40,8 +40,12 @@ std::string Write(const std::string& name, const json& doc) {
 }
 
 json Experiment(const std::string& kind, const std::string& scene, int trials) {
-  return {{"format", "vahf-experiment/1"}, {"name", kind + "_test"}, {"kind", kind},
-          {"scene", scene},                {"seed", 3},               {"trials", trials}};
+  return {{"format", "vahf-experiment/1"},
+          {"name", kind + "_test"},
+          {"kind", kind},
+          {"scene", scene},
+          {"seed", 3},
+          {"trials", trials}};
 }
 
 // The message of the InputError `f` throws ("" when it throws none).
@@ -70,14 +74,15 @@ TEST(KindRegistryTest, EveryKindIsRegisteredOnceWithWhatItsStagesNeed) {
     }
     EXPECT_EQ(&FindKind(k.name), &k);
   }
-  EXPECT_EQ(names, (std::set<std::string>{"table1", "assembly_time", "human_factors_groups",
-                                          "fatigue", "precision", "paper", "calibrate",
-                                          "compare", "stability"}));
+  EXPECT_EQ(names, (std::set<std::string>{"table1", "assembly_time",
+                                          "human_factors_groups", "fatigue", "precision",
+                                          "paper", "calibrate", "compare", "stability"}));
 }
 
 TEST(KindRegistryTest, EveryShippedExperimentLoadsWithARegisteredKind) {
-  for (const char* f : {"table1", "assembly_time", "human_factors_groups", "fatigue",
-                        "precision", "paper", "calibrate_paper", "compare_paper", "stability"}) {
+  for (const char* f :
+       {"table1", "assembly_time", "human_factors_groups", "fatigue", "precision",
+        "paper", "calibrate_paper", "compare_paper", "stability"}) {
     const scene::ExperimentFile e = LoadExperiment(Source("experiments/") + f + ".json");
     EXPECT_EQ(FindKind(e.kind).name, e.kind) << f;
   }
@@ -85,7 +90,8 @@ TEST(KindRegistryTest, EveryShippedExperimentLoadsWithARegisteredKind) {
 
 TEST(KindRegistryTest, AnUnregisteredKindNamesTheRegisteredOnes) {
   const std::string path =
-      Write("planned.json", Experiment("sensitivity", Source("experiments/scenes/peg_in_hole.json"), 1));
+      Write("planned.json",
+            Experiment("sensitivity", Source("experiments/scenes/peg_in_hole.json"), 1));
   const std::string message = ErrorOf([&] { LoadExperiment(path); });
   EXPECT_THAT(message, HasSubstr(path));
   EXPECT_THAT(message, HasSubstr("/kind"));
@@ -98,9 +104,10 @@ TEST(KindRegistryTest, AKeyOnlyOtherKindsReadNamesEveryKindThatReadsIt) {
   doc["fatigue"] = {{"segments", 2}};
   const std::string message = ErrorOf([&] { LoadExperiment(Write("t.json", doc)); });
   EXPECT_THAT(message, HasSubstr("/fatigue"));
-  EXPECT_THAT(message, HasSubstr(
-                           "only an experiment of kind \"fatigue\", \"calibrate\" or \"compare\" "
-                           "reads \"fatigue\""));
+  EXPECT_THAT(
+      message,
+      HasSubstr("only an experiment of kind \"fatigue\", \"calibrate\" or \"compare\" "
+                "reads \"fatigue\""));
 }
 
 TEST(KindRegistryTest, APaperRunListsDesignsOfCyclesOnly) {
@@ -124,9 +131,9 @@ TEST(KindRegistryTest, APaperRunListsDesignsOfCyclesOnly) {
 // that validates first throws at once, having simulated nothing.
 TEST(KindRegistryTest, APaperRunValidatesEveryExperimentBeforeTheFirstTrial) {
   const std::string bad_scene = Source("experiments/scenes/peg_in_hole.json");
-  const std::string first =
-      Write("first.json", Experiment("table1", Source("experiments/scenes/peg_in_hole.json"),
-                                     1'000'000));
+  const std::string first = Write(
+      "first.json",
+      Experiment("table1", Source("experiments/scenes/peg_in_hole.json"), 1'000'000));
   const std::string second = Write("second.json", Experiment("table1", bad_scene, 1));
   const json paper = {{"format", "vahf-experiment/1"},
                       {"name", "paper_test"},

@@ -46,7 +46,8 @@ TEST(BuildInfo, RecordsTheVersionOfEveryLibraryLinked) {
   EXPECT_EQ(libraries.at("Ceres"), CERES_VERSION_STRING);
   EXPECT_EQ(libraries.at("GSL"), GSL_VERSION);
   EXPECT_EQ(libraries.at("Embree"), RTC_VERSION_STRING);
-  for (const char* name : {"Simbody", "SUNDIALS", "Eigen", "nlohmann_json", "fmt", "CLI11"})
+  for (const char* name :
+       {"Simbody", "SUNDIALS", "Eigen", "nlohmann_json", "fmt", "CLI11"})
     EXPECT_TRUE(std::regex_match(libraries.at(name), std::regex(R"([0-9]+(\.[0-9]+)*)")))
         << name << " " << libraries.at(name);
   EXPECT_EQ(libraries.count("Random123"), 1u);  // "unknown": its package states none

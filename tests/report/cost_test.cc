@@ -29,12 +29,12 @@ TEST(Cost, PerPartInOrderOfAppearance) {
   ASSERT_EQ(t.rows(), 2u);
   EXPECT_EQ(std::get<std::string>(t.at(0, 0)), "rod");
   EXPECT_EQ(std::get<std::int64_t>(t.at(0, 1)), 3);
-  EXPECT_DOUBLE_EQ(std::get<double>(t.at(0, 2)), 0.2);   // median of 0.1, 0.2, 0.3
+  EXPECT_DOUBLE_EQ(std::get<double>(t.at(0, 2)), 0.2);    // median of 0.1, 0.2, 0.3
   EXPECT_DOUBLE_EQ(std::get<double>(t.at(0, 3)), 0.298);  // 0.2 + 0.98 * 0.1
   EXPECT_DOUBLE_EQ(std::get<double>(t.at(0, 4)), 0.3);
   EXPECT_NEAR(std::get<double>(t.at(0, 5)), 0.6, 1e-15);
   EXPECT_DOUBLE_EQ(std::get<double>(t.at(0, 6)), 0.6);
-  EXPECT_DOUBLE_EQ(std::get<double>(t.at(0, 7)), 3.0);   // 0.6 / 0.2
+  EXPECT_DOUBLE_EQ(std::get<double>(t.at(0, 7)), 3.0);  // 0.6 / 0.2
   EXPECT_EQ(std::get<std::string>(t.at(1, 0)), "ring");
   EXPECT_DOUBLE_EQ(std::get<double>(t.at(1, 7)), 10.0);
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "vahf/kinds/kind.h"
 #include "vahf/experiment/design.h"
+#include "vahf/kinds/kind.h"
 #include "vahf/report/output_directory.h"
 #include "vahf/report/run_output.h"
 #include "vahf/scene/experiment_file.h"
@@ -99,15 +99,16 @@ void WritesTheDocumentedFiles(const Output& one) {
   EXPECT_EQ(report.find("The paper's claims"), std::string::npos);  // precision has none
   EXPECT_NE(report.find("**Recommended for peg_in_hole: "), std::string::npos);
   for (const char* f :
-       {"manifest.json", "report.md", "summary.json", "measured.json", "precision_trials.csv",
-        "precision_settings.csv", "precision_wall.csv",
-        "plots/precision_peg_in_hole_difference.png", "plots/precision_peg_in_hole_ks.png",
-        "plots/precision_peg_in_hole_outcomes.png"})
+       {"manifest.json", "report.md", "summary.json", "measured.json",
+        "precision_trials.csv", "precision_settings.csv", "precision_wall.csv",
+        "plots/precision_peg_in_hole_difference.png",
+        "plots/precision_peg_in_hole_ks.png", "plots/precision_peg_in_hole_outcomes.png"})
     EXPECT_GT(std::filesystem::file_size(std::filesystem::path(one.dir) / f), 0u) << f;
   const nlohmann::json manifest =
       nlohmann::json::parse(Read(std::filesystem::path(one.dir) / "manifest.json"));
-  EXPECT_EQ(manifest["result_files"],
-            (nlohmann::json{"precision_settings.csv", "precision_trials.csv", "summary.json"}));
+  EXPECT_EQ(
+      manifest["result_files"],
+      (nlohmann::json{"precision_settings.csv", "precision_trials.csv", "summary.json"}));
   EXPECT_EQ(manifest["measured_files"],
             (nlohmann::json{"precision_wall.csv", "measured.json"}));
 }
@@ -126,7 +127,8 @@ void TablesHaveARowPerTrialAndPerSetting(const Output& one) {
   EXPECT_EQ(wall[0], "scene,setting,cycle,position,part,status,wall_s");
   const std::vector<std::string> settings = Lines(Read(dir / "precision_settings.csv"));
   ASSERT_EQ(settings.size(), 1u + 4);
-  EXPECT_THAT(settings[0], ::testing::StartsWith("scene,setting,reference,position,part,"));
+  EXPECT_THAT(settings[0],
+              ::testing::StartsWith("scene,setting,reference,position,part,"));
 }
 
 void SummaryComparesEachSettingWithTheReference(const Output& one) {
@@ -142,8 +144,9 @@ void SummaryComparesEachSettingWithTheReference(const Output& one) {
   EXPECT_EQ(scene["parts"], nlohmann::json{"peg"});
   std::vector<std::string> labels;
   for (const auto& s : scene["settings"]) labels.push_back(s["setting"]);
-  EXPECT_THAT(labels, ElementsAre("reference: RungeKuttaMerson 1e-4", "RungeKuttaMerson 1e-3",
-                                  "CPodes 1e-3", "visibility/grid 32"));
+  EXPECT_THAT(labels,
+              ElementsAre("reference: RungeKuttaMerson 1e-4", "RungeKuttaMerson 1e-3",
+                          "CPodes 1e-3", "visibility/grid 32"));
   // The reference against itself: no difference of any kind.
   const nlohmann::json& self = scene["settings"][0];
   EXPECT_EQ(self["reference"], true);
@@ -152,9 +155,9 @@ void SummaryComparesEachSettingWithTheReference(const Output& one) {
   EXPECT_EQ(part["part"], "peg");
   EXPECT_EQ(part["cycles"], 3);
   EXPECT_EQ(part["paired"], part["completed"]);
-  for (const char* key : {"mean_difference_s", "ci_lower_s", "ci_upper_s",
-                          "difference_bound_s", "mean_abs_difference_s", "ks_distance",
-                          "ks_shift_s", "outcome_share"})
+  for (const char* key :
+       {"mean_difference_s", "ci_lower_s", "ci_upper_s", "difference_bound_s",
+        "mean_abs_difference_s", "ks_distance", "ks_shift_s", "outcome_share"})
     EXPECT_EQ(part[key], 0.0) << key;
   EXPECT_EQ(part["ks_p_value"], 1.0);
   EXPECT_EQ(part["p10_s"], part["reference_p10_s"]);
@@ -175,7 +178,8 @@ void MeasuredJsonHoldsWallTimesAndTheRecommendation(const Output& one) {
       nlohmann::json::parse(Read(std::filesystem::path(one.dir) / "measured.json"));
   const nlohmann::json& m = measured["sections"]["precision"];
   const nlohmann::json& rec = m["recommended"]["peg_in_hole"];
-  for (const char* key : {"setting", "overrides", "wall_per_cycle_median_s", "errors", "why"})
+  for (const char* key :
+       {"setting", "overrides", "wall_per_cycle_median_s", "errors", "why"})
     EXPECT_TRUE(rec.contains(key)) << key;
   EXPECT_TRUE(rec["errors"].contains("peg"));
   ASSERT_EQ(m["scenes"][0]["settings"].size(), 4u);

@@ -215,8 +215,9 @@ TEST(Recommend, TheReferenceWhenNoCheaperSettingMeetsTheRule) {
 }
 
 TEST(Recommend, TiesGoToTheEarlierSetting) {
-  const std::vector<Candidate> c = {
-      {"reference", 10.0, true, ""}, {"first", 2.0, false, ""}, {"second", 2.0, false, ""}};
+  const std::vector<Candidate> c = {{"reference", 10.0, true, ""},
+                                    {"first", 2.0, false, ""},
+                                    {"second", 2.0, false, ""}};
   EXPECT_EQ(Recommend(c).index, 1u);
 }
 

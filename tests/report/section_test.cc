@@ -40,8 +40,9 @@ TEST(WelchIfDefined, SaysWhyWhenTheTestIsUndefined) {
   EXPECT_FALSE(WelchIfDefined({1.0}, {1.0, 2.0}, "a", "b", &why));
   EXPECT_EQ(why, "a has 1 value(s) and b 2: the test needs two each");
   EXPECT_FALSE(WelchIfDefined({3.0, 3.0}, {4.0, 4.0, 4.0}, "a", "b", &why));
-  EXPECT_EQ(why, "neither a (3 every time) nor b (4 every time) varies: the t statistic is "
-                 "undefined");
+  EXPECT_EQ(why,
+            "neither a (3 every time) nor b (4 every time) varies: the t statistic is "
+            "undefined");
   const auto w = WelchIfDefined({3.0, 3.0}, {4.0, 5.0}, "a", "b", &why);
   ASSERT_TRUE(w);
   EXPECT_DOUBLE_EQ(w->mean_difference, -1.5);

@@ -112,11 +112,15 @@ TEST(StabilityRun, ASuiteEndingAsItExpectsPassesAndWritesItsReport) {
   // A row per trial: moves 2 integrators x 2 seeds, out_of_reach 1, tired 1.
   const std::vector<std::string> rows = Lines(ReadFile(dir / "stability_trials.csv"));
   ASSERT_EQ(rows.size(), 1u + 4 + 1 + 1);
-  EXPECT_THAT(rows[0], ::testing::StartsWith("case,integrator,seed_index,status,expected,pass,"));
-  EXPECT_THAT(rows[1], ::testing::StartsWith("moves,RungeKuttaMerson,0,completed,completed,yes,"));
+  EXPECT_THAT(rows[0],
+              ::testing::StartsWith("case,integrator,seed_index,status,expected,pass,"));
+  EXPECT_THAT(rows[1],
+              ::testing::StartsWith("moves,RungeKuttaMerson,0,completed,completed,yes,"));
   EXPECT_THAT(rows[4], ::testing::StartsWith("moves,CVODE,1,completed,completed,yes,"));
-  EXPECT_THAT(rows[5], ::testing::StartsWith("out_of_reach,CVODE,0,unreachable,unreachable,yes,"));
-  EXPECT_THAT(rows[6], ::testing::StartsWith("tired,RungeKuttaMerson,0,exhausted,exhausted,yes,"));
+  EXPECT_THAT(rows[5],
+              ::testing::StartsWith("out_of_reach,CVODE,0,unreachable,unreachable,yes,"));
+  EXPECT_THAT(rows[6],
+              ::testing::StartsWith("tired,RungeKuttaMerson,0,exhausted,exhausted,yes,"));
   EXPECT_EQ(Lines(ReadFile(dir / "stability_cost.csv")).size(), rows.size());
   const nlohmann::json summary = nlohmann::json::parse(ReadFile(dir / "summary.json"));
   const nlohmann::json& s = summary["sections"]["stability"];
@@ -132,13 +136,14 @@ TEST(StabilityRun, ASuiteEndingAsItExpectsPassesAndWritesItsReport) {
   const std::string report = ReadFile(dir / "report.md");
   EXPECT_THAT(report, HasSubstr("Every case passes."));
   EXPECT_THAT(report, HasSubstr("| moves | CVODE | completed 2 | completed | pass |"));
-  EXPECT_THAT(report, HasSubstr("| tired | RungeKuttaMerson | exhausted | exhausted | pass |"));
+  EXPECT_THAT(report,
+              HasSubstr("| tired | RungeKuttaMerson | exhausted | exhausted | pass |"));
 
   // Two threads: the same results, to the bit.
   const Output two = RunSuite(Suite(), "pass", 2);
   EXPECT_EQ(two.status, 0);
-  EXPECT_EQ(nlohmann::json::parse(ReadFile(std::filesystem::path(two.dir) / "manifest.json"))
-                ["results_digest"],
+  EXPECT_EQ(nlohmann::json::parse(ReadFile(std::filesystem::path(two.dir) /
+                                           "manifest.json"))["results_digest"],
             manifest["results_digest"]);
   EXPECT_EQ(ReadFile(std::filesystem::path(two.dir) / "stability_trials.csv"),
             ReadFile(dir / "stability_trials.csv"));
@@ -162,9 +167,11 @@ TEST(StabilityRun, ACaseEndingOtherwiseFailsTheRunWithItsOutputsWritten) {
             nlohmann::json{"ended unreachable, expected jammed"});
   const std::string report = ReadFile(dir / "report.md");
   EXPECT_THAT(report, HasSubstr("1 case(s) fail: out_of_reach."));
-  EXPECT_THAT(report, HasSubstr("| out_of_reach | CVODE | unreachable | jammed | **FAIL**: "
-                                "ended unreachable, expected jammed |"));
-  EXPECT_THAT(ReadFile(dir / "stability_trials.csv"), HasSubstr("out_of_reach,CVODE,0,unreachable,jammed,no,"));
+  EXPECT_THAT(report,
+              HasSubstr("| out_of_reach | CVODE | unreachable | jammed | **FAIL**: "
+                        "ended unreachable, expected jammed |"));
+  EXPECT_THAT(ReadFile(dir / "stability_trials.csv"),
+              HasSubstr("out_of_reach,CVODE,0,unreachable,jammed,no,"));
 }
 
 TEST(StabilityRun, CompactWarningsCountsEachKind) {

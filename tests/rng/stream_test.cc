@@ -113,14 +113,18 @@ TEST(Stream, PurposesTrialsAndDecisionsAreUncorrelated) {
   const auto base = Uniforms({7, 0}, 0, Purpose::kTargetEstimate, kN);
   EXPECT_LT(std::abs(Correlation(base, Uniforms({7, 0}, 0, Purpose::kVisionError, kN))),
             bound);
-  EXPECT_LT(std::abs(Correlation(base, Uniforms({7, 1}, 0, Purpose::kTargetEstimate, kN))),
-            bound);
-  EXPECT_LT(std::abs(Correlation(base, Uniforms({7, 0}, 1, Purpose::kTargetEstimate, kN))),
-            bound);
-  EXPECT_LT(std::abs(Correlation(base, Uniforms({8, 0}, 0, Purpose::kTargetEstimate, kN))),
-            bound);
+  EXPECT_LT(
+      std::abs(Correlation(base, Uniforms({7, 1}, 0, Purpose::kTargetEstimate, kN))),
+      bound);
+  EXPECT_LT(
+      std::abs(Correlation(base, Uniforms({7, 0}, 1, Purpose::kTargetEstimate, kN))),
+      bound);
+  EXPECT_LT(
+      std::abs(Correlation(base, Uniforms({8, 0}, 0, Purpose::kTargetEstimate, kN))),
+      bound);
   // Serial correlation within one stream.
-  std::vector<double> lag0(base.begin(), base.end() - 1), lag1(base.begin() + 1, base.end());
+  std::vector<double> lag0(base.begin(), base.end() - 1),
+      lag1(base.begin() + 1, base.end());
   EXPECT_LT(std::abs(Correlation(lag0, lag1)), bound);
 }
 
@@ -130,7 +134,8 @@ TEST(Stream, FirstDrawsAcrossTrialsAreUniform) {
   constexpr int kBins = 20;
   std::vector<int> count(kBins, 0);
   for (int t = 0; t < kN; ++t) {
-    const double u = Stream({11, static_cast<std::uint64_t>(t)}, 0, Purpose::kTest).Uniform();
+    const double u =
+        Stream({11, static_cast<std::uint64_t>(t)}, 0, Purpose::kTest).Uniform();
     ++count[std::min(kBins - 1, static_cast<int>(u * kBins))];
   }
   double chi2 = 0;

@@ -78,9 +78,9 @@ TEST(JsonReaderTest, SameKeyInDifferentObjectsIsNoRepeat) {
 }
 
 TEST(JsonReaderTest, DuplicateKeyInAFile) {
-  const std::string path = testing::WriteFile(
-      testing::TestDir("vahf_json_reader_test") / "scene.json",
-      R"({"format": "vahf-scene/1", "name": "x", "name": "y"})");
+  const std::string path =
+      testing::WriteFile(testing::TestDir("vahf_json_reader_test") / "scene.json",
+                         R"({"format": "vahf-scene/1", "name": "x", "name": "y"})");
   try {
     ReadJsonFile(path);
     FAIL() << "no InputError";
@@ -157,7 +157,8 @@ TEST(JsonReaderTest, ShortValuesAreWhole) {
   EXPECT_EQ(JsonNode(json::parse(R"({"a":[1,{"b":[2]}],"c":"d"})"), file).ValueText(),
             R"({"a":[1,{"b":[2]}],"c":"d"})");
   EXPECT_EQ(JsonNode(json(std::nan("")), file).ValueText(), "nan");
-  EXPECT_EQ(JsonNode(json(-std::numeric_limits<double>::infinity()), file).ValueText(), "-inf");
+  EXPECT_EQ(JsonNode(json(-std::numeric_limits<double>::infinity()), file).ValueText(),
+            "-inf");
 }
 
 TEST(JsonReaderTest, PointerStaysOnOneLine) {

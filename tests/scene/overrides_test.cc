@@ -8,7 +8,6 @@
 // values it sets itself), each experiment a paper run lists, and the
 // operators an assembly_time experiment lists; it records the file in
 // overrides_path.
-#include "vahf/kinds/kind.h"
 #include "vahf/scene/overrides.h"
 
 #include <gmock/gmock.h>
@@ -20,6 +19,7 @@
 
 #include "support/test_files.h"
 #include "vahf/core/error.h"
+#include "vahf/kinds/kind.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/scene_loader.h"
 

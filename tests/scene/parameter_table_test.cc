@@ -26,13 +26,19 @@ TEST(ParameterTable, WellFormed) {
   for (const ParamSpec& s : ParameterTable()) {
     const std::string name = std::string(s.group) + "/" + s.key;
     EXPECT_TRUE(names.insert(name).second) << "duplicate " << name;
-    EXPECT_EQ((s.real != nullptr) + (s.count != nullptr) + (s.text != nullptr), 1) << name;
+    EXPECT_EQ((s.real != nullptr) + (s.count != nullptr) + (s.text != nullptr), 1)
+        << name;
     if (s.real) {
       const double v = s.real(defaults);
       switch (s.rule) {
-        case ParamRule::kClosed: EXPECT_TRUE(v >= s.lo && v <= s.hi) << name; break;
-        case ParamRule::kOpenBelow: EXPECT_TRUE(v > s.lo && v <= s.hi) << name; break;
-        default: ADD_FAILURE() << name << " has a rule for another kind of value";
+        case ParamRule::kClosed:
+          EXPECT_TRUE(v >= s.lo && v <= s.hi) << name;
+          break;
+        case ParamRule::kOpenBelow:
+          EXPECT_TRUE(v > s.lo && v <= s.hi) << name;
+          break;
+        default:
+          ADD_FAILURE() << name << " has a rule for another kind of value";
       }
     }
     if (s.count) {
@@ -45,7 +51,8 @@ TEST(ParameterTable, WellFormed) {
     if (s.text) {
       EXPECT_EQ(s.rule, ParamRule::kChoice) << name;
       const std::string v = s.text(defaults);
-      EXPECT_NE(std::find(s.choices.begin(), s.choices.end(), v), s.choices.end()) << name;
+      EXPECT_NE(std::find(s.choices.begin(), s.choices.end(), v), s.choices.end())
+          << name;
     }
   }
   EXPECT_GE(names.size(), 30u);
@@ -59,8 +66,8 @@ TEST(ParameterTable, AccessorsReachDistinctFields) {
     s.real(p) = 12345.0;
     for (const ParamSpec& other : ParameterTable()) {
       if (!other.real || &other == &s) continue;
-      EXPECT_NE(other.real(p), 12345.0) << s.group << "/" << s.key << " aliases "
-                                        << other.group << "/" << other.key;
+      EXPECT_NE(other.real(p), 12345.0)
+          << s.group << "/" << s.key << " aliases " << other.group << "/" << other.key;
     }
   }
 }
@@ -106,7 +113,8 @@ TEST(ParameterTable, AccuracyLiesStrictlyBetweenZeroAndOne) {
     const nlohmann::json value = bad;
     Parameters p;
     try {
-      ReadParamValue(*accuracy, JsonNode(value, file, "/parameters/simulation/accuracy"), &p);
+      ReadParamValue(*accuracy, JsonNode(value, file, "/parameters/simulation/accuracy"),
+                     &p);
       ADD_FAILURE() << "accuracy " << bad << " accepted";
     } catch (const InputError& e) {
       EXPECT_EQ(e.rule(), "must lie in [1e-12, 0.5]") << bad;
@@ -116,8 +124,9 @@ TEST(ParameterTable, AccuracyLiesStrictlyBetweenZeroAndOne) {
   Parameters p;
   ReadParamValue(*accuracy, JsonNode(good, file), &p);
   EXPECT_EQ(p.simulation.accuracy, 0.5);
-  EXPECT_NE(ParameterTableMarkdown().find("| `simulation/accuracy` | 1 | in [1e-12, 0.5] |"),
-            std::string::npos);
+  EXPECT_NE(
+      ParameterTableMarkdown().find("| `simulation/accuracy` | 1 | in [1e-12, 0.5] |"),
+      std::string::npos);
 }
 
 TEST(ParameterTable, DocsAreCurrent) {

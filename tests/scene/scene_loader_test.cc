@@ -3,7 +3,6 @@
 // closed-form volume of its profiles and parameter overrides in scene.params;
 // every malformed variant of it (one mutation each) throws vahf::InputError
 // naming the file, the exact JSON pointer, the value and the rule broken.
-#include "vahf/kinds/kind.h"
 #include "vahf/scene/scene_loader.h"
 
 #include <gmock/gmock.h>
@@ -23,6 +22,7 @@
 #include "support/test_files.h"
 #include "vahf/core/error.h"
 #include "vahf/human/factor_curves.h"
+#include "vahf/kinds/kind.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/parameter_table.h"
 
@@ -33,9 +33,9 @@ using kinds::ParseExperiment;
 namespace {
 
 using ::nlohmann::json;
+using ::testing::HasSubstr;
 using testing::Lower;
 using testing::WriteFile;
-using ::testing::HasSubstr;
 
 constexpr char kFile[] = "test_scene.json";
 constexpr double kPi = 3.14159265358979323846;
@@ -291,7 +291,8 @@ TEST(ParseSceneTest, WhatReadsFileWhereValueRule) {
     ParseScene(doc, kFile);
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "test_scene.json: /parts/1/friction = -0.5: must lie in [0, 5]");
+    EXPECT_STREQ(e.what(),
+                 "test_scene.json: /parts/1/friction = -0.5: must lie in [0, 5]");
   }
 }
 
@@ -579,13 +580,15 @@ const BadCase kBadCases[] = {
      "/operator/position/0", "must lie in [-100, 100]", "1e+308"},
     {"PoseFarAway", [](json& d) { d["parts"][1]["target"]["position"][2] = -1e308; },
      "/parts/1/target/position/2", "must lie in [-100, 100]", ""},
-    {"RotationHuge",
-     [](json& d) { d["parts"][1]["pose"]["rotation_xyz_deg"][0] = 1e20; },
+    {"RotationHuge", [](json& d) { d["parts"][1]["pose"]["rotation_xyz_deg"][0] = 1e20; },
      "/parts/1/pose/rotation_xyz_deg/0", "must lie in [-360, 360]", ""},
-    {"GravityHuge", [](json& d) { d["gravity"] = {0.0, 0.0, -1e300}; }, "/gravity/2",
-     "must lie in [-100, 100]", ""},
-    {"DensityHuge", [](json& d) { d["parts"][1]["density"] = 1.7e308; }, "/parts/1/density",
-     "must lie in [1, 1e7]", ""},
+    {"GravityHuge",
+     [](json& d) {
+       d["gravity"] = {0.0, 0.0, -1e300};
+     },
+     "/gravity/2", "must lie in [-100, 100]", ""},
+    {"DensityHuge", [](json& d) { d["parts"][1]["density"] = 1.7e308; },
+     "/parts/1/density", "must lie in [1, 1e7]", ""},
     {"DensityGivesAMassBeyondTheRule", [](json& d) { d["parts"][1]["density"] = 1.0; },
      "/parts/1/density", "a part's mass lies in [1e-4, 10000] kg", ""},
     {"MassGivesADensityBeyondTheRule",
@@ -598,14 +601,17 @@ const BadCase kBadCases[] = {
      "/parts/1/mass", "a part's density lies in [1, 1e7] kg/m^3", ""},
     {"FrictionHuge", [](json& d) { d["parts"][1]["friction"] = 50; }, "/parts/1/friction",
      "must lie in [0, 5]", "50"},
-    {"GraspOutsideThePart", [](json& d) { d["parts"][1]["grasp"] = {0.0, 0.0, 0.5}; },
+    {"GraspOutsideThePart",
+     [](json& d) {
+       d["parts"][1]["grasp"] = {0.0, 0.0, 0.5};
+     },
      "/parts/1/grasp", "within its bounding sphere", ""},
     {"ProfileBeyondTenMetres", [](json& d) { Profile(d, 1)[3][0] = 1e300; },
      "/parts/1/geometry/profile/3", "lies beyond 10 m", ""},
     {"ProfileTooSmall",
      [](json& d) {
-       Profile(d, 1) = json::array({{0.0, 0.0}, {1e-6, 0.0}, {1e-6, 1e-6}, {0.0, 1e-6},
-                                    {0.0, 0.0}});
+       Profile(d, 1) =
+           json::array({{0.0, 0.0}, {1e-6, 0.0}, {1e-6, 1e-6}, {0.0, 1e-6}, {0.0, 0.0}});
      },
      "/parts/1/geometry/profile", "encloses 1e-12 m^2; at least 1e-10 m^2", ""},
     {"ProfileTooManyVertices",
@@ -619,7 +625,8 @@ const BadCase kBadCases[] = {
      "/parts/1/geometry/profile", "a profile has at most 1000 vertices", ""},
     {"ContactShellTooFine",
      [](json& d) { d["parameters"]["contact"]["shell_spacing"] = 1e-5; },
-     "/parameters/contact", "part 'peg': its contact shell at contact/shell_spacing 1e-05 m", ""},
+     "/parameters/contact",
+     "part 'peg': its contact shell at contact/shell_spacing 1e-05 m", ""},
     {"RimsTooFine",
      [](json& d) {
        d["parameters"]["contact"]["model"] = "resolving";
@@ -631,7 +638,9 @@ const BadCase kBadCases[] = {
      },
      "/parameters/contact", "its rims at contact/rim_spacing", ""},
     {"BoxEdgeTooLong",
-     [](json& d) { d["parts"][1]["geometry"] = {{"type", "box"}, {"size", {20.0, 1.0, 1.0}}}; },
+     [](json& d) {
+       d["parts"][1]["geometry"] = {{"type", "box"}, {"size", {20.0, 1.0, 1.0}}};
+     },
      "/parts/1/geometry/size/0", "must lie in [1e-4, 10]", "20"},
     {"ContactBlendSubnormal",
      [](json& d) { d["parameters"]["guidance"]["contact_blend"] = 5e-324; },

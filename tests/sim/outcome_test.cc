@@ -47,8 +47,10 @@ TEST(CheckState, DivergenceBoundsTheFastestPointOfTheBoundingSphere) {
   scene::SimulationParams sim;
   sim.divergence_speed = 20.0;
   // 12 m/s + 100 rad/s * 0.08 m = 20 m/s: at the threshold, not past it.
-  EXPECT_FALSE(CheckState(Moving({12, 0, 0}, {0, 100, 0}), 0.08, sim, "decision", 2, 0.2));
-  std::optional<Ending> e = CheckState(Moving({12, 0, 0}, {0, 100, 0}), 0.081, sim, "decision", 2, 0.2);
+  EXPECT_FALSE(
+      CheckState(Moving({12, 0, 0}, {0, 100, 0}), 0.08, sim, "decision", 2, 0.2));
+  std::optional<Ending> e =
+      CheckState(Moving({12, 0, 0}, {0, 100, 0}), 0.081, sim, "decision", 2, 0.2);
   ASSERT_TRUE(e);
   EXPECT_EQ(e->status, Status::kNumericalFailure);
   EXPECT_THAT(e->detail, HasSubstr("up to 20.1 m/s > divergence_speed 20 m/s"));

@@ -12,8 +12,8 @@
 
 #include <Eigen/Geometry>
 
-#include "vahf/scene/parameters.h"
 #include "support/motion_differences.h"
+#include "vahf/scene/parameters.h"
 
 namespace vahf::sim {
 namespace {
@@ -39,7 +39,8 @@ struct Body {
     model.com = Vector3d(0.05, -0.02, 0.03);
     model.inertia_body << 0.01, 0.001, 0, 0.001, 0.02, -0.002, 0, -0.002, 0.03;
     contact::RigidMotion m;
-    m.pose.linear() = Eigen::AngleAxisd(0.6, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    m.pose.linear() =
+        Eigen::AngleAxisd(0.6, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
     m.pose.translation() = Vector3d(0.1, 0.2, 0.9);
     m.velocity = {0.3, -0.1, 0.2};
     m.angular_velocity = {1.5, -2.0, 0.7};
@@ -90,11 +91,13 @@ TEST(RigidBodyJacobian, ConstantLoads) {
       DerivativeJacobian(b.model, b.y, loads, LoadJacobian::Zero(), b.gravity);
   const Eigen::MatrixXd differences = StateDifferences(
       [&](const BodyState& y) { return Derivative(b.model, y, loads, b.gravity); }, b.y);
-  EXPECT_TRUE(vahf::testing::BlocksAgree(J, differences, 1e-6, 1e-9, kSegments, kSegments));
+  EXPECT_TRUE(
+      vahf::testing::BlocksAgree(J, differences, 1e-6, 1e-9, kSegments, kSegments));
   // Scaling the quaternion turns nothing: its radial direction is in the
   // null space of every row but qdot's.
   const Eigen::VectorXd radial = (Eigen::VectorXd(13) << Eigen::VectorXd::Zero(3),
-                                  b.y.segment<4>(3), Eigen::VectorXd::Zero(6)).finished();
+                                  b.y.segment<4>(3), Eigen::VectorXd::Zero(6))
+                                     .finished();
   EXPECT_LT((J * radial).tail<6>().norm(), 1e-12 * J.norm());
 }
 
@@ -104,13 +107,15 @@ TEST(RigidBodyJacobian, MotionDependentLoads) {
   const LoadJacobian dloads = vahf::testing::MotionDifferences(
       [](const contact::RigidMotion& x) { return Stacked(SpringLoads(x)); }, m,
       {1e-7, 1e-7, 1e-7, 1e-7});
-  const BodyJacobian J = DerivativeJacobian(b.model, b.y, SpringLoads(m), dloads, b.gravity);
+  const BodyJacobian J =
+      DerivativeJacobian(b.model, b.y, SpringLoads(m), dloads, b.gravity);
   const Eigen::MatrixXd differences = StateDifferences(
       [&](const BodyState& y) {
         return Derivative(b.model, y, SpringLoads(MotionOf(y)), b.gravity);
       },
       b.y);
-  EXPECT_TRUE(vahf::testing::BlocksAgree(J, differences, 1e-6, 1e-9, kSegments, kSegments));
+  EXPECT_TRUE(
+      vahf::testing::BlocksAgree(J, differences, 1e-6, 1e-9, kSegments, kSegments));
 }
 
 }  // namespace

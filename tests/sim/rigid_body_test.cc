@@ -88,7 +88,8 @@ TEST(RigidBody, TorqueAboutTheCentreTurnsByTheInverseInertia) {
   const BodyState dy = Derivative(b.model, StateOf(b.motion), loads, Vector3d::Zero());
   const Matrix3d I = b.R() * b.model.inertia_body * b.R().transpose();
   EXPECT_LT((I * dy.segment<3>(10) - tau).norm(), 1e-14);
-  EXPECT_LT(CentreAcceleration(b, dy).norm(), 1e-12);  // a couple does not move the centre
+  EXPECT_LT(CentreAcceleration(b, dy).norm(),
+            1e-12);  // a couple does not move the centre
 }
 
 TEST(RigidBody, ForceThroughTheCentreAcceleratesWithoutTurning) {
@@ -96,7 +97,7 @@ TEST(RigidBody, ForceThroughTheCentreAcceleratesWithoutTurning) {
   const Vector3d F(3.0, -1.0, 2.0);
   const Vector3d c = b.R() * b.model.com;
   Loads loads;
-  loads.force = F;          // at the origin,
+  loads.force = F;            // at the origin,
   loads.torque = c.cross(F);  // plus its moment: the same force acting at the centre
   const BodyState dy = Derivative(b.model, StateOf(b.motion), loads, Vector3d::Zero());
   EXPECT_LT(Vector3d(dy.segment<3>(10)).norm(), 1e-14);
@@ -110,11 +111,10 @@ TEST(RigidBody, QuaternionRateTurnsTheFrameByOmega) {
   const BodyState dy = Derivative(b.model, y, Loads{}, Vector3d::Zero());
   const double h = 1e-7;
   const BodyState ahead = y + h * dy;
-  const Matrix3d expected =
-      Eigen::AngleAxisd(h * b.motion.angular_velocity.norm(),
-                        b.motion.angular_velocity.normalized())
-          .toRotationMatrix() *
-      b.R();
+  const Matrix3d expected = Eigen::AngleAxisd(h * b.motion.angular_velocity.norm(),
+                                              b.motion.angular_velocity.normalized())
+                                .toRotationMatrix() *
+                            b.R();
   EXPECT_LT((MotionOf(ahead).pose.linear() - expected).norm(), 1e-12);
 }
 

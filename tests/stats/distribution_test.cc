@@ -92,10 +92,10 @@ TEST(KsShift, DistanceOfTheSampleFromItselfShifted) {
 TEST(KsShift, EquivalentShiftIsTheSmallestShiftReachingTheDistance) {
   const std::vector<double> xs = {7, 1, 4, 2};
   EXPECT_EQ(KsEquivalentShift(xs, 0.0), 0.0);
-  EXPECT_EQ(KsEquivalentShift(xs, 0.25), 0.0);  // any difference at all gives 1/n
-  EXPECT_EQ(KsEquivalentShift(xs, 0.5), 1.0);   // 2 - 1
-  EXPECT_EQ(KsEquivalentShift(xs, 0.75), 3.0);  // 4 - 1
-  EXPECT_EQ(KsEquivalentShift(xs, 1.0), 6.0);   // 7 - 1
+  EXPECT_EQ(KsEquivalentShift(xs, 0.25), 0.0);         // any difference at all gives 1/n
+  EXPECT_EQ(KsEquivalentShift(xs, 0.5), 1.0);          // 2 - 1
+  EXPECT_EQ(KsEquivalentShift(xs, 0.75), 3.0);         // 4 - 1
+  EXPECT_EQ(KsEquivalentShift(xs, 1.0), 6.0);          // 7 - 1
   EXPECT_EQ(KsEquivalentShift(xs, 0.5 + 1e-15), 1.0);  // a distance's rounding
   EXPECT_EQ(KsEquivalentShift({3.0}, 1.0), 0.0);
   // Just above it the shifted sample reaches the distance; at it, not yet.

@@ -36,8 +36,8 @@ TEST(PairedTTest, RemovesWhatThePairsShare) {
 }
 
 TEST(PairedTTest, RefusesWhatIsUndefined) {
-  EXPECT_THROW(PairedTTest({1, 2}, {1}), std::invalid_argument);        // unpaired
-  EXPECT_THROW(PairedTTest({1}, {0}), std::invalid_argument);           // one pair
+  EXPECT_THROW(PairedTTest({1, 2}, {1}), std::invalid_argument);           // unpaired
+  EXPECT_THROW(PairedTTest({1}, {0}), std::invalid_argument);              // one pair
   EXPECT_THROW(PairedTTest({2, 3, 4}, {1, 2, 3}), std::invalid_argument);  // no spread
   EXPECT_THROW(PairedTTest({NAN, 3}, {1, 2}), std::invalid_argument);
 }
@@ -47,7 +47,7 @@ TEST(McNemarRateFellP, IsTheBinomialTailOfTheDiscordantPairs) {
   EXPECT_NEAR(McNemarRateFellP(5, 0), 1.0 / 32.0, 1e-14);
   EXPECT_NEAR(McNemarRateFellP(3, 1), 5.0 / 16.0, 1e-14);  // P(X >= 3 | n = 4)
   EXPECT_DOUBLE_EQ(McNemarRateFellP(0, 4), 1.0);
-  EXPECT_DOUBLE_EQ(McNemarRateFellP(0, 0), 1.0);         // nothing discordant
+  EXPECT_DOUBLE_EQ(McNemarRateFellP(0, 0), 1.0);  // nothing discordant
   EXPECT_THROW(McNemarRateFellP(-1, 2), std::invalid_argument);
 }
 

@@ -24,13 +24,20 @@ inline contact::RigidMotion Moved(contact::RigidMotion m, int column, double e) 
   const int axis = column % 3;
   const Eigen::Vector3d step = e * Eigen::Vector3d::Unit(axis);
   switch (column / 3) {
-    case 0: m.pose.translation() += step; break;
-    case 1:
-      m.pose.linear() = Eigen::AngleAxisd(e, Eigen::Vector3d::Unit(axis)).toRotationMatrix() *
-                        m.pose.linear();
+    case 0:
+      m.pose.translation() += step;
       break;
-    case 2: m.velocity += step; break;
-    default: m.angular_velocity += step; break;
+    case 1:
+      m.pose.linear() =
+          Eigen::AngleAxisd(e, Eigen::Vector3d::Unit(axis)).toRotationMatrix() *
+          m.pose.linear();
+      break;
+    case 2:
+      m.velocity += step;
+      break;
+    default:
+      m.angular_velocity += step;
+      break;
   }
   return m;
 }
@@ -47,8 +54,9 @@ Eigen::MatrixXd MotionDifferences(const F& f, const contact::RigidMotion& m,
     // The step as represented: 0.93 m + 1e-12 m is not 1e-12 more.
     double step = 2 * e;
     if (j < 3) step = up.pose.translation()[j] - down.pose.translation()[j];
-    if (j >= 6) step = j < 9 ? up.velocity[j - 6] - down.velocity[j - 6]
-                             : up.angular_velocity[j - 9] - down.angular_velocity[j - 9];
+    if (j >= 6)
+      step = j < 9 ? up.velocity[j - 6] - down.velocity[j - 6]
+                   : up.angular_velocity[j - 9] - down.angular_velocity[j - 9];
     out.col(j) = (f(up) - f(down)) / step;
   }
   return out;
@@ -59,8 +67,9 @@ Eigen::MatrixXd MotionDifferences(const F& f, const contact::RigidMotion& m,
 // block of its column segment (for blocks that vanish but for the
 // differences' noise). The worst error against its allowance is reported.
 inline ::testing::AssertionResult BlocksAgree(const Eigen::MatrixXd& analytic,
-                                              const Eigen::MatrixXd& reference, double rel,
-                                              double floor, const std::vector<int>& rows,
+                                              const Eigen::MatrixXd& reference,
+                                              double rel, double floor,
+                                              const std::vector<int>& rows,
                                               const std::vector<int>& cols) {
   if (analytic.rows() != reference.rows() || analytic.cols() != reference.cols())
     return ::testing::AssertionFailure() << "sizes differ";
@@ -72,9 +81,9 @@ inline ::testing::AssertionResult BlocksAgree(const Eigen::MatrixXd& analytic,
       group = std::max(group, reference.block(r, c, rows[i], cols[j]).norm());
     for (int r = 0, i = 0; i < static_cast<int>(rows.size()); r += rows[i++]) {
       const double size = reference.block(r, c, rows[i], cols[j]).norm();
-      const double error =
-          (analytic.block(r, c, rows[i], cols[j]) - reference.block(r, c, rows[i], cols[j]))
-              .norm();
+      const double error = (analytic.block(r, c, rows[i], cols[j]) -
+                            reference.block(r, c, rows[i], cols[j]))
+                               .norm();
       const double allowed = rel * size + floor * group;
       if (allowed > 0) worst = std::max(worst, error / allowed);
       if (error > allowed)
@@ -82,7 +91,8 @@ inline ::testing::AssertionResult BlocksAgree(const Eigen::MatrixXd& analytic,
                     "): error " + std::to_string(error) + " of " + std::to_string(size);
     }
   }
-  if (failures.empty()) return ::testing::AssertionSuccess() << "worst error/allowed " << worst;
+  if (failures.empty())
+    return ::testing::AssertionSuccess() << "worst error/allowed " << worst;
   return ::testing::AssertionFailure() << "blocks differ (worst error/allowed " << worst
                                        << "):" << failures << "\nanalytic:\n"
                                        << analytic << "\nreference:\n"
@@ -91,8 +101,8 @@ inline ::testing::AssertionResult BlocksAgree(const Eigen::MatrixXd& analytic,
 
 // The same with 3 x 3 blocks.
 inline ::testing::AssertionResult BlocksAgree(const Eigen::MatrixXd& analytic,
-                                              const Eigen::MatrixXd& reference, double rel,
-                                              double floor = 1e-8) {
+                                              const Eigen::MatrixXd& reference,
+                                              double rel, double floor = 1e-8) {
   const auto threes = [](Eigen::Index n) {
     std::vector<int> out(static_cast<std::size_t>((n + 2) / 3), 3);
     if (n % 3) out.back() = static_cast<int>(n % 3);

@@ -46,8 +46,8 @@ class RevolvedSolid {
         inside = !inside;
       if (a.r == 0.0 && b.r == 0.0) continue;  // on the axis: not surface
       const double er = b.r - a.r, ez = b.z - a.z;
-      const double t =
-          std::clamp(((rho - a.r) * er + (zeta - a.z) * ez) / (er * er + ez * ez), 0.0, 1.0);
+      const double t = std::clamp(
+          ((rho - a.r) * er + (zeta - a.z) * ez) / (er * er + ez * ez), 0.0, 1.0);
       best = std::min(best, std::hypot(rho - (a.r + t * er), zeta - (a.z + t * ez)));
     }
     return inside ? best : 0.0;
@@ -72,7 +72,8 @@ inline double SurfaceDepthInside(const RevolvedSolid& surface, const Eigen::Isom
                                  double face_step) {
   const Eigen::Isometry3d b_inv = b.inverse();
   const auto depth = [&](double r, double z, double phi) {
-    return solid.DepthAt(b_inv, a * Eigen::Vector3d(r * std::cos(phi), r * std::sin(phi), z));
+    return solid.DepthAt(b_inv,
+                         a * Eigen::Vector3d(r * std::cos(phi), r * std::sin(phi), z));
   };
   double deepest = 0;
   // Rims: each profile vertex off the axis, around its circle.
@@ -112,7 +113,8 @@ inline double SurfaceDepthInside(const RevolvedSolid& surface, const Eigen::Isom
     for (int i = 1; i < along; ++i) {
       const double t = static_cast<double>(i) / along;
       const double r = p0.r + t * (p1.r - p0.r), z = p0.z + t * (p1.z - p0.z);
-      for (int j = 0; j < 360; ++j) deepest = std::max(deepest, depth(r, z, M_PI * j / 180));
+      for (int j = 0; j < 360; ++j)
+        deepest = std::max(deepest, depth(r, z, M_PI * j / 180));
     }
   }
   return deepest;

@@ -5,8 +5,9 @@
 // (for `vahf trial`: the trial ended other than completed, its summary still
 // printed); 2 bad input (a file, a value or an option), in one line; 130
 // interrupted.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
@@ -19,10 +20,10 @@
 #include "vahf/core/error.h"
 #include "vahf/data/lab_dataset.h"
 #include "vahf/experiment/interrupt.h"
+#include "vahf/experiment/table1_reference.h"
 #include "vahf/kinds/kind.h"
 #include "vahf/kinds/run_support.h"
 #include "vahf/report/output_directory.h"
-#include "vahf/experiment/table1_reference.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/json_reader.h"
 #include "vahf/scene/overrides.h"
@@ -43,17 +44,19 @@ int Check(const std::string& path) {
                stdout);
   } else if (format == "overrides") {
     const vahf::scene::ParameterOverrides o = vahf::scene::LoadOverrides(path);
-    std::printf("parameter overrides (%s)%s%s\n", path.c_str(), o.source.empty() ? "" : ": ",
-                o.source.c_str());
+    std::printf("parameter overrides (%s)%s%s\n", path.c_str(),
+                o.source.empty() ? "" : ": ", o.source.c_str());
     for (const auto& [name, value] : o.values)
       std::printf("  %s = %s\n", name.c_str(), value.dump().c_str());
   } else if (format == "synthetic") {
-    const vahf::calibrate::SyntheticLabSpec spec = vahf::calibrate::LoadSyntheticLabSpec(path);
-    std::printf("synthetic lab '%s': scene %s, %zu operator(s) x %d repetitions, seed %llu, "
-                "reading error sd %g s, resolution %g s\n",
-                spec.name.c_str(), spec.scene_path.c_str(), spec.operators.size(),
-                spec.repetitions, static_cast<unsigned long long>(spec.seed), spec.time_sd,
-                spec.time_resolution);
+    const vahf::calibrate::SyntheticLabSpec spec =
+        vahf::calibrate::LoadSyntheticLabSpec(path);
+    std::printf(
+        "synthetic lab '%s': scene %s, %zu operator(s) x %d repetitions, seed %llu, "
+        "reading error sd %g s, resolution %g s\n",
+        spec.name.c_str(), spec.scene_path.c_str(), spec.operators.size(),
+        spec.repetitions, static_cast<unsigned long long>(spec.seed), spec.time_sd,
+        spec.time_resolution);
     for (const auto& [name, value] : spec.truth)
       std::printf("  %s = %g (stated)\n", name.c_str(), value);
     std::fputs(vahf::kinds::DescribeSceneModels(spec.scene).c_str(), stdout);
@@ -96,9 +99,10 @@ struct TrialArgs {
 void ExpectSceneFile(const nlohmann::json& document, const std::string& path) {
   const std::string format = vahf::scene::FormatOf(document, path);
   if (format == "scene") return;
-  const char* what = format == "experiment"  ? "an experiment file (run it with `vahf run`)"
-                     : format == "lab"       ? "a lab dataset (compare or calibrate against it "
-                                               "with an experiment file and `vahf run`)"
+  const char* what = format == "experiment"
+                         ? "an experiment file (run it with `vahf run`)"
+                     : format == "lab" ? "a lab dataset (compare or calibrate against it "
+                                         "with an experiment file and `vahf run`)"
                      : format == "overrides" ? "a parameter override file (apply it with "
                                                "`vahf run EXPERIMENT --overrides FILE`)"
                                              : "a synthetic lab generator (run it with "
@@ -127,11 +131,13 @@ int Trial(const TrialArgs& a) {
   ExpectSceneFile(document, a.scene);
   vahf::scene::Scene scene = vahf::scene::ParseScene(document, a.scene);
   if (!a.integrator.empty()) scene.params.simulation.integrator = a.integrator;
-  if (!a.accuracy.empty()) SetParameter("--accuracy", "simulation/accuracy", a.accuracy, &scene);
+  if (!a.accuracy.empty())
+    SetParameter("--accuracy", "simulation/accuracy", a.accuracy, &scene);
   for (const std::string& set : a.sets) {
     const std::size_t eq = set.find('=');
     if (eq == std::string::npos)
-      throw vahf::InputError("--set", "", set, "takes GROUP/KEY=VALUE, e.g. simulation/max_steps=20000");
+      throw vahf::InputError("--set", "", set,
+                             "takes GROUP/KEY=VALUE, e.g. simulation/max_steps=20000");
     SetParameter("--set", set.substr(0, eq), set.substr(eq + 1), &scene);
   }
   if (const std::string v = vahf::scene::ParameterViolation(scene); !v.empty())
@@ -152,10 +158,11 @@ int Trial(const TrialArgs& a) {
                            "needs --trace FILE to write the rows to");
   // Rows are held until the trace is written: 1e6 rows are about 0.5 GB of CSV.
   if (a.sample > 0 && scene.params.simulation.time_limit / a.sample > 1e6)
-    throw vahf::InputError("--sample", "", fmt::format("{}", a.sample),
-                           fmt::format("at most 1e6 rows over the time limit ({} s): DT >= {} s",
-                                       scene.params.simulation.time_limit,
-                                       scene.params.simulation.time_limit / 1e6));
+    throw vahf::InputError(
+        "--sample", "", fmt::format("{}", a.sample),
+        fmt::format("at most 1e6 rows over the time limit ({} s): DT >= {} s",
+                    scene.params.simulation.time_limit,
+                    scene.params.simulation.time_limit / 1e6));
   options.sample_interval = a.sample;
   const vahf::sim::TrialResult r = vahf::sim::RunTrial(scene, {a.seed, a.trial}, options);
   if (!a.trace.empty()) vahf::WriteFileAtomically(a.trace, vahf::sim::TraceCsv(r));
@@ -207,7 +214,8 @@ struct SynthesizeArgs {
 };
 
 int Synthesize(const SynthesizeArgs& a) {
-  const vahf::calibrate::SyntheticLabSpec spec = vahf::calibrate::LoadSyntheticLabSpec(a.generator);
+  const vahf::calibrate::SyntheticLabSpec spec =
+      vahf::calibrate::LoadSyntheticLabSpec(a.generator);
   vahf::experiment::RunnerOptions options;
   options.threads = a.threads;
   options.label = spec.name + " (synthetic lab)";
@@ -229,8 +237,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "vahf 0.1.0");
   app.require_subcommand(1);
   app.footer(
-      "Exit status: 0 success; 1 a failure of the computation, stated on stderr (trial: the "
-      "trial did not complete); 2 bad input (a file, a value or an option), one line; 130 "
+      "Exit status: 0 success; 1 a failure of the computation, stated on stderr (trial: "
+      "the "
+      "trial did not complete); 2 bad input (a file, a value or an option), one line; "
+      "130 "
       "interrupted.");
 
   // Command-line integers, read strictly: decimal digits only, from 0 to
@@ -244,7 +254,8 @@ int main(int argc, char** argv) {
           const char* end = text.data() + text.size();
           const auto [stop, error] = std::from_chars(text.data(), end, v);
           if (text.empty() || error != std::errc() || stop != end || v > max)
-            return fmt::format("must be a decimal integer from 0 to {}, not '{}'", max, text);
+            return fmt::format("must be a decimal integer from 0 to {}, not '{}'", max,
+                               text);
           text = std::to_string(v);
           return std::string();
         },
@@ -254,7 +265,8 @@ int main(int argc, char** argv) {
 
   std::string check_path;
   CLI::App* check = app.add_subcommand(
-      "check", "Validate a scene, experiment or lab dataset file and print what it holds");
+      "check",
+      "Validate a scene, experiment or lab dataset file and print what it holds");
   check
       ->add_option("FILE", check_path,
                    "scene, experiment or lab dataset (its dataset.json) JSON file")
@@ -271,7 +283,8 @@ int main(int argc, char** argv) {
   trial->add_option("SCENE", trial_args.scene, "scene JSON file")->required();
   trial->footer(
       "Exit status: 0 the trial completed; 1 it ended otherwise (timeout, exhausted, "
-      "unreachable, jammed, numerical_failure, step_budget): its summary is printed and its trace written, "
+      "unreachable, jammed, numerical_failure, step_budget): its summary is printed and "
+      "its trace written, "
       "then 'vahf: trial ended STATUS: DETAIL' on stderr; 2 bad input, one line.");
   trial->add_option("--seed", trial_args.seed, "experiment seed (the stream key)")
       ->required()
@@ -290,22 +303,25 @@ int main(int argc, char** argv) {
   trial->add_option("--accuracy", trial_args.accuracy,
                     "override simulation/accuracy (its rule: `vahf params`)");
   trial
-      ->add_option("--set", trial_args.sets,
-                   "override a parameter, e.g. --set simulation/max_steps=20000 (repeatable; "
-                   "each by its rule in `vahf params`)")
+      ->add_option(
+          "--set", trial_args.sets,
+          "override a parameter, e.g. --set simulation/max_steps=20000 (repeatable; "
+          "each by its rule in `vahf params`)")
       ->option_text("GROUP/KEY=VALUE");
   trial->add_option("--trace", trial_args.trace,
                     "write one CSV row per decision instant to this file");
   trial
-      ->add_option("--sample", trial_args.sample,
-                   "with --trace: also a row every DT s of simulated time (pose, velocities, "
-                   "forces, penetration), interpolated, so the trajectory is unchanged")
+      ->add_option(
+          "--sample", trial_args.sample,
+          "with --trace: also a row every DT s of simulated time (pose, velocities, "
+          "forces, penetration), interpolated, so the trajectory is unchanged")
       ->option_text("DT");
 
   RunArgs run_args;
   CLI::App* run = app.add_subcommand(
-      "run", "Run an experiment file and write its output directory (report.md, CSV "
-             "tables, summary.json, manifest.json, plots)");
+      "run",
+      "Run an experiment file and write its output directory (report.md, CSV "
+      "tables, summary.json, manifest.json, plots)");
   run->add_option("EXPERIMENT", run_args.experiment, "experiment JSON file")->required();
   run->add_option("--seed", run_args.seed, "override the experiment's seed")
       ->transform(decimal(kMaxU64))
@@ -314,13 +330,15 @@ int main(int argc, char** argv) {
                   "override the cycles per condition (every experiment of a paper run)")
       ->transform(decimal(10'000'000))
       ->check(CLI::Range(1, 10'000'000));
-  run->add_option("--threads", run_args.threads, "worker threads (results do not depend on it)")
+  run->add_option("--threads", run_args.threads,
+                  "worker threads (results do not depend on it)")
       ->transform(decimal(1024))
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
-  run->add_option("--out", run_args.out,
-                  "output directory (default runs/NAME-seedSEED); replaced whole, only if it "
-                  "is empty or a previous vahf output");
+  run->add_option(
+      "--out", run_args.out,
+      "output directory (default runs/NAME-seedSEED); replaced whole, only if it "
+      "is empty or a previous vahf output");
 
   run->add_option("--overrides", run_args.overrides,
                   "parameter-override file (vahf-overrides/1, e.g. a calibration's "
@@ -328,13 +346,19 @@ int main(int argc, char** argv) {
 
   SynthesizeArgs synth_args;
   CLI::App* synthesize = app.add_subcommand(
-      "synthesize", "Make a synthetic lab dataset: the model at stated parameter values plays "
-                    "the lab (docs/calibration.md)");
-  synthesize->add_option("GENERATOR", synth_args.generator, "generator JSON file (vahf-synthetic/1)")
+      "synthesize",
+      "Make a synthetic lab dataset: the model at stated parameter values plays "
+      "the lab (docs/calibration.md)");
+  synthesize
+      ->add_option("GENERATOR", synth_args.generator,
+                   "generator JSON file (vahf-synthetic/1)")
       ->required();
-  synthesize->add_option("--out", synth_args.out, "folder for dataset.json and trials.csv")
+  synthesize
+      ->add_option("--out", synth_args.out, "folder for dataset.json and trials.csv")
       ->required();
-  synthesize->add_option("--threads", synth_args.threads, "worker threads (results do not depend on it)")
+  synthesize
+      ->add_option("--threads", synth_args.threads,
+                   "worker threads (results do not depend on it)")
       ->transform(decimal(1024))
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();

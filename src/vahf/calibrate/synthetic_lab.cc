@@ -80,8 +80,8 @@ data::LabDataset GenerateSyntheticLab(const SyntheticLabSpec& spec,
   for (const auto& [name, value] : spec.truth)
     truth += fmt::format("{}{} = {}", truth.empty() ? "" : ", ", name, value);
   lab.provenance = {
-      {"source", fmt::format("synthetic: vahf synthesize {} (scene {}, seed {})", spec.file,
-                             spec.scene.name, spec.seed)},
+      {"source", fmt::format("synthetic: vahf synthesize {} (scene {}, seed {})",
+                             spec.file, spec.scene.name, spec.seed)},
       {"notes", fmt::format("the model at {}; {} repetitions per operator; reading error "
                             "sd {} s, times rounded to {} s",
                             truth.empty() ? "the scene's parameters" : truth,

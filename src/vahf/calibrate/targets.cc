@@ -23,8 +23,9 @@ const char* UnitOf(const std::string& quantity) {
 std::vector<const data::LabTrial*> FirstTrialOfEachOperator(const data::LabDataset& lab) {
   std::vector<const data::LabTrial*> out;
   for (const data::LabTrial& t : lab.trials)
-    if (std::none_of(out.begin(), out.end(),
-                     [&](const data::LabTrial* o) { return o->operator_id == t.operator_id; }))
+    if (std::none_of(out.begin(), out.end(), [&](const data::LabTrial* o) {
+          return o->operator_id == t.operator_id;
+        }))
       out.push_back(&t);
   return out;
 }
@@ -61,8 +62,9 @@ bool Matches(const std::string& wanted, const std::string& row) {
 // the one condition they share (rows of several conditions: an InputError,
 // the spec must name one). None: nullptr.
 template <typename Row, typename Fits>
-const Row* ReportedRow(const std::vector<Row>& rows, const Fits& fits, const TargetSpec& spec,
-                       const std::string& file, const std::string& experiment_file) {
+const Row* ReportedRow(const std::vector<Row>& rows, const Fits& fits,
+                       const TargetSpec& spec, const std::string& file,
+                       const std::string& experiment_file) {
   const Row* any = nullptr;
   for (const Row& r : rows)
     if (fits(r) && r.condition == spec.condition) return &r;
@@ -70,13 +72,13 @@ const Row* ReportedRow(const std::vector<Row>& rows, const Fits& fits, const Tar
   for (const Row& r : rows) {
     if (!fits(r)) continue;
     if (any && any->condition != r.condition)
-      throw InputError(experiment_file, spec.pointer + "/condition", "(missing)",
-                       fmt::format("the lab reports {} of {}{} for condition '{}' ({}, line "
-                                   "{}) and '{}' (line {}): name the one to read",
-                                   spec.quantity, spec.part,
-                                   spec.segment > 0 ? fmt::format(", segment {}", spec.segment)
-                                                    : "",
-                                   any->condition, file, any->line, r.condition, r.line));
+      throw InputError(
+          experiment_file, spec.pointer + "/condition", "(missing)",
+          fmt::format("the lab reports {} of {}{} for condition '{}' ({}, line "
+                      "{}) and '{}' (line {}): name the one to read",
+                      spec.quantity, spec.part,
+                      spec.segment > 0 ? fmt::format(", segment {}", spec.segment) : "",
+                      any->condition, file, any->line, r.condition, r.line));
     if (!any) any = &r;
   }
   return any;
@@ -92,18 +94,21 @@ const Row* ReportedRow(const std::vector<Row>& rows, const Fits& fits, const Tar
 // taken as 1.96 sd). Nothing found: nullopt. Found without any uncertainty:
 // an InputError, since a residual needs a weight, or with Unweighted::kPoint
 // the value with a NaN variance.
-std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab, const TargetSpec& spec,
+std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab,
+                                           const TargetSpec& spec,
                                            const std::string& experiment_file,
                                            Unweighted unweighted) {
   if (spec.quantity == "success_rate" && spec.segment > 0)
     if (const data::LabSegment* g = ReportedRow(
-            lab.segments, [&](const data::LabSegment& s) { return s.segment == spec.segment; },
-            spec, lab.segments_file, experiment_file))
+            lab.segments,
+            [&](const data::LabSegment& s) { return s.segment == spec.segment; }, spec,
+            lab.segments_file, experiment_file))
       return RateStatistic(g->successes, g->attempts);
   const data::LabSummary* found = ReportedRow(
       lab.summaries,
       [&](const data::LabSummary& r) {
-        return r.quantity == spec.quantity && r.part == spec.part && r.segment == spec.segment;
+        return r.quantity == spec.quantity && r.part == spec.part &&
+               r.segment == spec.segment;
       },
       spec, lab.summaries_file, experiment_file);
   if (!found) return std::nullopt;
@@ -124,10 +129,11 @@ std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab, const Ta
   } else if (unweighted == Unweighted::kPoint) {
     out.variance = std::numeric_limits<double>::quiet_NaN();
   } else {
-    throw InputError(experiment_file, spec.pointer, spec.quantity,
-                     fmt::format("the lab reports {} = {} ({}, line {}) without sd and n or "
-                                 "an uncertainty: a calibration cannot weigh it",
-                                 r.quantity, r.value, lab.summaries_file, r.line));
+    throw InputError(
+        experiment_file, spec.pointer, spec.quantity,
+        fmt::format("the lab reports {} = {} ({}, line {}) without sd and n or "
+                    "an uncertainty: a calibration cannot weigh it",
+                    r.quantity, r.value, lab.summaries_file, r.line));
   }
   return out;
 }
@@ -159,7 +165,8 @@ Statistic TargetSamples::Of(const std::string& quantity) const {
     sum += static_cast<double>(t.size()) * sd * sd;
   }
   if (by_operator.size() > 1)
-    out.variance = sum / (static_cast<double>(times.size()) * static_cast<double>(times.size()));
+    out.variance =
+        sum / (static_cast<double>(times.size()) * static_cast<double>(times.size()));
   return out;
 }
 
@@ -176,7 +183,8 @@ TargetSamples LabSamples(const data::LabDataset& lab, const TargetSpec& spec,
 
 std::vector<std::string> LabOperators(const data::LabDataset& lab) {
   std::vector<std::string> out;
-  for (const data::LabTrial* t : FirstTrialOfEachOperator(lab)) out.push_back(t->operator_id);
+  for (const data::LabTrial* t : FirstTrialOfEachOperator(lab))
+    out.push_back(t->operator_id);
   return out;
 }
 
@@ -197,8 +205,10 @@ const std::vector<std::string>& TargetQuantities() {
   return kQuantities;
 }
 
-std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<TargetSpec>& specs,
-                               const std::string& experiment_file, Unweighted unweighted) {
+std::vector<Target> LabTargets(const data::LabDataset& lab,
+                               const std::vector<TargetSpec>& specs,
+                               const std::string& experiment_file,
+                               Unweighted unweighted) {
   std::vector<Target> out;
   for (const TargetSpec& spec : specs) {
     const std::vector<std::string> operators =
@@ -221,17 +231,18 @@ std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<Ta
             experiment_file, spec.pointer, spec.part,
             "the lab dataset " + where + " has no trials of this part" +
                 (spec.condition.empty() ? "" : " in condition '" + spec.condition + "'") +
-                (spec.by_operator ? ""
-                                  : " and reports no " + spec.quantity +
-                                        (spec.segment > 0
-                                             ? fmt::format(" of segment {}", spec.segment)
+                (spec.by_operator
+                     ? ""
+                     : " and reports no " + spec.quantity +
+                           (spec.segment > 0 ? fmt::format(" of segment {}", spec.segment)
                                              : "") +
-                                        " for it"));
+                           " for it"));
       if (spec.quantity == "assembly_time" && samples.times.size() < 2)
-        throw InputError(experiment_file, spec.pointer, spec.part,
-                         fmt::format("the lab dataset {} has {} successful trial(s) of this "
-                                     "part; a mean time and its variance need at least 2",
-                                     where, samples.times.size()));
+        throw InputError(
+            experiment_file, spec.pointer, spec.part,
+            fmt::format("the lab dataset {} has {} successful trial(s) of this "
+                        "part; a mean time and its variance need at least 2",
+                        where, samples.times.size()));
       target.lab = samples.Of(spec.quantity);
       out.push_back(std::move(target));
     }
@@ -240,7 +251,8 @@ std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<Ta
 }
 
 std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
-                                                 const data::LabDataset& lab, int trials) {
+                                                 const data::LabDataset& lab,
+                                                 int trials) {
   std::vector<experiment::Condition> out;
   for (const data::LabTrial* t : FirstTrialOfEachOperator(lab)) {
     scene::OperatorEntry op;
@@ -253,16 +265,18 @@ std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
     // cannot take is named with the row that introduced them.
     const std::string reach = scene.params.reach.Violation(op.arm_length, op.height);
     if (!reach.empty())
-      throw InputError(lab.folder + "/" + lab.trials_file,
-                       fmt::format("line {}, operator {}", t->line, op.name),
-                       fmt::format("height {} m, arm_length {} m", op.height, op.arm_length),
-                       "with scene '" + scene.name + "''s reach parameters: " + reach);
+      throw InputError(
+          lab.folder + "/" + lab.trials_file,
+          fmt::format("line {}, operator {}", t->line, op.name),
+          fmt::format("height {} m, arm_length {} m", op.height, op.arm_length),
+          "with scene '" + scene.name + "''s reach parameters: " + reach);
     out.push_back(experiment::OperatorCondition(scene, op));
-    out.back().cycle_offset = static_cast<std::uint64_t>(out.size() - 1) *
-                              static_cast<std::uint64_t>(trials);
+    out.back().cycle_offset =
+        static_cast<std::uint64_t>(out.size() - 1) * static_cast<std::uint64_t>(trials);
   }
   if (out.empty())
-    out.push_back({"scene operator", scene.op.sex, std::make_shared<const scene::Scene>(scene)});
+    out.push_back(
+        {"scene operator", scene.op.sex, std::make_shared<const scene::Scene>(scene)});
   return out;
 }
 
@@ -275,10 +289,11 @@ TargetSamples VirtualSamples(const Target& target, const experiment::DesignRun& 
                              const std::vector<int>& segments) {
   TargetSamples samples;
   for (const experiment::CycleRecord& r : run.records) {
-    if (!target.operator_id.empty() && run.conditions[r.condition].name != target.operator_id)
+    if (!target.operator_id.empty() &&
+        run.conditions[r.condition].name != target.operator_id)
       continue;
-    if (target.spec.segment > 0 &&
-        (r.condition >= segments.size() || segments[r.condition] != target.spec.segment - 1))
+    if (target.spec.segment > 0 && (r.condition >= segments.size() ||
+                                    segments[r.condition] != target.spec.segment - 1))
       continue;
     const experiment::CycleResult& c = r.result;
     const std::string& op = run.conditions[r.condition].name;

@@ -99,7 +99,8 @@ enum class Unweighted { kRefuse, kPoint };
 // several: the target must name one). An InputError naming `experiment_file`
 // and the target's pointer when the lab has no trials for it (or, for
 // assembly_time, fewer than two successful ones: no variance).
-std::vector<Target> LabTargets(const data::LabDataset& lab, const std::vector<TargetSpec>& specs,
+std::vector<Target> LabTargets(const data::LabDataset& lab,
+                               const std::vector<TargetSpec>& specs,
                                const std::string& experiment_file,
                                Unweighted unweighted = Unweighted::kRefuse);
 

@@ -107,13 +107,13 @@ void SetVerdict(QuantityComparison* q) {
       "{}: the difference (virtual - lab) is {} with 90 % interval [{}, {}], {} the "
       "+-{} margin (TOST p = {:.3g}){}",
       q->agree ? "agree" : "not shown to agree", Value(q->difference, u),
-      Value(q->ci90.lower, u), Value(q->ci90.upper, u), q->agree ? "inside" : "not inside",
-      Value(q->margin, u), q->tost_p, basis);
+      Value(q->ci90.lower, u), Value(q->ci90.upper, u),
+      q->agree ? "inside" : "not inside", Value(q->margin, u), q->tost_p, basis);
 }
 
 // A comparison of `target` with its virtual side filled in.
 QuantityComparison WithVirtual(const calibrate::Target& target, double margin,
-                         const calibrate::TargetSamples& virt) {
+                               const calibrate::TargetSamples& virt) {
   QuantityComparison q;
   q.target = target;
   q.margin = margin;
@@ -139,7 +139,8 @@ QuantityComparison CompareSamples(const calibrate::Target& target, double margin
     CompareRates(&q);
   }
   if (!q.ks)
-    q.ks_unavailable = time ? q.untestable_reason : "a rate is not a distribution of times";
+    q.ks_unavailable =
+        time ? q.untestable_reason : "a rate is not a distribution of times";
   SetVerdict(&q);
   return q;
 }
@@ -152,9 +153,10 @@ QuantityComparison CompareReported(const calibrate::Target& target, double margi
   const calibrate::Statistic& l = target.lab;
   const bool time = target.spec.quantity == "assembly_time";
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  q.virtual_ci = time                ? MeanInterval(virt.times)
-                 : virt.attempts > 0 ? stats::WilsonInterval({virt.successes, virt.attempts})
-                                     : stats::Interval{nan, nan};
+  q.virtual_ci = time ? MeanInterval(virt.times)
+                 : virt.attempts > 0
+                     ? stats::WilsonInterval({virt.successes, virt.attempts})
+                     : stats::Interval{nan, nan};
   q.lab_variance = calibrate::LabVariance(l, q.virtual_stat);
   q.lab_ci = {nan, nan};
   if (std::isfinite(q.lab_variance)) {
@@ -166,11 +168,13 @@ QuantityComparison CompareReported(const calibrate::Target& target, double margi
   if (virt.attempts == 0) {
     q.untestable_reason = "the virtual design attempted this part in no cycle";
   } else if (time && virt.times.size() < 2) {
-    q.untestable_reason = fmt::format(
-        "{} virtual successful trial(s); the virtual mean's variance needs 2", virt.times.size());
+    q.untestable_reason =
+        fmt::format("{} virtual successful trial(s); the virtual mean's variance needs 2",
+                    virt.times.size());
   } else if (!l.single_draw && !std::isfinite(l.variance)) {
     q.untestable_reason = fmt::format(
-        "the lab reports {} without sd and n or an uncertainty: with no spread on the lab's "
+        "the lab reports {} without sd and n or an uncertainty: with no spread on the "
+        "lab's "
         "side the difference has no interval",
         Value(l.value, target.unit));
   } else if (!(var > 0)) {
@@ -195,8 +199,9 @@ std::vector<LabQuantity> LabSide(const data::LabDataset& lab,
     const std::vector<std::string> operators =
         spec.by_operator ? calibrate::LabOperators(lab) : std::vector<std::string>{""};
     if (operators.empty())
-      throw InputError(experiment_file, spec.pointer + "/by", "operator",
-                       "the lab dataset " + lab.file + " has no trials, hence no operators");
+      throw InputError(
+          experiment_file, spec.pointer + "/by", "operator",
+          "the lab dataset " + lab.file + " has no trials, hence no operators");
     for (const std::string& op : operators) {
       LabQuantity q;
       q.margin = spec.margin;
@@ -231,8 +236,8 @@ std::string LabBasis(const calibrate::Target& target, bool reported) {
 
 ComparisonResult Compare(const scene::Scene& scene, const data::LabDataset& lab,
                          const scene::ComparisonDesign& design,
-                         const std::string& experiment_file, std::uint64_t seed, int trials,
-                         const experiment::RunnerOptions& options,
+                         const std::string& experiment_file, std::uint64_t seed,
+                         int trials, const experiment::RunnerOptions& options,
                          const experiment::RunnerOptions& pilot_options) {
   // The lab's side first: a quantity it cannot supply costs no simulation.
   const std::vector<LabQuantity> planned = LabSide(lab, design, experiment_file);
@@ -247,22 +252,23 @@ ComparisonResult Compare(const scene::Scene& scene, const data::LabDataset& lab,
   std::sort(segments.begin(), segments.end());
   ComparisonResult out;
   if (operators)
-    out.run = experiment::RunDesign(calibrate::LabConditions(scene, lab, trials), trials, seed,
-                                    false, options);
+    out.run = experiment::RunDesign(calibrate::LabConditions(scene, lab, trials), trials,
+                                    seed, false, options);
   // The scene's operator works the hour; only the segments the quantities
   // name are run (the pilot, which measures the work rate, always is), as a
   // calibration runs them.
   if (!segments.empty())
     out.fatigue = experiment::RunFatigue(std::make_shared<const scene::Scene>(scene),
-                                         design.fatigue, trials, seed, options, pilot_options,
-                                         segments);
+                                         design.fatigue, trials, seed, options,
+                                         pilot_options, segments);
   for (const LabQuantity& p : planned) {
     const calibrate::TargetSamples virt =
         p.target.spec.segment > 0
             ? calibrate::VirtualSamples(p.target, out.fatigue.run, out.fatigue.segments)
             : calibrate::VirtualSamples(p.target, out.run);
-    out.quantities.push_back(p.reported ? CompareReported(p.target, p.margin, virt)
-                                        : CompareSamples(p.target, p.margin, p.samples, virt));
+    out.quantities.push_back(p.reported
+                                 ? CompareReported(p.target, p.margin, virt)
+                                 : CompareSamples(p.target, p.margin, p.samples, virt));
   }
   return out;
 }

@@ -60,9 +60,9 @@ std::vector<LabQuantity> LabSide(const data::LabDataset& lab,
 std::string LabBasis(const calibrate::Target& target, bool reported);
 
 struct QuantityComparison {
-  calibrate::Target target;          // label, unit, the lab's statistic
-  double margin = 0;                 // the equivalence margin, in the unit
-  bool reported = false;             // the lab side is a reported statistic, not trials
+  calibrate::Target target;            // label, unit, the lab's statistic
+  double margin = 0;                   // the equivalence margin, in the unit
+  bool reported = false;               // the lab side is a reported statistic, not trials
   calibrate::TargetSamples lab, virt;  // lab: empty when reported
   calibrate::Statistic virtual_stat;
   // The variance of the lab's statistic as the test used it (LabVariance:
@@ -72,15 +72,15 @@ struct QuantityComparison {
   // 1.96 sqrt(lab_variance), within [0, 1] for a rate, NaN without a variance.
   stats::Interval lab_ci, virtual_ci;
   bool testable = false;
-  std::string untestable_reason;     // when not testable: why, in a sentence
-  double difference = 0;             // virtual - lab
-  stats::Interval ci95, ci90;        // of the difference
+  std::string untestable_reason;  // when not testable: why, in a sentence
+  double difference = 0;          // virtual - lab
+  stats::Interval ci95, ci90;     // of the difference
   double tost_p = 1;
-  bool agree = false;                // equivalence shown at the 5 % level
-  double area_metric = 0;            // in the unit
+  bool agree = false;                          // equivalence shown at the 5 % level
+  double area_metric = 0;                      // in the unit
   std::optional<stats::KolmogorovSmirnov> ks;  // times on both sides
-  std::string ks_unavailable;        // when no KS: why
-  std::string verdict;               // "agree: ..." / "not shown to agree: ..." / "untestable: ..."
+  std::string ks_unavailable;                  // when no KS: why
+  std::string verdict;  // "agree: ..." / "not shown to agree: ..." / "untestable: ..."
 };
 
 struct ComparisonResult {
@@ -97,8 +97,8 @@ struct ComparisonResult {
 // pilot reports its progress with `pilot_options`.
 ComparisonResult Compare(const scene::Scene& scene, const data::LabDataset& lab,
                          const scene::ComparisonDesign& design,
-                         const std::string& experiment_file, std::uint64_t seed, int trials,
-                         const experiment::RunnerOptions& options,
+                         const std::string& experiment_file, std::uint64_t seed,
+                         int trials, const experiment::RunnerOptions& options,
                          const experiment::RunnerOptions& pilot_options);
 
 // The comparison of one quantity from its two samples (for tests).

@@ -21,18 +21,19 @@ using Row = Eigen::Matrix<double, 1, 12>;
 void AddPointJacobian(const PointContact& p, ContactJacobian* out) {
   const Matrix3d I = Matrix3d::Identity();
   const Matrix3d r_x = CrossMatrix(p.r), w_x = CrossMatrix(p.w), u_x = CrossMatrix(p.u);
-  Block material = Block::Zero(), dr = Block::Zero(), dv = Block::Zero(), du = Block::Zero();
+  Block material = Block::Zero(), dr = Block::Zero(), dv = Block::Zero(),
+        du = Block::Zero();
   material.block<3, 3>(0, 0) = I;
   material.block<3, 3>(0, 3) = -r_x;
   dv.block<3, 3>(0, 6) = I;     // d v / d v_o
   dv.block<3, 3>(0, 9) = -r_x;  // w x r = -[r]x w
   if (p.frame == PointFrame::kMoving) {
-    dr.block<3, 3>(0, 3) = -r_x;         // dtheta x r
-    dv.block<3, 3>(0, 3) = -w_x * r_x;   // w x (dtheta x r)
+    dr.block<3, 3>(0, 3) = -r_x;        // dtheta x r
+    dv.block<3, 3>(0, 3) = -w_x * r_x;  // w x (dtheta x r)
   } else {
     dr.block<3, 3>(0, 0) = -I;
-    dv.block<3, 3>(0, 0) = -w_x;         // w x (-dx)
-    du.block<3, 3>(0, 3) = -u_x;         // dtheta x u
+    dv.block<3, 3>(0, 0) = -w_x;  // w x (-dx)
+    du.block<3, 3>(0, 3) = -u_x;  // dtheta x u
   }
   // The normal force fn u with fn = law(depth, rate), rate = -v . u.
   const Row depth = -p.u.transpose() * material;
@@ -42,7 +43,8 @@ void AddPointJacobian(const PointContact& p, ContactJacobian* out) {
   // Friction f = -mu fn v_t / max(|v_t|, v_s), v_t = v - (v . u) u.
   const double vu = p.v.dot(p.u);
   const Vector3d vt = p.v - vu * p.u;
-  const Block dvt = (I - p.u * p.u.transpose()) * dv - p.u * (p.v.transpose() * du) - vu * du;
+  const Block dvt =
+      (I - p.u * p.u.transpose()) * dv - p.u * (p.v.transpose() * du) - vu * du;
   const double slip = vt.norm();
   Block friction;
   Vector3d f;

@@ -31,8 +31,12 @@ Range ArcRange(const SectorBound& s, const Eigen::Vector2d& u, double norm) {
 }
 
 // The extremes of rho * x over rho in [rho_min, rho_max] for x of known sign.
-double RhoTimesMax(const SectorBound& s, double x) { return x >= 0 ? s.rho_max * x : s.rho_min * x; }
-double RhoTimesMin(const SectorBound& s, double x) { return x < 0 ? s.rho_max * x : s.rho_min * x; }
+double RhoTimesMax(const SectorBound& s, double x) {
+  return x >= 0 ? s.rho_max * x : s.rho_min * x;
+}
+double RhoTimesMin(const SectorBound& s, double x) {
+  return x < 0 ? s.rho_max * x : s.rho_min * x;
+}
 
 }  // namespace
 
@@ -69,7 +73,8 @@ SectorBound BoundSector(const std::vector<Eigen::Vector3d>& points) {
     return s;
   }
   s.from = Eigen::Vector2d(std::cos(start - kWiden), std::sin(start - kWiden));
-  s.to = Eigen::Vector2d(std::cos(start - kWiden + s.width), std::sin(start - kWiden + s.width));
+  s.to = Eigen::Vector2d(std::cos(start - kWiden + s.width),
+                         std::sin(start - kWiden + s.width));
   return s;
 }
 
@@ -112,10 +117,10 @@ MeridianBox MeridianMap::operator()(const SectorBound& s) const {
   const double z_max = RhoTimesMax(s, e_c.max) + std::max(zz0, zz1) + t_z_;
   const double z_min = RhoTimesMin(s, e_c.min) + std::min(zz0, zz1) + t_z_;
   const double margin =
-      1e-9 +
-      1e-12 * (s.rho_max + std::max(std::abs(s.zeta_min), std::abs(s.zeta_max)) + t_norm_);
-  return {std::sqrt(std::max(0.0, r2_min)) - margin, std::sqrt(std::max(0.0, r2_max)) + margin,
-          z_min - margin, z_max + margin};
+      1e-9 + 1e-12 * (s.rho_max + std::max(std::abs(s.zeta_min), std::abs(s.zeta_max)) +
+                      t_norm_);
+  return {std::sqrt(std::max(0.0, r2_min)) - margin,
+          std::sqrt(std::max(0.0, r2_max)) + margin, z_min - margin, z_max + margin};
 }
 
 }  // namespace vahf::contact

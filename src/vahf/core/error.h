@@ -35,7 +35,7 @@ class InputError : public std::runtime_error {
 
 }  // namespace vahf
 
-#define VAHF_CHECK(condition, message)                                       \
-  do {                                                                       \
+#define VAHF_CHECK(condition, message)                                                \
+  do {                                                                                \
     if (!(condition)) ::vahf::CheckFailed(#condition, __FILE__, __LINE__, (message)); \
   } while (false)

@@ -6,11 +6,16 @@ namespace vahf {
 
 const char* WarningName(WarningKind kind) {
   switch (kind) {
-    case WarningKind::kNonFiniteState: return "non_finite_state";
-    case WarningKind::kPenetrationBound: return "penetration_bound";
-    case WarningKind::kStepSizeFloor: return "step_size_floor";
-    case WarningKind::kIntegratorRetry: return "integrator_retry";
-    case WarningKind::kIntegratorFailure: return "integrator_failure";
+    case WarningKind::kNonFiniteState:
+      return "non_finite_state";
+    case WarningKind::kPenetrationBound:
+      return "penetration_bound";
+    case WarningKind::kStepSizeFloor:
+      return "step_size_floor";
+    case WarningKind::kIntegratorRetry:
+      return "integrator_retry";
+    case WarningKind::kIntegratorFailure:
+      return "integrator_failure";
   }
   return "?";
 }

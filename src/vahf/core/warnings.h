@@ -11,11 +11,11 @@
 namespace vahf {
 
 enum class WarningKind {
-  kNonFiniteState,      // a force evaluation or accepted step saw NaN or infinity
-  kPenetrationBound,    // an accepted step's contact was deeper than the bound
-  kStepSizeFloor,       // an accepted step was shorter than simulation/step_floor
-  kIntegratorRetry,     // the integrator failed a convergence or realization and retried
-  kIntegratorFailure,   // the integrator gave up (the trial is a numerical failure)
+  kNonFiniteState,     // a force evaluation or accepted step saw NaN or infinity
+  kPenetrationBound,   // an accepted step's contact was deeper than the bound
+  kStepSizeFloor,      // an accepted step was shorter than simulation/step_floor
+  kIntegratorRetry,    // the integrator failed a convergence or realization and retried
+  kIntegratorFailure,  // the integrator gave up (the trial is a numerical failure)
 };
 inline constexpr int kWarningKinds = 5;
 
@@ -32,8 +32,10 @@ struct WarningEntry {
 class Warnings {
  public:
   // Counts `n` occurrences at `time`; the first one's time and detail stay.
-  void Note(WarningKind kind, double time, const std::string& detail, std::int64_t n = 1) {
-    Count(kind, time, [&] { return detail; }, n);
+  void Note(WarningKind kind, double time, const std::string& detail,
+            std::int64_t n = 1) {
+    Count(
+        kind, time, [&] { return detail; }, n);
   }
   // The same, with the detail made by `detail()` only for the first
   // occurrence (a warning met at every step formats its text once).

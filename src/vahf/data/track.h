@@ -20,7 +20,7 @@ struct TrackSample {
   Eigen::Vector3d body;            // P_ic, the centre of the body
   // V from the camera (Eq. 1), in [0, 1]; NaN where the track has none.
   double visibility = std::numeric_limits<double>::quiet_NaN();
-  int line = 0;                    // in its file, for messages
+  int line = 0;  // in its file, for messages
 };
 
 struct SensorTrack {

@@ -9,8 +9,8 @@ rng::StreamKey CycleKey(std::uint64_t seed, std::uint64_t cycle, std::size_t n,
   return {seed, cycle * n + position};
 }
 
-CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed, std::uint64_t cycle,
-                     double initial_work, bool record_trace) {
+CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed,
+                     std::uint64_t cycle, double initial_work, bool record_trace) {
   CycleResult out;
   out.work = initial_work;
   const std::size_t n = models.size();
@@ -36,7 +36,8 @@ CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed, std::uint
 
 CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_t cycle,
                      double initial_work, bool record_trace) {
-  return RunCycle(sim::BuildSequenceModels(scene), seed, cycle, initial_work, record_trace);
+  return RunCycle(sim::BuildSequenceModels(scene), seed, cycle, initial_work,
+                  record_trace);
 }
 
 }  // namespace vahf::experiment

@@ -43,8 +43,8 @@ rng::StreamKey CycleKey(std::uint64_t seed, std::uint64_t cycle, std::size_t n,
 // once per scene of an experiment and shared by all its cycles.
 using SequenceModels = std::vector<std::shared_ptr<const sim::TrialModel>>;
 
-CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed, std::uint64_t cycle,
-                     double initial_work, bool record_trace);
+CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed,
+                     std::uint64_t cycle, double initial_work, bool record_trace);
 // Builds the scene's models, then runs the cycle.
 CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_t cycle,
                      double initial_work, bool record_trace);

@@ -18,7 +18,8 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
   // Condition c's cycles are indices [first[c], first[c + 1]) of the run.
   std::vector<std::size_t> first = {0};
   for (const Condition& c : out.conditions)
-    first.push_back(first.back() + static_cast<std::size_t>(c.trials > 0 ? c.trials : trials));
+    first.push_back(first.back() +
+                    static_cast<std::size_t>(c.trials > 0 ? c.trials : trials));
   const auto& conds = out.conditions;
   // Every scene's trial models, built once before any cycle runs (a scene
   // only building can reject fails here, with nothing lost) and shared by
@@ -29,7 +30,8 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
     for (std::size_t e = 0; e < c && !built; ++e)
       if (conds[e].scene == conds[c].scene) built = models[e];
     if (!built)
-      built = std::make_shared<const SequenceModels>(sim::BuildSequenceModels(*conds[c].scene));
+      built = std::make_shared<const SequenceModels>(
+          sim::BuildSequenceModels(*conds[c].scene));
     models.push_back(built);
   }
   out.records = RunIndexed<CycleRecord>(first.back(), options, [&](std::size_t k) {
@@ -43,7 +45,8 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
     const double u = (static_cast<double>(j) + 0.5) / static_cast<double>(n);
     r.start_minute = c.minute_start + (c.minute_end - c.minute_start) * u;
     r.initial_work = c.work_start + (c.work_end - c.work_start) * u;
-    r.result = RunCycle(*models[r.condition], seed, r.cycle, r.initial_work, record_trace);
+    r.result =
+        RunCycle(*models[r.condition], seed, r.cycle, r.initial_work, record_trace);
     return r;
   });
   return out;
@@ -126,12 +129,13 @@ RunnerOptions Options(const scene::ExperimentFile& file, const RunSettings& sett
 
 ExperimentRun Table1Run(const scene::ExperimentFile& file, const RunSettings& settings) {
   ExperimentRun out = Begin(file, settings);
-  out.run = RunDesign({{file.scene.name, "", Share(file.scene)}}, out.trials, out.seed, true,
-                      Options(file, settings));
+  out.run = RunDesign({{file.scene.name, "", Share(file.scene)}}, out.trials, out.seed,
+                      true, Options(file, settings));
   return out;
 }
 
-ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file, const RunSettings& settings) {
+ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file,
+                              const RunSettings& settings) {
   ExperimentRun out = Begin(file, settings);
   std::vector<Condition> conditions;
   if (file.operators.empty())
@@ -164,10 +168,11 @@ ExperimentRun FatigueExperimentRun(const scene::ExperimentFile& file,
   return out;
 }
 
-ExperimentRun PrecisionRun(const scene::ExperimentFile& file, const RunSettings& settings) {
+ExperimentRun PrecisionRun(const scene::ExperimentFile& file,
+                           const RunSettings& settings) {
   ExperimentRun out = Begin(file, settings);
-  out.run = RunDesign(PrecisionConditions(file, settings.trials), out.trials, out.seed, false,
-                      Options(file, settings));
+  out.run = RunDesign(PrecisionConditions(file, settings.trials), out.trials, out.seed,
+                      false, Options(file, settings));
   return out;
 }
 

@@ -29,7 +29,7 @@ struct Condition {
   std::string name;   // operator, working condition, segment or precision setting
   std::string group;  // an operator's sex; a precision setting's scene; else empty
   std::shared_ptr<const scene::Scene> scene;
-  int trials = 0;     // > 0: this condition's cycles instead of RunDesign's `trials`
+  int trials = 0;  // > 0: this condition's cycles instead of RunDesign's `trials`
   // Added to the cycles' stream indices: 0 shares streams with the other
   // conditions (common random numbers, the default); a lab's operators are
   // different people and draw their own (calibrate/targets.h).
@@ -73,7 +73,7 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
 struct FatigueRun {
   DesignRun pilot;
   double work_rate = 0;
-  DesignRun run;  // one condition per segment run, in segment order
+  DesignRun run;              // one condition per segment run, in segment order
   std::vector<int> segments;  // the 0-based segment of each condition of `run`
 };
 FatigueRun RunFatigue(const std::shared_ptr<const scene::Scene>& scene,
@@ -110,11 +110,13 @@ struct ExperimentRun {
 // minutes, cycle j starting with the work A = w * 60 * minute that
 // back-to-back cycles would have accumulated by then (RunFatigue).
 ExperimentRun Table1Run(const scene::ExperimentFile& file, const RunSettings& settings);
-ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file, const RunSettings& settings);
+ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file,
+                              const RunSettings& settings);
 ExperimentRun HumanFactorsGroupsRun(const scene::ExperimentFile& file,
                                     const RunSettings& settings);
 ExperimentRun FatigueExperimentRun(const scene::ExperimentFile& file,
                                    const RunSettings& settings);
-ExperimentRun PrecisionRun(const scene::ExperimentFile& file, const RunSettings& settings);
+ExperimentRun PrecisionRun(const scene::ExperimentFile& file,
+                           const RunSettings& settings);
 
 }  // namespace vahf::experiment

@@ -5,7 +5,8 @@
 namespace vahf::experiment {
 
 double TiltDeg(const sim::TraceRow& row, const Eigen::Matrix3d& target_rotation) {
-  return human::AngleDeg(row.orientation.toRotationMatrix().col(2), target_rotation.col(2));
+  return human::AngleDeg(row.orientation.toRotationMatrix().col(2),
+                         target_rotation.col(2));
 }
 
 Instants FindInstants(const sim::TrialResult& trial,

@@ -12,7 +12,8 @@ std::vector<Condition> PrecisionConditions(const scene::ExperimentFile& file,
     const int trials = trials_override > 0 ? trials_override
                        : s.trials > 0      ? s.trials
                                            : file.trials;
-    const auto add = [&](const scene::PrecisionSetting& setting, const scene::Scene& scene) {
+    const auto add = [&](const scene::PrecisionSetting& setting,
+                         const scene::Scene& scene) {
       Condition c;
       c.name = setting.label;
       c.group = s.scene.name;
@@ -26,8 +27,8 @@ std::vector<Condition> PrecisionConditions(const scene::ExperimentFile& file,
   return out;
 }
 
-std::size_t PrecisionConditionIndex(const scene::PrecisionDesign& design, std::size_t scene,
-                                    std::size_t setting) {
+std::size_t PrecisionConditionIndex(const scene::PrecisionDesign& design,
+                                    std::size_t scene, std::size_t setting) {
   return scene * (design.settings.size() + 1) + setting;
 }
 

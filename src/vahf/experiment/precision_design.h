@@ -23,7 +23,7 @@ std::vector<Condition> PrecisionConditions(const scene::ExperimentFile& file,
 
 // The index in PrecisionConditions of scene `scene`'s setting `setting`:
 // 0 is the reference, k + 1 the file's setting k.
-std::size_t PrecisionConditionIndex(const scene::PrecisionDesign& design, std::size_t scene,
-                                    std::size_t setting);
+std::size_t PrecisionConditionIndex(const scene::PrecisionDesign& design,
+                                    std::size_t scene, std::size_t setting);
 
 }  // namespace vahf::experiment

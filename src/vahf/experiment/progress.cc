@@ -1,7 +1,6 @@
 #include "vahf/experiment/progress.h"
 
 #include <fmt/format.h>
-
 #include <unistd.h>
 
 #include <cmath>
@@ -58,7 +57,8 @@ void ProgressMeter::Update(std::size_t done, double elapsed_s) {
 void ProgressMeter::Finish(std::size_t done, double elapsed_s) {
   if (!printed()) return;
   const std::string how = done == total_ ? "finished in " : "stopped after ";
-  Print(Prefix(label_, done, total_, elapsed_s, unit_) + ", " + how + Duration(elapsed_s), true);
+  Print(Prefix(label_, done, total_, elapsed_s, unit_) + ", " + how + Duration(elapsed_s),
+        true);
 }
 
 void ProgressMeter::Print(const std::string& line, bool final_line) {

@@ -1,8 +1,8 @@
 // Monte Carlo over trial indices on a pool of threads (docs/design.md, "Runner").
 //
 // Results are stored by trial index and returned in index order, so the output
-// never depends on the thread count or on scheduling (docs/design.md, decision 9). Each trial must own everything it mutates: `fn` is called
-// concurrently from several threads.
+// never depends on the thread count or on scheduling (docs/design.md, decision 9). Each
+// trial must own everything it mutates: `fn` is called concurrently from several threads.
 #pragma once
 
 #include <cstddef>
@@ -18,10 +18,10 @@
 namespace vahf::experiment {
 
 struct RunnerOptions {
-  int threads = 1;       // worker threads, >= 1
-  std::string label;     // names the run on the progress line
+  int threads = 1;              // worker threads, >= 1
+  std::string label;            // names the run on the progress line
   std::string unit = "trials";  // what one index is, on the progress line
-  bool progress = true;  // print the progress line (progress.h)
+  bool progress = true;         // print the progress line (progress.h)
   std::FILE* progress_stream = stderr;
 };
 

@@ -16,22 +16,24 @@ namespace {
 
 bool Finite(const sim::TraceRow& r) {
   const human::FactorValues& f = r.factors;
-  return std::isfinite(r.time) && r.position.allFinite() && r.orientation.coeffs().allFinite() &&
-         r.velocity.allFinite() && r.angular_velocity.allFinite() &&
-         r.assembly_force.allFinite() && r.contact_force.allFinite() &&
-         r.friction_force.allFinite() && std::isfinite(r.work) && std::isfinite(r.psi) &&
-         std::isfinite(r.penetration) && std::isfinite(f.V) && std::isfinite(f.f) &&
-         std::isfinite(f.eta) && std::isfinite(f.r) && std::isfinite(f.g) &&
-         std::isfinite(f.lambda_c) && std::isfinite(f.shoulder_distance);
+  return std::isfinite(r.time) && r.position.allFinite() &&
+         r.orientation.coeffs().allFinite() && r.velocity.allFinite() &&
+         r.angular_velocity.allFinite() && r.assembly_force.allFinite() &&
+         r.contact_force.allFinite() && r.friction_force.allFinite() &&
+         std::isfinite(r.work) && std::isfinite(r.psi) && std::isfinite(r.penetration) &&
+         std::isfinite(f.V) && std::isfinite(f.f) && std::isfinite(f.eta) &&
+         std::isfinite(f.r) && std::isfinite(f.g) && std::isfinite(f.lambda_c) &&
+         std::isfinite(f.shoulder_distance);
 }
 
 }  // namespace
 
 std::vector<std::string> OutcomeClasses() {
   std::vector<std::string> out;
-  for (sim::Status s : {sim::Status::kCompleted, sim::Status::kTimeout, sim::Status::kExhausted,
-                        sim::Status::kUnreachable, sim::Status::kJammed,
-                        sim::Status::kNumericalFailure, sim::Status::kStepBudget})
+  for (sim::Status s :
+       {sim::Status::kCompleted, sim::Status::kTimeout, sim::Status::kExhausted,
+        sim::Status::kUnreachable, sim::Status::kJammed, sim::Status::kNumericalFailure,
+        sim::Status::kStepBudget})
     out.push_back(sim::StatusName(s));
   return out;
 }
@@ -42,11 +44,13 @@ bool IsOutcomeClass(const std::string& name) {
 }
 
 std::vector<std::string> StabilityFailures(const scene::StabilityCase& c,
-                                           const sim::TrialResult& r, std::int64_t max_steps) {
+                                           const sim::TrialResult& r,
+                                           std::int64_t max_steps) {
   std::vector<std::string> out;
   const std::string status = sim::StatusName(r.status);
   if (std::find(c.expect.begin(), c.expect.end(), status) == c.expect.end())
-    out.push_back(fmt::format("ended {}, expected {}", status, fmt::join(c.expect, " or ")));
+    out.push_back(
+        fmt::format("ended {}, expected {}", status, fmt::join(c.expect, " or ")));
   std::vector<std::string> bad;
   if (!std::isfinite(r.end_time)) bad.push_back("end time");
   if (!std::isfinite(r.work)) bad.push_back("work");
@@ -87,10 +91,11 @@ std::vector<StabilityTrial> RunStabilityTrials(const scene::StabilityDesign& des
     sim::TrialOptions trial_options;
     trial_options.sequence_position = c.position;
     trial_options.record_trace = false;
-    t.result = sim::RunTrial(*models[t.case_index][t.integrator_index],
-                             CycleKey(seed, static_cast<std::uint64_t>(t.seed_index),
-                                      scene.sequence.size(), static_cast<std::size_t>(c.position)),
-                             trial_options);
+    t.result = sim::RunTrial(
+        *models[t.case_index][t.integrator_index],
+        CycleKey(seed, static_cast<std::uint64_t>(t.seed_index), scene.sequence.size(),
+                 static_cast<std::size_t>(c.position)),
+        trial_options);
     t.failures = StabilityFailures(c, t.result, scene.params.simulation.max_steps);
     return t;
   });

@@ -53,7 +53,8 @@ Table1 LoadTable1(const std::string& path) {
       dec.Required(k).Fail("V, f, r and g must be printed to the same decimals");
   t.decimals_outputs = static_cast<int>(dec.Required("eta").Integer(0, 6));
   if (dec.Required("lambda_c").Integer(0, 6) != t.decimals_outputs)
-    dec.Required("lambda_c").Fail("eta and lambda_c must be printed to the same decimals");
+    dec.Required("lambda_c")
+        .Fail("eta and lambda_c must be printed to the same decimals");
   t.decimals_a = static_cast<int>(dec.Required("A").Integer(0, 6));
   t.decimals_psi = static_cast<int>(dec.Required("psi_c").Integer(0, 6));
   const scene::JsonNode rows = root.Required("rows");
@@ -124,9 +125,10 @@ PsiFeasibility PsiColumnFeasibility(const Table1& table) {
   return {a_max, a_max.lo <= a_max.hi};
 }
 
-std::string FormatTable1Check(const Table1& table, const std::vector<Table1Check>& checks) {
-  std::string out = fmt::format("Table 1 of the paper against Eqs. 2, 3 and 6 ({})\n",
-                                table.file);
+std::string FormatTable1Check(const Table1& table,
+                              const std::vector<Table1Check>& checks) {
+  std::string out =
+      fmt::format("Table 1 of the paper against Eqs. 2, 3 and 6 ({})\n", table.file);
   out += fmt::format(
       "{:<14} {:>2} | {:>5} {:>5} {:>5} {:>5} | {:>5} {:>6} {:>15} {:<4} | {:>5} {:>6} "
       "{:>15} {:<4} | {:>5} {:>6}\n",
@@ -137,12 +139,13 @@ std::string FormatTable1Check(const Table1& table, const std::vector<Table1Check
     const Table1Row& r = c.row;
     inconsistent += !c.eta.consistent + !c.lambda_c.consistent;
     out += fmt::format(
-        "{:<14} {:>2} | {:5.2f} {:5.2f} {:5.2f} {:5.2f} | {:5.2f} {:6.4f} [{:.4f},{:.4f}] "
+        "{:<14} {:>2} | {:5.2f} {:5.2f} {:5.2f} {:5.2f} | {:5.2f} {:6.4f} "
+        "[{:.4f},{:.4f}] "
         "{:<4} | {:5.2f} {:6.4f} [{:.4f},{:.4f}] {:<4} | {:5.1f} {:6.4f}\n",
         r.part, r.instant, r.V, r.f, r.r, r.g, r.eta, c.eta.computed, c.eta.allowed.lo,
-        c.eta.allowed.hi, c.eta.consistent ? "yes" : "NO", r.lambda_c, c.lambda_c.computed,
-        c.lambda_c.allowed.lo, c.lambda_c.allowed.hi, c.lambda_c.consistent ? "yes" : "NO",
-        r.psi_c, c.psi_eq6);
+        c.eta.allowed.hi, c.eta.consistent ? "yes" : "NO", r.lambda_c,
+        c.lambda_c.computed, c.lambda_c.allowed.lo, c.lambda_c.allowed.hi,
+        c.lambda_c.consistent ? "yes" : "NO", r.psi_c, c.psi_eq6);
   }
   const PsiFeasibility psi = PsiColumnFeasibility(table);
   const auto [psi_min, psi_max] = std::minmax_element(
@@ -157,8 +160,8 @@ std::string FormatTable1Check(const Table1& table, const std::vector<Table1Check
       "Psi_c: Eq. 6 with A in kcal and the 1600 kcal limit gives {:.4f}-{:.4f}, not the "
       "printed {:.1f}; a single A_max fitting every row would need {:.1f} <= A_max <= "
       "{:.1f} kcal: {}.\n",
-      psi_min->psi_eq6, psi_max->psi_eq6, checks.front().row.psi_c,
-      psi.a_max.lo, psi.a_max.hi, psi.feasible ? "possible" : "impossible");
+      psi_min->psi_eq6, psi_max->psi_eq6, checks.front().row.psi_c, psi.a_max.lo,
+      psi.a_max.hi, psi.feasible ? "possible" : "impossible");
   out += "See reference/paper/NOTES.md.\n";
   return out;
 }

@@ -37,9 +37,9 @@ struct Interval {
 };
 
 struct CoefficientCheck {
-  double computed;  // from the printed inputs
-  Interval allowed; // over the rounding box of the inputs
-  Interval printed; // the printed output +- its half unit
+  double computed;   // from the printed inputs
+  Interval allowed;  // over the rounding box of the inputs
+  Interval printed;  // the printed output +- its half unit
   bool consistent;
 };
 
@@ -60,6 +60,7 @@ struct PsiFeasibility {
 PsiFeasibility PsiColumnFeasibility(const Table1& table);
 
 // The side-by-side table `tools/run` prints.
-std::string FormatTable1Check(const Table1& table, const std::vector<Table1Check>& checks);
+std::string FormatTable1Check(const Table1& table,
+                              const std::vector<Table1Check>& checks);
 
 }  // namespace vahf::experiment

@@ -1,11 +1,11 @@
 #include "vahf/geometry/shape.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace vahf::geometry {
 namespace {
@@ -71,8 +71,8 @@ MassProperties OfProfile(const RevolvedProfile& p) {
   const auto& v = p.vertices;
   for (std::size_t k = 1; k + 1 < v.size(); ++k) {
     i_r += IntegrateTriangle(v[0], v[k], v[k + 1], [](double r, double) { return r; });
-    i_rz += IntegrateTriangle(v[0], v[k], v[k + 1],
-                              [](double r, double z) { return r * z; });
+    i_rz +=
+        IntegrateTriangle(v[0], v[k], v[k + 1], [](double r, double z) { return r * z; });
     i_r3 += IntegrateTriangle(v[0], v[k], v[k + 1],
                               [](double r, double) { return r * r * r; });
     i_rz2 += IntegrateTriangle(v[0], v[k], v[k + 1],
@@ -83,9 +83,9 @@ MassProperties OfProfile(const RevolvedProfile& p) {
   m.volume = 2 * M_PI * i_r;
   const double zc = 2 * M_PI * i_rz / m.volume;
   m.centroid = {0, 0, zc};
-  const double izz = 2 * M_PI * i_r3;                             // int (x^2+y^2) dV
-  const double ixx_origin = M_PI * i_r3 + 2 * M_PI * i_rz2;        // int (y^2+z^2) dV
-  const double ixx = ixx_origin - m.volume * zc * zc;              // parallel axis
+  const double izz = 2 * M_PI * i_r3;                        // int (x^2+y^2) dV
+  const double ixx_origin = M_PI * i_r3 + 2 * M_PI * i_rz2;  // int (y^2+z^2) dV
+  const double ixx = ixx_origin - m.volume * zc * zc;        // parallel axis
   m.inertia_per_density = {ixx, ixx, izz};
   for (const ProfilePoint& q : v)
     m.bounding_radius = std::max(m.bounding_radius, std::hypot(q.r, q.z));
@@ -96,10 +96,10 @@ MassProperties OfBox(const Box& b) {
   MassProperties m;
   const Eigen::Vector3d& s = b.size;
   m.volume = s.x() * s.y() * s.z();
-  m.inertia_per_density = m.volume / 12.0 *
-                          Eigen::Vector3d(s.y() * s.y() + s.z() * s.z(),
-                                          s.x() * s.x() + s.z() * s.z(),
-                                          s.x() * s.x() + s.y() * s.y());
+  m.inertia_per_density =
+      m.volume / 12.0 *
+      Eigen::Vector3d(s.y() * s.y() + s.z() * s.z(), s.x() * s.x() + s.z() * s.z(),
+                      s.x() * s.x() + s.y() * s.y());
   m.bounding_radius = 0.5 * s.norm();
   return m;
 }
@@ -111,27 +111,31 @@ RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& pts) {
     if (!std::isfinite(pts[k].r) || !std::isfinite(pts[k].z))
       Reject(fmt::format("point {}: coordinates must be finite numbers", k));
     if (pts[k].r < 0)
-      Reject(fmt::format("point {}: r = {} is negative; a profile lies in the "
-                         "half-plane r >= 0",
-                         k, pts[k].r));
+      Reject(
+          fmt::format("point {}: r = {} is negative; a profile lies in the "
+                      "half-plane r >= 0",
+                      k, pts[k].r));
     if (pts[k].r > kMaxExtent || std::abs(pts[k].z) > kMaxExtent)
-      Reject(fmt::format("point {}: ({}, {}) m lies beyond {} m; a part's profile lies "
-                         "within r <= {} m, |z| <= {} m",
-                         k, pts[k].r, pts[k].z, kMaxExtent, kMaxExtent, kMaxExtent));
+      Reject(
+          fmt::format("point {}: ({}, {}) m lies beyond {} m; a part's profile lies "
+                      "within r <= {} m, |z| <= {} m",
+                      k, pts[k].r, pts[k].z, kMaxExtent, kMaxExtent, kMaxExtent));
   }
   if (pts.size() > kMaxProfileVertices + 1)
     Reject(fmt::format("profile: {} points; at most {} vertices (and the closing repeat)",
                        pts.size(), kMaxProfileVertices));
   if (pts.size() < 4)
-    Reject(fmt::format("profile: {} points; a closed profile needs at least 3 distinct "
-                       "vertices and its first point repeated at the end",
-                       pts.size()));
+    Reject(
+        fmt::format("profile: {} points; a closed profile needs at least 3 distinct "
+                    "vertices and its first point repeated at the end",
+                    pts.size()));
   const ProfilePoint& first = pts.front();
   const ProfilePoint& last = pts.back();
   if (first.r != last.r || first.z != last.z)
-    Reject(fmt::format("profile: open, its last point ({}, {}) is not its first ({}, "
-                       "{}); repeat the first point to close it",
-                       last.r, last.z, first.r, first.z));
+    Reject(
+        fmt::format("profile: open, its last point ({}, {}) is not its first ({}, "
+                    "{}); repeat the first point to close it",
+                    last.r, last.z, first.r, first.z));
   RevolvedProfile p;
   p.vertices.assign(pts.begin(), pts.end() - 1);
   const auto& v = p.vertices;
@@ -155,17 +159,18 @@ RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& pts) {
         const ProfilePoint& shared = j == i + 1 ? b : a;
         const ProfilePoint& p1 = j == i + 1 ? a : b;
         const ProfilePoint& p2 = j == i + 1 ? d : c;
-        const double dot = (p1.r - shared.r) * (p2.r - shared.r) +
-                           (p1.z - shared.z) * (p2.z - shared.z);
+        const double dot =
+            (p1.r - shared.r) * (p2.r - shared.r) + (p1.z - shared.z) * (p2.z - shared.z);
         if (Cross(shared, p1, p2) == 0 && dot > 0)
           Reject(fmt::format("point {}: the profile folds back on itself here",
                              j == i + 1 ? j : i));
         continue;
       }
       if (SegmentsTouch(a, b, c, d))
-        Reject(fmt::format("point {}: edge {}-{} crosses or touches edge {}-{}; a "
-                           "profile must be a simple (non-self-crossing) polygon",
-                           j, i, (i + 1) % n, j, (j + 1) % n));
+        Reject(
+            fmt::format("point {}: edge {}-{} crosses or touches edge {}-{}; a "
+                        "profile must be a simple (non-self-crossing) polygon",
+                        j, i, (i + 1) % n, j, (j + 1) % n));
     }
   }
   double twice_area = 0.0;

@@ -45,15 +45,15 @@ inline constexpr std::size_t kMaxProfileVertices = 1000;
 // first (closed), at least three distinct vertices and at most
 // kMaxProfileVertices, 0 <= r <= kMaxExtent and |z| <= kMaxExtent, no
 // repeated consecutive points, no self-crossing or folding edge, an area of
-// at least kMinProfileArea. On success returns the polygon without the closing repeat, oriented
-// counter-clockwise; on failure throws std::invalid_argument whose message
+// at least kMinProfileArea. On success returns the polygon without the closing repeat,
+// oriented counter-clockwise; on failure throws std::invalid_argument whose message
 // starts with "point K: " (or "profile: ") and states the rule.
 RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& closed_points);
 
 // Mass properties of a uniform solid, in the part frame.
 struct MassProperties {
-  double volume = 0.0;                  // m^3
-  Eigen::Vector3d centroid{0, 0, 0};    // m
+  double volume = 0.0;                // m^3
+  Eigen::Vector3d centroid{0, 0, 0};  // m
   // Inertia per unit density about the centroid, along the part axes
   // (principal for both shapes): m^5, multiply by density for kg m^2.
   Eigen::Vector3d inertia_per_density{0, 0, 0};

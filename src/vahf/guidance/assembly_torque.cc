@@ -22,11 +22,13 @@ Eigen::Matrix3d DrawHeldOrientation(const GuidanceParams& params, rng::StreamKey
 Eigen::Vector3d AssemblyTorque(const GuidanceParams& params, double psi,
                                const Eigen::Matrix3d& inertia_world,
                                const Eigen::Matrix3d& rotation,
-                               const Eigen::Matrix3d& held, const Eigen::Vector3d& omega) {
+                               const Eigen::Matrix3d& held,
+                               const Eigen::Vector3d& omega) {
   const Eigen::AngleAxisd error(held * rotation.transpose());  // world frame
   const Eigen::Vector3d theta = error.angle() * error.axis();
   const double w = params.torque_frequency;
-  return inertia_world * (psi * w * w * theta - 2.0 * params.torque_damping_ratio * w * omega);
+  return inertia_world *
+         (psi * w * w * theta - 2.0 * params.torque_damping_ratio * w * omega);
 }
 
 }  // namespace vahf::guidance

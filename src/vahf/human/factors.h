@@ -52,7 +52,7 @@ struct FactorCurves {
 // Every factor at one decision instant.
 struct FactorValues {
   double V = 1.0;
-  double sight_angle_deg = 0.0;    // Ang
+  double sight_angle_deg = 0.0;  // Ang
   double f = 1.0;
   double eta = 0.0;
   double shoulder_distance = 0.0;  // m

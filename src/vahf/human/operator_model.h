@@ -15,20 +15,20 @@ namespace vahf::human {
 // "Biomechanics and Motor Control of Human Movement", 4th ed., Wiley 2009,
 // Fig. 4.1 (segment lengths after Drillis and Contini, 1966).
 struct Anthropometry {
-  double eye_height = 0.936;        // eye level
-  double shoulder_height = 0.818;   // acromion (shoulder joint centre)
-  double hip_height = 0.530;        // greater trochanter (hip joint centre)
-  double shoulder_width = 0.259;    // biacromial breadth
+  double eye_height = 0.936;       // eye level
+  double shoulder_height = 0.818;  // acromion (shoulder joint centre)
+  double hip_height = 0.530;       // greater trochanter (hip joint centre)
+  double shoulder_width = 0.259;   // biacromial breadth
   // Horizontal offset of the eye ahead of the body plane. Winter's figure gives
   // no sagittal offsets, so vahf keeps the eye in the body plane by default.
   double eye_forward = 0.0;
 };
 
 struct Operator {
-  double height = 1.75;      // stature h, m
-  double arm_length = 0.74;  // l, shoulder to fingertip, m
+  double height = 1.75;                                // stature h, m
+  double arm_length = 0.74;                            // l, shoulder to fingertip, m
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // on the floor, m
-  double facing_deg = 0.0;   // direction faced, from +x about +z, degrees
+  double facing_deg = 0.0;          // direction faced, from +x about +z, degrees
   std::string sex = "unspecified";  // a label carried into reports
   Anthropometry proportions;
 };

@@ -26,15 +26,16 @@ std::string CheckCalibration(const scene::ExperimentFile& e) {
     if (!stage.name.empty())
       out += fmt::format("  stage '{}' ({}):\n", stage.name, stage.solver);
     for (const scene::FitParameter& p : stage.parameters)
-      out += fmt::format("  fits {} from {:g} within [{:g}, {:g}]\n", p.name, p.start, p.lower,
-                         p.upper);
+      out += fmt::format("  fits {} from {:g} within [{:g}, {:g}]\n", p.name, p.start,
+                         p.lower, p.upper);
     for (const auto& t : calibrate::LabTargets(lab, stage.targets, e.file)) {
       if (t.lab.single_draw)
-        out += fmt::format("  target {}: lab {:g} (one draw: weighed by the virtual spread)\n",
-                           t.label, t.lab.value);
+        out += fmt::format(
+            "  target {}: lab {:g} (one draw: weighed by the virtual spread)\n", t.label,
+            t.lab.value);
       else
-        out += fmt::format("  target {}: lab {:g} (se {:g}, n {})\n", t.label, t.lab.value,
-                           std::sqrt(t.lab.variance), t.lab.n);
+        out += fmt::format("  target {}: lab {:g} (se {:g}, n {})\n", t.label,
+                           t.lab.value, std::sqrt(t.lab.variance), t.lab.n);
     }
   }
   return out + DescribeSceneModels(e.scene);

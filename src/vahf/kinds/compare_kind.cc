@@ -23,16 +23,17 @@ std::string CheckComparison(const scene::ExperimentFile& e) {
   bool segments = false;
   for (const auto& q : compare::LabSide(lab, e.comparison, e.file)) {
     const char* unit = q.target.unit == "s" ? " s" : "";
-    out += fmt::format("  compares {} within +-{:g}{}: lab {:g}{} from {}\n", q.target.label,
-                       q.margin, unit, q.target.lab.value, unit,
+    out += fmt::format("  compares {} within +-{:g}{}: lab {:g}{} from {}\n",
+                       q.target.label, q.margin, unit, q.target.lab.value, unit,
                        compare::LabBasis(q.target, q.reported));
     segments = segments || q.target.spec.segment > 0;
   }
   const scene::FatigueDesign& f = e.comparison.fatigue;
   if (segments)
-    out += fmt::format("  segments from the fatigue design: {:g} min in {} segments, {} pilot "
-                       "cycles\n",
-                       f.duration_min, f.segments, f.pilot_cycles > 0 ? f.pilot_cycles : e.trials);
+    out += fmt::format(
+        "  segments from the fatigue design: {:g} min in {} segments, {} pilot "
+        "cycles\n",
+        f.duration_min, f.segments, f.pilot_cycles > 0 ? f.pilot_cycles : e.trials);
   return out + DescribeSceneModels(e.scene);
 }
 
@@ -51,12 +52,12 @@ int RunComparison(const scene::ExperimentFile& file, const RunContext& context) 
       compare::Compare(file.scene, lab, file.comparison, file.file, settings.seed, trials,
                        options, pilot_options);
   const report::RunInfo info{settings.threads, SecondsSince(start)};
-  const report::RunOutput written = WriteLabRun(
-      file, lab, context, trials,
-      result.fatigue.run.conditions.empty() ? " per lab operator"
-      : result.run.conditions.empty()       ? " per segment"
-                                            : " per lab operator and per segment",
-      report::ComparisonSection(file, lab, result, trials), info);
+  const report::RunOutput written =
+      WriteLabRun(file, lab, context, trials,
+                  result.fatigue.run.conditions.empty() ? " per lab operator"
+                  : result.run.conditions.empty()       ? " per segment"
+                                                  : " per lab operator and per segment",
+                  report::ComparisonSection(file, lab, result, trials), info);
   for (const auto& q : result.quantities)
     std::printf("%s: %s\n", q.target.label.c_str(), q.verdict.c_str());
   return FinishRun(file, context, info.wall_seconds, written);

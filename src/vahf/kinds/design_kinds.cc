@@ -34,7 +34,8 @@ std::string CheckPrecision(const scene::ExperimentFile& file) {
 
 // The experiments a paper run lists, each from its own file and a design of
 // cycles (their outputs share one directory); they name their scenes.
-void ParsePaper(const scene::JsonNode& root, const std::string& path, scene::ExperimentFile* e) {
+void ParsePaper(const scene::JsonNode& root, const std::string& path,
+                scene::ExperimentFile* e) {
   const scene::JsonNode list = root.Required("experiments");
   const std::size_t n = list.ArraySize(1);
   for (std::size_t k = 0; k < n; ++k) {
@@ -45,10 +46,11 @@ void ParsePaper(const scene::JsonNode& root, const std::string& path, scene::Exp
       list.At(k).Fail("a paper experiment cannot list another paper experiment");
     scene::ExperimentFile x = ParseExperiment(doc, sub);
     if (!FindKind(x.kind).design)
-      list.At(k).Fail(fmt::format("{} is a {} experiment: a paper run lists designs of cycles "
-                                  "(table1, assembly_time, human_factors_groups, fatigue, "
-                                  "precision); run it on its own",
-                                  sub, x.kind));
+      list.At(k).Fail(
+          fmt::format("{} is a {} experiment: a paper run lists designs of cycles "
+                      "(table1, assembly_time, human_factors_groups, fatigue, "
+                      "precision); run it on its own",
+                      sub, x.kind));
     e->experiments.push_back(std::move(x));
   }
 }

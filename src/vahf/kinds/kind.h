@@ -59,7 +59,8 @@ const Kind& FindKind(const std::string& name);
 // Reads an experiment file: the common fields, the scene, then its kind's
 // keys; errors name whichever file holds the fault.
 scene::ExperimentFile LoadExperiment(const std::string& path);
-scene::ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string& path);
+scene::ExperimentFile ParseExperiment(const nlohmann::json& document,
+                                      const std::string& path);
 
 // `vahf check` of an experiment file: every validation a run makes before its
 // first trial, and what the file holds.

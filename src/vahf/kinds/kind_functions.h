@@ -10,10 +10,12 @@
 namespace vahf::kinds {
 
 // design_kinds.cc
-std::string CheckOneScene(const scene::ExperimentFile& file);  // table1, assembly_time, fatigue
+std::string CheckOneScene(
+    const scene::ExperimentFile& file);  // table1, assembly_time, fatigue
 std::string CheckGroups(const scene::ExperimentFile& file);
 std::string CheckPrecision(const scene::ExperimentFile& file);
-void ParsePaper(const scene::JsonNode& root, const std::string& path, scene::ExperimentFile* e);
+void ParsePaper(const scene::JsonNode& root, const std::string& path,
+                scene::ExperimentFile* e);
 std::string CheckPaper(const scene::ExperimentFile& file);
 experiment::ExperimentRun PaperRun(const scene::ExperimentFile& file,
                                    const experiment::RunSettings& settings);

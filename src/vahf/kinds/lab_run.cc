@@ -2,9 +2,11 @@
 
 namespace vahf::kinds {
 
-report::RunOutput WriteLabRun(const scene::ExperimentFile& file, const data::LabDataset& lab,
-                              const RunContext& context, int trials, const std::string& cycles,
-                              const report::Section& section, const report::RunInfo& info) {
+report::RunOutput WriteLabRun(const scene::ExperimentFile& file,
+                              const data::LabDataset& lab, const RunContext& context,
+                              int trials, const std::string& cycles,
+                              const report::Section& section,
+                              const report::RunInfo& info) {
   report::RunHeader h;
   h.file = &file;
   h.first = &file;

@@ -13,8 +13,10 @@ namespace vahf::kinds {
 
 // Writes the directory: the manifest lists the scene, the dataset's manifest
 // and files and the override file besides the experiment file.
-report::RunOutput WriteLabRun(const scene::ExperimentFile& file, const data::LabDataset& lab,
-                              const RunContext& context, int trials, const std::string& cycles,
-                              const report::Section& section, const report::RunInfo& info);
+report::RunOutput WriteLabRun(const scene::ExperimentFile& file,
+                              const data::LabDataset& lab, const RunContext& context,
+                              int trials, const std::string& cycles,
+                              const report::Section& section,
+                              const report::RunInfo& info);
 
 }  // namespace vahf::kinds

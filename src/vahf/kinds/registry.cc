@@ -18,32 +18,82 @@ const std::vector<Kind>& Kinds() {
   using namespace report;
   using namespace scene;
   static const std::vector<Kind> kinds = {
-      {"table1", "Table 1: V, f, r, g, eta, lambda_c and Psi_c at the paper's instants",
-       {"paper_table"}, "", ReadTable1, CheckOneScene, Table1Run, Table1Section},
-      {"assembly_time", "assembly time per operator (Sec. 5.2)", {"operators"}, "",
-       ReadAssemblyTime, CheckOneScene, AssemblyTimeRun, AssemblyTimeSection},
-      {"human_factors_groups", "human factors per working condition (Sec. 5.3)",
-       {"conditions", "instants_s", "paper_cycle_s"}, "", ReadHumanFactorsGroups, CheckGroups,
-       HumanFactorsGroupsRun, HumanFactorsGroupsSection},
-      {"fatigue", "success rate and time over an hour of work (Sec. 5.4)", {"fatigue"}, "",
-       ReadFatigue, CheckOneScene, FatigueExperimentRun, FatigueSection},
-      {"precision", "error against run time of integrators and model settings",
+      {"table1",
+       "Table 1: V, f, r, g, eta, lambda_c and Psi_c at the paper's instants",
+       {"paper_table"},
+       "",
+       ReadTable1,
+       CheckOneScene,
+       Table1Run,
+       Table1Section},
+      {"assembly_time",
+       "assembly time per operator (Sec. 5.2)",
+       {"operators"},
+       "",
+       ReadAssemblyTime,
+       CheckOneScene,
+       AssemblyTimeRun,
+       AssemblyTimeSection},
+      {"human_factors_groups",
+       "human factors per working condition (Sec. 5.3)",
+       {"conditions", "instants_s", "paper_cycle_s"},
+       "",
+       ReadHumanFactorsGroups,
+       CheckGroups,
+       HumanFactorsGroupsRun,
+       HumanFactorsGroupsSection},
+      {"fatigue",
+       "success rate and time over an hour of work (Sec. 5.4)",
+       {"fatigue"},
+       "",
+       ReadFatigue,
+       CheckOneScene,
+       FatigueExperimentRun,
+       FatigueSection},
+      {"precision",
+       "error against run time of integrators and model settings",
        {"scenes", "reference", "settings", "noise_trials"},
-       "a precision experiment names its scenes in \"scenes\"", ReadPrecision, CheckPrecision,
-       PrecisionRun, PrecisionSection},
-      {"paper", "the paper's experiments, one report", {"experiments"},
-       "a paper experiment takes its scenes from the experiments it lists", ParsePaper,
-       CheckPaper, PaperRun, nullptr},
-      {"calibrate", "parameters fitted to a lab dataset (docs/calibration.md)",
-       {"lab", "fatigue", "parameters", "targets", "loss", "relative_step", "max_iterations",
-        "tolerance", "solver", "stages"},
-       "", ReadCalibration, CheckCalibration, nullptr, nullptr, RunCalibration},
-      {"compare", "a virtual design against a lab dataset (docs/calibration.md)",
-       {"lab", "fatigue", "quantities"}, "", ReadComparison, CheckComparison, nullptr, nullptr,
+       "a precision experiment names its scenes in \"scenes\"",
+       ReadPrecision,
+       CheckPrecision,
+       PrecisionRun,
+       PrecisionSection},
+      {"paper",
+       "the paper's experiments, one report",
+       {"experiments"},
+       "a paper experiment takes its scenes from the experiments it lists",
+       ParsePaper,
+       CheckPaper,
+       PaperRun,
+       nullptr},
+      {"calibrate",
+       "parameters fitted to a lab dataset (docs/calibration.md)",
+       {"lab", "fatigue", "parameters", "targets", "loss", "relative_step",
+        "max_iterations", "tolerance", "solver", "stages"},
+       "",
+       ReadCalibration,
+       CheckCalibration,
+       nullptr,
+       nullptr,
+       RunCalibration},
+      {"compare",
+       "a virtual design against a lab dataset (docs/calibration.md)",
+       {"lab", "fatigue", "quantities"},
+       "",
+       ReadComparison,
+       CheckComparison,
+       nullptr,
+       nullptr,
        RunComparison},
-      {"stability", "stiff and extreme cases across integrators, each with its expected outcome",
-       {"integrators", "cases"}, "a stability experiment names a scene in each of its \"cases\"",
-       ReadStability, CheckStability, nullptr, nullptr, RunStability},
+      {"stability",
+       "stiff and extreme cases across integrators, each with its expected outcome",
+       {"integrators", "cases"},
+       "a stability experiment names a scene in each of its \"cases\"",
+       ReadStability,
+       CheckStability,
+       nullptr,
+       nullptr,
+       RunStability},
   };
   return kinds;
 }
@@ -81,10 +131,11 @@ scene::ExperimentFile LoadExperiment(const std::string& path) {
   return ParseExperiment(scene::ReadJsonFile(path), path);
 }
 
-scene::ExperimentFile ParseExperiment(const nlohmann::json& document, const std::string& path) {
+scene::ExperimentFile ParseExperiment(const nlohmann::json& document,
+                                      const std::string& path) {
   const scene::JsonNode root(document, path);
-  std::vector<std::string> keys = {"format", "name",   "description", "kind",
-                                   "scene",  "seed",   "trials"};
+  std::vector<std::string> keys = {"format", "name", "description", "kind",
+                                   "scene",  "seed", "trials"};
   for (const Kind& k : Kinds())
     for (const std::string& key : k.keys)
       if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
@@ -97,8 +148,8 @@ scene::ExperimentFile ParseExperiment(const nlohmann::json& document, const std:
     const std::string readers = KindsReading(key);
     if (!readers.empty() &&
         std::find(kind.keys.begin(), kind.keys.end(), key) == kind.keys.end())
-      root.Required(key).Fail("only an experiment of kind " + readers + " reads \"" + key +
-                              "\"");
+      root.Required(key).Fail("only an experiment of kind " + readers + " reads \"" +
+                              key + "\"");
   }
   if (kind.scene_elsewhere.empty())
     scene::ReadExperimentScene(root, path, &e);
@@ -110,8 +161,8 @@ scene::ExperimentFile ParseExperiment(const nlohmann::json& document, const std:
 
 std::string CheckExperiment(const scene::ExperimentFile& file) {
   std::string out =
-      fmt::format("experiment '{}' ({}): kind {}, seed {}{}\n", file.name, file.file, file.kind,
-                  file.seed,
+      fmt::format("experiment '{}' ({}): kind {}, seed {}{}\n", file.name, file.file,
+                  file.kind, file.seed,
                   file.kind == "paper" || file.kind == "stability"
                       ? ""
                       : fmt::format(", {} cycles per condition", file.trials));

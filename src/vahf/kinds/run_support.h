@@ -21,7 +21,8 @@ double SecondsSince(std::chrono::steady_clock::time_point start);
 // Prints "NAME: KIND, seed S, X s on T thread(s)[, detail]", the results
 // digest and the report's path, then any plot that failed (on stderr);
 // returns the exit status: 1 when a plot failed (the results are kept), else 0.
-int FinishRun(const scene::ExperimentFile& file, const RunContext& context, double seconds,
-              const report::RunOutput& written, const std::string& detail = "");
+int FinishRun(const scene::ExperimentFile& file, const RunContext& context,
+              double seconds, const report::RunOutput& written,
+              const std::string& detail = "");
 
 }  // namespace vahf::kinds

@@ -53,17 +53,19 @@ int RunStability(const scene::ExperimentFile& file, const RunContext& context) {
   for (const scene::StabilityCase& c : file.stability.cases)
     if (std::find(h.inputs.begin(), h.inputs.end(), c.scene_path) == h.inputs.end())
       h.inputs.push_back(c.scene_path);
-  h.integration = fmt::format("per case and integrator, accuracy {:g} unless the case sets "
-                              "it (stability_trials.csv)",
-                              file.scene.params.simulation.accuracy);
+  h.integration = fmt::format(
+      "per case and integrator, accuracy {:g} unless the case sets "
+      "it (stability_trials.csv)",
+      file.scene.params.simulation.accuracy);
   if (!file.overrides_path.empty()) h.inputs.push_back(file.overrides_path);
   const report::RunOutput written = report::WriteSections(
       h, {report::StabilitySection(file, trials)}, *context.directory, info);
   const std::vector<std::string> failed = report::FailedCases(file.stability, trials);
-  const int status = FinishRun(file, context, info.wall_seconds, written,
-                               fmt::format("{} trials, {} of {} cases passed", trials.size(),
-                                           file.stability.cases.size() - failed.size(),
-                                           file.stability.cases.size()));
+  const int status =
+      FinishRun(file, context, info.wall_seconds, written,
+                fmt::format("{} trials, {} of {} cases passed", trials.size(),
+                            file.stability.cases.size() - failed.size(),
+                            file.stability.cases.size()));
   if (failed.empty()) return status;
   std::fprintf(stderr, "vahf: error: stability: %zu case(s) failed (results kept): %s\n",
                failed.size(), fmt::format("{}", fmt::join(failed, ", ")).c_str());

@@ -15,7 +15,8 @@ std::vector<std::pair<std::string, std::string>> ParseLibraries(const std::strin
     if (end == std::string::npos) end = text.size();
     const std::string entry = text.substr(begin, end - begin);
     const std::size_t eq = entry.find('=');
-    if (eq != std::string::npos) out.emplace_back(entry.substr(0, eq), entry.substr(eq + 1));
+    if (eq != std::string::npos)
+      out.emplace_back(entry.substr(0, eq), entry.substr(eq + 1));
     begin = end + 1;
   }
   return out;
@@ -24,9 +25,12 @@ std::vector<std::pair<std::string, std::string>> ParseLibraries(const std::strin
 }  // namespace
 
 const BuildInfo& GetBuildInfo() {
-  static const BuildInfo info{VAHF_BUILD_VERSION,     VAHF_BUILD_GIT_DESCRIBE,
-                              VAHF_BUILD_COMPILER_ID, VAHF_BUILD_COMPILER_VERSION,
-                              VAHF_BUILD_TYPE,        VAHF_BUILD_CXX_FLAGS,
+  static const BuildInfo info{VAHF_BUILD_VERSION,
+                              VAHF_BUILD_GIT_DESCRIBE,
+                              VAHF_BUILD_COMPILER_ID,
+                              VAHF_BUILD_COMPILER_VERSION,
+                              VAHF_BUILD_TYPE,
+                              VAHF_BUILD_CXX_FLAGS,
                               ParseLibraries(VAHF_BUILD_LIBRARIES)};
   return info;
 }

@@ -13,14 +13,17 @@ namespace {
 
 std::string N(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x) : "-"; }
 
-bool Finite(const stats::Interval& i) { return std::isfinite(i.lower) && std::isfinite(i.upper); }
+bool Finite(const stats::Interval& i) {
+  return std::isfinite(i.lower) && std::isfinite(i.upper);
+}
 
 // "9.2 [8.1, 10.3] (n 12)"; a point without an interval says so; n 0 is a
 // count the lab did not state.
 std::string Side(double value, const stats::Interval& ci, int n) {
   if (!std::isfinite(value)) return "-";
   return N(value) +
-         (Finite(ci) ? fmt::format(" [{}, {}]", N(ci.lower), N(ci.upper)) : " (no interval)") +
+         (Finite(ci) ? fmt::format(" [{}, {}]", N(ci.lower), N(ci.upper))
+                     : " (no interval)") +
          (n > 0 ? fmt::format(" (n {})", n) : " (n not stated)");
 }
 
@@ -45,7 +48,8 @@ struct UnitText {
 };
 UnitText TextOf(const std::string& unit) {
   if (unit == "s")
-    return {"Mean assembly times (s)", "mean assembly time (s)", "plots/compare_times.png"};
+    return {"Mean assembly times (s)", "mean assembly time (s)",
+            "plots/compare_times.png"};
   return {"Success rates (1: a share of attempts)", "success rate (1)",
           "plots/compare_rates.png"};
 }
@@ -97,14 +101,17 @@ Plot UnitPlot(const std::vector<const compare::QuantityComparison*>& rows,
   }
   std::string plot =
       "plot $d using ($1-0.12):($5==1?$2:1/0):3:4 with yerrorbars pt 7 lc 1 "
-      "title 'lab (95 %)', '' using ($1+0.12):($9==1?$6:1/0):7:8 with yerrorbars pt 5 lc 2 "
+      "title 'lab (95 %)', '' using ($1+0.12):($9==1?$6:1/0):7:8 with yerrorbars pt 5 lc "
+      "2 "
       "title 'virtual (95 %)'";
   if (lab_point)
-    plot += ", '' using ($1-0.12):($5==0?$2:1/0) with points pt 6 ps 1.5 lc 1 "
-            "title 'lab, no interval'";
+    plot +=
+        ", '' using ($1-0.12):($5==0?$2:1/0) with points pt 6 ps 1.5 lc 1 "
+        "title 'lab, no interval'";
   if (virt_point)
-    plot += ", '' using ($1+0.12):($9==0?$6:1/0) with points pt 4 ps 1.5 lc 2 "
-            "title 'virtual, no interval'";
+    plot +=
+        ", '' using ($1+0.12):($9==0?$6:1/0) with points pt 4 ps 1.5 lc 2 "
+        "title 'virtual, no interval'";
   return {text.plot,
           std::string(text.heading) + ": lab and virtual side by side (95 % intervals)",
           "$d << EOD\n" + data + "EOD\nset title " +
@@ -112,7 +119,8 @@ Plot UnitPlot(const std::vector<const compare::QuantityComparison*>& rows,
               "\nset ylabel " + Quoted(text.axis) + "\n" +
               (unit == "s" ? "set yrange [0:*]\nset offsets 0, 0, graph 0.08, 0\n"
                            : "set yrange [0:1.05]\n") +
-              "set xrange [-0.5:" + std::to_string(rows.size()) + "-0.5]\nset xtics (" + tics +
+              "set xrange [-0.5:" + std::to_string(rows.size()) + "-0.5]\nset xtics (" +
+              tics +
               ")\nset grid y\n"
               "set key outside top center horizontal\nset bmargin 5\n" +
               plot + "\n"};
@@ -124,7 +132,8 @@ experiment::DesignRun AllCycles(const compare::ComparisonResult& r) {
   experiment::DesignRun out;
   for (const experiment::DesignRun* d : {&r.run, &r.fatigue.pilot, &r.fatigue.run}) {
     const std::size_t offset = out.conditions.size();
-    out.conditions.insert(out.conditions.end(), d->conditions.begin(), d->conditions.end());
+    out.conditions.insert(out.conditions.end(), d->conditions.begin(),
+                          d->conditions.end());
     for (experiment::CycleRecord c : d->records) {
       c.condition += offset;
       out.records.push_back(std::move(c));
@@ -164,22 +173,45 @@ Section ComparisonSection(const scene::ExperimentFile& file, const data::LabData
                           const compare::ComparisonResult& r, int trials) {
   Section out;
   out.kind = "compare";
-  Table t({"quantity", "unit", "segment", "condition", "lab_basis", "margin", "lab_n",
-           "lab_value", "lab_ci_lower", "lab_ci_upper", "virtual_n", "virtual_value",
-           "virtual_ci_lower", "virtual_ci_upper", "difference", "ci95_lower", "ci95_upper",
-           "ci90_lower", "ci90_upper", "tost_p", "verdict", "area_metric", "ks_distance",
-           "ks_p", "ks_note", "reason"});
+  Table t({"quantity",
+           "unit",
+           "segment",
+           "condition",
+           "lab_basis",
+           "margin",
+           "lab_n",
+           "lab_value",
+           "lab_ci_lower",
+           "lab_ci_upper",
+           "virtual_n",
+           "virtual_value",
+           "virtual_ci_lower",
+           "virtual_ci_upper",
+           "difference",
+           "ci95_lower",
+           "ci95_upper",
+           "ci90_lower",
+           "ci90_upper",
+           "tost_p",
+           "verdict",
+           "area_metric",
+           "ks_distance",
+           "ks_p",
+           "ks_note",
+           "reason"});
   nlohmann::json quantities = nlohmann::json::array();
   std::string md = fmt::format(
       "## Virtual against the lab: {}\n\nLab dataset `{}`: {} (provenance: {}). {}"
       "\"agree\" means the equivalence test (TOST, 5 %) shows the difference within the "
-      "stated margin; \"not shown to agree\" does not mean shown to differ. Against a value "
+      "stated margin; \"not shown to agree\" does not mean shown to differ. Against a "
+      "value "
       "the lab reports without its trials the test is the normal approximation, the area "
       "metric is the distance to that value, and there is no KS test.\n\n",
       lab.name, file.comparison.lab_path, lab.description,
       lab.provenance.value("source", ""), Designs(file, r, trials));
   // One table and one plot per unit, in the order units first appear.
-  std::vector<std::pair<std::string, std::vector<const compare::QuantityComparison*>>> units;
+  std::vector<std::pair<std::string, std::vector<const compare::QuantityComparison*>>>
+      units;
   for (const compare::QuantityComparison& q : r.quantities) {
     auto it = units.begin();
     while (it != units.end() && it->first != q.target.unit) ++it;
@@ -189,7 +221,8 @@ Section ComparisonSection(const scene::ExperimentFile& file, const data::LabData
   for (const auto& [unit, rows] : units) {
     const std::string u = unit == "s" ? "s" : "rate";
     md += fmt::format(
-        "### {}\n\n| quantity | lab from | margin ({}) | lab ({}, 95 %) | virtual ({}, 95 %) | "
+        "### {}\n\n| quantity | lab from | margin ({}) | lab ({}, 95 %) | virtual ({}, "
+        "95 %) | "
         "difference ({}, 95 %) | area metric ({}) | KS D (p) | verdict |\n"
         "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n",
         TextOf(unit).heading, unit, u, u, u, unit);
@@ -199,14 +232,31 @@ Section ComparisonSection(const scene::ExperimentFile& file, const data::LabData
       const double nan = std::nan("");
       const double lab_value = q.target.lab.value, virt_value = q.virtual_stat.value;
       const int lab_n = SideN(q, true), virt_n = SideN(q, false);
-      t.AddRow({q.target.label, q.target.unit, std::int64_t{q.target.spec.segment},
-                q.target.spec.condition, basis, q.margin, std::int64_t{lab_n}, lab_value,
-                q.lab_ci.lower, q.lab_ci.upper, std::int64_t{virt_n}, virt_value,
-                q.virtual_ci.lower, q.virtual_ci.upper, q.testable ? q.difference : nan,
-                q.testable ? q.ci95.lower : nan, q.testable ? q.ci95.upper : nan,
-                q.testable ? q.ci90.lower : nan, q.testable ? q.ci90.upper : nan,
-                q.testable ? q.tost_p : nan, Verdict(q), q.testable ? q.area_metric : nan,
-                q.ks ? q.ks->distance : nan, q.ks ? q.ks->p_value : nan, q.ks_unavailable,
+      t.AddRow({q.target.label,
+                q.target.unit,
+                std::int64_t{q.target.spec.segment},
+                q.target.spec.condition,
+                basis,
+                q.margin,
+                std::int64_t{lab_n},
+                lab_value,
+                q.lab_ci.lower,
+                q.lab_ci.upper,
+                std::int64_t{virt_n},
+                virt_value,
+                q.virtual_ci.lower,
+                q.virtual_ci.upper,
+                q.testable ? q.difference : nan,
+                q.testable ? q.ci95.lower : nan,
+                q.testable ? q.ci95.upper : nan,
+                q.testable ? q.ci90.lower : nan,
+                q.testable ? q.ci90.upper : nan,
+                q.testable ? q.tost_p : nan,
+                Verdict(q),
+                q.testable ? q.area_metric : nan,
+                q.ks ? q.ks->distance : nan,
+                q.ks ? q.ks->p_value : nan,
+                q.ks_unavailable,
                 q.verdict});
       quantities.push_back({{"quantity", q.target.label},
                             {"unit", q.target.unit},
@@ -219,7 +269,8 @@ Section ComparisonSection(const scene::ExperimentFile& file, const data::LabData
                             {"tost_p", q.testable ? q.tost_p : nan}});
       md += fmt::format(
           "| {} | {} | +-{} | {} | {} | {} | {} | {} | {} |\n", q.target.label, basis,
-          N(q.margin), Side(lab_value, q.lab_ci, lab_n), Side(virt_value, q.virtual_ci, virt_n),
+          N(q.margin), Side(lab_value, q.lab_ci, lab_n),
+          Side(virt_value, q.virtual_ci, virt_n),
           q.testable ? fmt::format("{} [{}, {}]", N(q.difference), N(q.ci95.lower),
                                    N(q.ci95.upper))
                      : "-",
@@ -234,7 +285,8 @@ Section ComparisonSection(const scene::ExperimentFile& file, const data::LabData
   const experiment::DesignRun cycles = AllCycles(r);
   out.tables.emplace_back("compare_quantities.csv", std::move(t));
   out.tables.emplace_back("compare_cycles.csv", CyclesTable(cycles));
-  out.summary = {{"quantities", quantities}, {"claims", nlohmann::json::array()},
+  out.summary = {{"quantities", quantities},
+                 {"claims", nlohmann::json::array()},
                  {"health", HealthJson(cycles)}};
   out.markdown = md + HealthMarkdown(cycles);
   Table cost = CostTable(cycles);

@@ -27,7 +27,8 @@ Table CostTable(const experiment::DesignRun& run) {
       if (!cost) cost = &parts.emplace_back(PartCost{p.trial.part, {}, {}, {}});
       cost->cpu.push_back(p.trial.cpu_seconds);
       cost->simulated.push_back(p.trial.end_time);
-      if (p.trial.cpu_seconds > 0) cost->rtf.push_back(p.trial.end_time / p.trial.cpu_seconds);
+      if (p.trial.cpu_seconds > 0)
+        cost->rtf.push_back(p.trial.end_time / p.trial.cpu_seconds);
     }
   Table t({"part", "trials", "cpu_p50_s", "cpu_p99_s", "cpu_max_s", "cpu_total_s",
            "simulated_mean_s", "rtf_p50"});
@@ -36,8 +37,9 @@ Table CostTable(const experiment::DesignRun& run) {
     for (double x : c.cpu) total += x;
     for (double x : c.simulated) simulated += x;
     const double n = static_cast<double>(c.cpu.size());
-    t.AddRow({c.part, static_cast<std::int64_t>(c.cpu.size()), stats::Quantile(c.cpu, 0.5),
-              stats::Quantile(c.cpu, 0.99), stats::Quantile(c.cpu, 1.0), total, simulated / n,
+    t.AddRow({c.part, static_cast<std::int64_t>(c.cpu.size()),
+              stats::Quantile(c.cpu, 0.5), stats::Quantile(c.cpu, 0.99),
+              stats::Quantile(c.cpu, 1.0), total, simulated / n,
               c.rtf.empty() ? 0.0 : stats::Quantile(c.rtf, 0.5)});
   }
   return t;
@@ -56,18 +58,20 @@ nlohmann::json CostJson(const Table& cost) {
 
 std::string CostMarkdown(const Table& cost) {
   std::string md =
-      "\n### Cost per trial\n\nMeasured on this machine (outside the results digest): the "
-      "CPU seconds of each part's trials (the trial's thread, so independent of the thread "
+      "\n### Cost per trial\n\nMeasured on this machine (outside the results digest): "
+      "the "
+      "CPU seconds of each part's trials (the trial's thread, so independent of the "
+      "thread "
       "count), and the real-time factor, simulated over CPU seconds.\n\n"
       "| part | trials | CPU p50 (s) | CPU p99 (s) | CPU max (s) | CPU total (s) | "
       "simulated mean (s) | real-time factor p50 |\n"
       "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (std::size_t r = 0; r < cost.rows(); ++r) {
     const auto number = [&](std::size_t c) { return std::get<double>(cost.at(r, c)); };
-    md += fmt::format("| {} | {} | {:.3f} | {:.3f} | {:.3f} | {:.1f} | {:.3f} | {:.2f} |\n",
-                      std::get<std::string>(cost.at(r, 0)),
-                      std::get<std::int64_t>(cost.at(r, 1)), number(2), number(3), number(4),
-                      number(5), number(6), number(7));
+    md += fmt::format(
+        "| {} | {} | {:.3f} | {:.3f} | {:.3f} | {:.1f} | {:.3f} | {:.2f} |\n",
+        std::get<std::string>(cost.at(r, 0)), std::get<std::int64_t>(cost.at(r, 1)),
+        number(2), number(3), number(4), number(5), number(6), number(7));
   }
   return md;
 }

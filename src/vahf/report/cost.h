@@ -1,9 +1,9 @@
 // What an experiment's trials cost on this machine (the measure of the
-// README's Performance section, in every run): per part, the CPU seconds of a trial (median, 99th percentile,
-// largest), the simulated seconds and the real-time factor (simulated over
-// CPU seconds). CPU time is the trial's thread's (core/thread_cpu.h), so the
-// figures hold whatever the thread count. Measured: the table is a measured
-// file, outside the results digest (docs/outputs.md, "Measured files").
+// README's Performance section, in every run): per part, the CPU seconds of a trial
+// (median, 99th percentile, largest), the simulated seconds and the real-time factor
+// (simulated over CPU seconds). CPU time is the trial's thread's (core/thread_cpu.h), so
+// the figures hold whatever the thread count. Measured: the table is a measured file,
+// outside the results digest (docs/outputs.md, "Measured files").
 #pragma once
 
 #include <nlohmann/json.hpp>

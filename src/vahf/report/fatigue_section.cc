@@ -24,7 +24,8 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
   std::vector<stats::Count> counts(ns);
   std::vector<std::int64_t> numerical(ns, 0);
   for (const experiment::CycleRecord& r : d.records) {
-    if (r.result.numerical_failure) {  // a failure of the computation, not of the assembly
+    if (r.result
+            .numerical_failure) {  // a failure of the computation, not of the assembly
       ++numerical[r.condition];
       continue;
     }
@@ -36,18 +37,19 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
   const double a_max = scene.params.fatigue.a_max;
   Table segments({"segment", "minute_start", "minute_end", "work_start_J", "work_end_J",
                   "psi_start", "psi_end", "cycles", "completed", "numerical_failures",
-                  "success_rate",
-                  "wilson_lower", "wilson_upper", "mean_time_s", "ci_lower_s",
-                  "ci_upper_s"});
+                  "success_rate", "wilson_lower", "wilson_upper", "mean_time_s",
+                  "ci_lower_s", "ci_upper_s"});
   std::string md = fmt::format(
       "## Fatigue over one hour (Sec. 5.4, Figs. 15-16)\n\n"
       "Work rate from {} pilot cycles at A = 0: {:.4g} J per second of assembly. Each "
       "segment's cycles start with the work back-to-back cycles would have done by their "
-      "minute; Psi_c = (A_max - A) / A_max with A_max = {:.4g} J (Eq. 6). Success rate with "
+      "minute; Psi_c = (A_max - A) / A_max with A_max = {:.4g} J (Eq. 6). Success rate "
+      "with "
       "its 95 % Wilson interval, over the cycles that ended without a numerical failure "
       "(those say nothing about the assembly: see Numerical health); mean time of "
       "completed cycles with its 95 % t interval.\n\n"
-      "| segment | A at start (J) | Psi_c at start | Psi_c at end | success rate | mean time "
+      "| segment | A at start (J) | Psi_c at start | Psi_c at end | success rate | mean "
+      "time "
       "(s) |\n| --- | --- | --- | --- | --- | --- |\n",
       run.pilot.records.size(), run.work_rate, a_max);
   std::string fig15, fig16;
@@ -61,15 +63,14 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
     const double psi0 = human::FatigueCoefficient(c.work_start, a_max);
     const double psi1 = human::FatigueCoefficient(c.work_end, a_max);
     segments.AddRow({c.name, c.minute_start, c.minute_end, c.work_start, c.work_end, psi0,
-                     psi1, counts[s].trials, counts[s].successes, numerical[s], rate, w.lower,
-                     w.upper,
-                     t.mean.value_or(NAN), t.ci ? t.ci->lower : NAN,
+                     psi1, counts[s].trials, counts[s].successes, numerical[s], rate,
+                     w.lower, w.upper, t.mean.value_or(NAN), t.ci ? t.ci->lower : NAN,
                      t.ci ? t.ci->upper : NAN});
-    md += fmt::format("| {} | {:.4g} | {:.5f} | {:.5f} | {}/{} = {:.2f} [{:.2f}, {:.2f}] | "
-                      "{} |\n",
-                      c.name, c.work_start, psi0, psi1, counts[s].successes,
-                      counts[s].trials, rate, w.lower, w.upper,
-                      MeanCi(t));
+    md += fmt::format(
+        "| {} | {:.4g} | {:.5f} | {:.5f} | {}/{} = {:.2f} [{:.2f}, {:.2f}] | "
+        "{} |\n",
+        c.name, c.work_start, psi0, psi1, counts[s].successes, counts[s].trials, rate,
+        w.lower, w.upper, MeanCi(t));
     const double mid = 0.5 * (c.minute_start + c.minute_end);
     if (t.mean)
       fig15 += fmt::format("{} {} {} {}\n", mid, *t.mean, t.ci ? t.ci->lower : *t.mean,
@@ -84,23 +85,27 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
   // random numbers): the first and last segments' cycles are pairs.
   const char* kTimeClaim = "mean assembly time rises from the first to the last segment";
   const char* kTimeTest =
-      "paired t test over the cycles completed in both segments, one-sided (last > first), "
+      "paired t test over the cycles completed in both segments, one-sided (last > "
+      "first), "
       "5 %";
   const char* kRateClaim =
-      "the assembly success rate falls from the first to the last segment (paper: 0.96 to "
+      "the assembly success rate falls from the first to the last segment (paper: 0.96 "
+      "to "
       "0.75)";
   const char* kRateTest =
       "McNemar's exact test over the cycles paired across the segments, one-sided (rate "
       "fell), 5 %";
   if (ns < 2) {
-    const std::string why = fmt::format("the run has {} segment(s): a trend needs two", ns);
+    const std::string why =
+        fmt::format("the run has {} segment(s): a trend needs two", ns);
     claims.push_back(UntestableClaim(kTimeClaim, kTimeTest, why));
     claims.push_back(UntestableClaim(kRateClaim, kRateTest, why));
   } else {
     const std::size_t last = ns - 1;
     std::map<std::uint64_t, const experiment::CycleResult*> first_by_cycle;
     for (const experiment::CycleRecord& r : d.records)
-      if (r.condition == 0 && !r.result.numerical_failure) first_by_cycle[r.cycle] = &r.result;
+      if (r.condition == 0 && !r.result.numerical_failure)
+        first_by_cycle[r.cycle] = &r.result;
     std::vector<double> last_times, first_times;
     std::int64_t fell = 0, rose = 0, pairs = 0;
     for (const experiment::CycleRecord& r : d.records) {
@@ -133,7 +138,8 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
       claims.push_back(UntestableClaim(kTimeClaim, kTimeTest, why));
     }
     const double p = stats::McNemarRateFellP(fell, rose);
-    tests["success_first"] = {{"successes", counts[0].successes}, {"cycles", counts[0].trials}};
+    tests["success_first"] = {{"successes", counts[0].successes},
+                              {"cycles", counts[0].trials}};
     tests["success_last"] = {{"successes", counts[last].successes},
                              {"cycles", counts[last].trials}};
     tests["paired_cycles"] = pairs;
@@ -142,41 +148,45 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
     tests["p_rate_fell"] = p;
     claims.push_back(Claim(
         kRateClaim, p < 0.05, kRateTest,
-        fmt::format("{}/{} then {}/{}; of {} paired cycles {} succeeded then failed and {} "
-                    "failed then succeeded, p = {:.4f}; Psi_c at the end of the hour {:.5f}",
-                    counts[0].successes, counts[0].trials, counts[last].successes,
-                    counts[last].trials, pairs, fell, rose, p,
-                    human::FatigueCoefficient(d.conditions[last].work_end, a_max))));
+        fmt::format(
+            "{}/{} then {}/{}; of {} paired cycles {} succeeded then failed and {} "
+            "failed then succeeded, p = {:.4f}; Psi_c at the end of the hour {:.5f}",
+            counts[0].successes, counts[0].trials, counts[last].successes,
+            counts[last].trials, pairs, fell, rose, p,
+            human::FatigueCoefficient(d.conditions[last].work_end, a_max))));
   }
-  out.summary = {{"work_rate_J_per_s", run.work_rate},
-                 {"a_max_J", a_max},
-                 {"psi_end_of_hour",
-                  ns ? human::FatigueCoefficient(d.conditions[ns - 1].work_end, a_max)
-                     : 1.0},
-                 {"tests", tests},
-                 {"claims", claims}};
+  out.summary = {
+      {"work_rate_J_per_s", run.work_rate},
+      {"a_max_J", a_max},
+      {"psi_end_of_hour",
+       ns ? human::FatigueCoefficient(d.conditions[ns - 1].work_end, a_max) : 1.0},
+      {"tests", tests},
+      {"claims", claims}};
   out.markdown = md;
   out.plots.push_back(
       {"plots/fatigue_time.png", "Fig. 15: mean assembly time in each segment",
        "$d << EOD\n" + fig15 +
            "EOD\nset title 'Fig. 15: mean assembly time per segment'\n"
-           "set xlabel 'minute of work'\nset ylabel 'time (s)'\nset grid\nset xrange [0:" +
+           "set xlabel 'minute of work'\nset ylabel 'time (s)'\nset grid\nset xrange "
+           "[0:" +
            fmt::format("{:g}", run.file->fatigue.duration_min) +
            "]\nplot $d using 1:2:3:4 with yerrorlines pt 7 title 'virtual'\n"});
   out.plots.push_back(
       {"plots/fatigue_success.png", "Fig. 16: assembly success rate in each segment",
-       "$d << EOD\n" + fig16 +
-           "EOD\n$p << EOD\n" +
-           fmt::format("{:g} 0.96\n{:g} 0.75\n",
-                       0.5 * run.file->fatigue.duration_min / static_cast<double>(ns),
-                       run.file->fatigue.duration_min * (1 - 0.5 / static_cast<double>(ns))) +
+       "$d << EOD\n" + fig16 + "EOD\n$p << EOD\n" +
+           fmt::format(
+               "{:g} 0.96\n{:g} 0.75\n",
+               0.5 * run.file->fatigue.duration_min / static_cast<double>(ns),
+               run.file->fatigue.duration_min * (1 - 0.5 / static_cast<double>(ns))) +
            "EOD\n"
            "set title 'Fig. 16: assembly success rate per segment'\n"
            "set xlabel 'minute of work'\nset ylabel 'success rate'\nset yrange [0:1.05]\n"
            "set grid\nset key left bottom\nset xrange [0:" +
            fmt::format("{:g}", run.file->fatigue.duration_min) +
-           "]\nplot $d using 1:2:3:4 with yerrorlines pt 7 title 'virtual (Wilson 95 %)', "
-           "$p using 1:2 with points pt 5 ps 1.5 title 'paper, virtual (first, last)'\n"});
+           "]\nplot $d using 1:2:3:4 with yerrorlines pt 7 title 'virtual (Wilson 95 "
+           "%)', "
+           "$p using 1:2 with points pt 5 ps 1.5 title 'paper, virtual (first, "
+           "last)'\n"});
   return out;
 }
 

@@ -34,7 +34,8 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
 
   const std::size_t nc = d.conditions.size(), ni = file.instants_s.size();
   // [condition][instant] samples of eta and lambda_c, and pooled per condition.
-  std::vector<std::vector<std::vector<double>>> eta(nc, std::vector<std::vector<double>>(ni)),
+  std::vector<std::vector<std::vector<double>>> eta(nc,
+                                                    std::vector<std::vector<double>>(ni)),
       lam = eta;
   // Per condition, cycle -> the mean over the instants of eta and lambda_c
   // (cycles with every instant only): one value per cycle, paired across
@@ -52,7 +53,8 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
       const human::FactorValues* f = FactorsAt(r.result, t);
       if (!f) continue;
       samples.AddRow({d.conditions[r.condition].name, static_cast<std::int64_t>(r.cycle),
-                      file.instants_s[i], fraction, r.result.time, t, f->eta, f->lambda_c});
+                      file.instants_s[i], fraction, r.result.time, t, f->eta,
+                      f->lambda_c});
       eta[r.condition][i].push_back(f->eta);
       lam[r.condition][i].push_back(f->lambda_c);
       eta_sum += f->eta;
@@ -65,8 +67,8 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
   }
   out.tables.emplace_back("human_factors_groups_samples.csv", samples);
 
-  Table means({"condition", "paper_instant_s", "quantity", "n", "mean", "ci_lower",
-               "ci_upper"});
+  Table means(
+      {"condition", "paper_instant_s", "quantity", "n", "mean", "ci_lower", "ci_upper"});
   std::string md = fmt::format(
       "## Human factors under three working conditions (Sec. 5.3, Figs. 13-14)\n\n"
       "eta and lambda_c at {} of the paper's {:g} s assembly, taken at the same fraction "
@@ -150,7 +152,8 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
     const auto [b, g] = pairs(*best, *general, index_q);
     const auto [g2, w] = pairs(*general, *worst, index_q);
     std::string why;
-    const auto lo = PairedIfDefined(b, g, "cycles completed under best and general", &why);
+    const auto lo =
+        PairedIfDefined(b, g, "cycles completed under best and general", &why);
     const auto hi =
         lo ? PairedIfDefined(g2, w, "cycles completed under general and worst", &why)
            : std::nullopt;
@@ -158,29 +161,30 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
       claims.push_back(UntestableClaim(claim, test, why));
       continue;
     }
-    const bool ok = lo->mean_difference < 0 && lo->p_less < 0.05 && hi->mean_difference < 0 &&
-                    hi->p_less < 0.05;
+    const bool ok = lo->mean_difference < 0 && lo->p_less < 0.05 &&
+                    hi->mean_difference < 0 && hi->p_less < 0.05;
     tests[quantity] = {{"best_minus_general", lo->mean_difference},
                        {"general_minus_worst", hi->mean_difference},
                        {"pairs_best_general", lo->n},
                        {"pairs_general_worst", hi->n},
                        {"p_best_below_general", lo->p_less},
                        {"p_general_below_worst", hi->p_less}};
-    claims.push_back(Claim(
-        claim, ok, test,
-        fmt::format("best - general = {:.3f} [{:.3f}, {:.3f}] (p(best < general) = {:.4f}, "
-                    "{} pairs), general - worst = {:.3f} [{:.3f}, {:.3f}] (p(general < "
-                    "worst) = {:.4f}, {} pairs)",
-                    lo->mean_difference, lo->ci.lower, lo->ci.upper, lo->p_less, lo->n,
-                    hi->mean_difference, hi->ci.lower, hi->ci.upper, hi->p_less, hi->n)));
+    claims.push_back(
+        Claim(claim, ok, test,
+              fmt::format(
+                  "best - general = {:.3f} [{:.3f}, {:.3f}] (p(best < general) = {:.4f}, "
+                  "{} pairs), general - worst = {:.3f} [{:.3f}, {:.3f}] (p(general < "
+                  "worst) = {:.4f}, {} pairs)",
+                  lo->mean_difference, lo->ci.lower, lo->ci.upper, lo->p_less, lo->n,
+                  hi->mean_difference, hi->ci.lower, hi->ci.upper, hi->p_less, hi->n)));
   }
   out.summary = {{"tests", tests}, {"claims", claims}};
   out.markdown = md;
   std::string plot_cols;
   for (std::size_t c = 0; c < nc; ++c)
-    plot_cols += fmt::format("{}$d using 1:{}:{}:{} with yerrorlines title '{}'",
-                             c ? ", " : "", 3 * c + 2, 3 * c + 3, 3 * c + 4,
-                             d.conditions[c].name);
+    plot_cols +=
+        fmt::format("{}$d using 1:{}:{}:{} with yerrorlines title '{}'", c ? ", " : "",
+                    3 * c + 2, 3 * c + 3, 3 * c + 4, d.conditions[c].name);
   const auto figure = [&](const std::string& data, const char* what, const char* fig) {
     return "$d << EOD\n" + data + "EOD\nset title '" + fig + ": " + what +
            " at the paper instants'\nset xlabel 'paper instant (s of 16)'\nset ylabel '" +

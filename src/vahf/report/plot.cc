@@ -101,7 +101,8 @@ void RenderPlot(const std::string& gnuplot_script, const std::string& png_path) 
     fail("cannot remove the old " + png_path + ": " + std::strerror(errno), "");
   }
   std::string script;
-  if (!SetsTerminal(gnuplot_script)) script += "set terminal pngcairo size 800,500 noenhanced\n";
+  if (!SetsTerminal(gnuplot_script))
+    script += "set terminal pngcairo size 800,500 noenhanced\n";
   script += "set output " + Quoted(png_path) + "\n" + gnuplot_script + "\nset output\n";
 
   // gnuplot's stdout and stderr go to an anonymous file, read once it exited:

@@ -38,13 +38,13 @@ PartComparison ComparePart(const std::vector<PartOutcome>& setting,
     absolute.push_back(std::fabs(differences.back()));
   }
   c.paired = differences.size();
-  c.outcome_share =
-      c.cycles ? static_cast<double>(c.outcome_differences) / static_cast<double>(c.cycles)
-               : 0.0;
+  c.outcome_share = c.cycles ? static_cast<double>(c.outcome_differences) /
+                                   static_cast<double>(c.cycles)
+                             : 0.0;
   c.difference = stats::Summarize(differences);
   if (c.difference.ci)
-    c.difference_bound = std::max(std::fabs(c.difference.ci->lower),
-                                  std::fabs(c.difference.ci->upper));
+    c.difference_bound =
+        std::max(std::fabs(c.difference.ci->lower), std::fabs(c.difference.ci->upper));
   if (!absolute.empty()) c.mean_abs_difference = stats::Mean(absolute);
   c.reference_completed = all_reference.size();
   if (all_reference.size() >= 2) {
@@ -71,8 +71,8 @@ PartComparison ComparePart(const std::vector<PartOutcome>& setting,
 std::string RuleFailures(const PartComparison& c) {
   std::vector<std::string> why;
   if (c.paired < 2)
-    why.push_back(fmt::format("{} cycle(s) completed the part under both: needs 2",
-                              c.paired));
+    why.push_back(
+        fmt::format("{} cycle(s) completed the part under both: needs 2", c.paired));
   if (!c.noise)
     why.push_back(fmt::format(
         "the reference completed the part {} time(s): no noise to compare with",
@@ -81,12 +81,14 @@ std::string RuleFailures(const PartComparison& c) {
     why.push_back(fmt::format("|mean difference| up to {:.3g} ms >= noise {:.3g} ms",
                               *c.difference_bound * 1e3, *c.noise * 1e3));
   if (c.noise && c.ks_shift && !(*c.ks_shift < *c.noise))
-    why.push_back(fmt::format("KS distance {:.3f} (as a shift {:.3g} ms) >= noise {:.3g} ms",
-                              c.ks->distance, *c.ks_shift * 1e3, *c.noise * 1e3));
+    why.push_back(
+        fmt::format("KS distance {:.3f} (as a shift {:.3g} ms) >= noise {:.3g} ms",
+                    c.ks->distance, *c.ks_shift * 1e3, *c.noise * 1e3));
   if (c.ks && c.ks->p_value < kKsLevel)
-    why.push_back(fmt::format("KS distance {:.3f} tells the times from the reference's "
-                              "(p = {:.2g} < {:g})",
-                              c.ks->distance, c.ks->p_value, kKsLevel));
+    why.push_back(
+        fmt::format("KS distance {:.3f} tells the times from the reference's "
+                    "(p = {:.2g} < {:g})",
+                    c.ks->distance, c.ks->p_value, kKsLevel));
   if (!(c.outcome_share < kMaxOutcomeShare))
     why.push_back(fmt::format("outcome differs in {}/{} cycles ({:.0f} % >= {:.0f} %)",
                               c.outcome_differences, c.cycles, c.outcome_share * 100,
@@ -131,9 +133,9 @@ Recommendation Recommend(const std::vector<Candidate>& candidates) {
   for (const Candidate& c : candidates) {
     if (!(c.cost < chosen.cost) || c.reference || c.failures.empty()) continue;
     const std::size_t end = c.failures.find("; ");
-    refused += fmt::format("{}{} ({:.3g} s: {}{})", refused.empty() ? "" : "; ", c.label,
-                           c.cost, c.failures.substr(0, end),
-                           end == std::string::npos ? "" : "; ...");
+    refused +=
+        fmt::format("{}{} ({:.3g} s: {}{})", refused.empty() ? "" : "; ", c.label, c.cost,
+                    c.failures.substr(0, end), end == std::string::npos ? "" : "; ...");
   }
   if (!refused.empty()) r.why += "; cheaper but refused: " + refused;
   if (chosen.reference) r.why += "; no setting cheaper than the reference meets the rule";

@@ -34,10 +34,10 @@ inline constexpr double kKsLevel = 0.05;
 struct PartOutcome {
   bool reached = false;  // an earlier part of the cycle failed: not attempted
   sim::Status status = sim::Status::kTimeout;  // if reached
-  double completion_time = 0;  // s from the part's start, if completed
-  double wall_seconds = 0;     // measured, if reached
-  std::int64_t steps = 0;         // integrator steps taken, if reached
-  std::int64_t realizations = 0;  // if reached
+  double completion_time = 0;                  // s from the part's start, if completed
+  double wall_seconds = 0;                     // measured, if reached
+  std::int64_t steps = 0;                      // integrator steps taken, if reached
+  std::int64_t realizations = 0;               // if reached
 
   bool completed() const { return reached && status == sim::Status::kCompleted; }
   // StatusName, or "not_reached".
@@ -49,9 +49,9 @@ struct PartOutcome {
 // wall time.
 struct PartComparison {
   std::size_t cycles = 0;
-  std::size_t completed = 0;   // cycles in which the setting completed the part
-  std::size_t paired = 0;      // ... and the reference did too
-  stats::Summary difference;   // completion time, setting - reference, paired, s
+  std::size_t completed = 0;  // cycles in which the setting completed the part
+  std::size_t paired = 0;     // ... and the reference did too
+  stats::Summary difference;  // completion time, setting - reference, paired, s
   // max(|lower|, |upper|) of the difference's 95 % t interval: how large the
   // mean difference may be; empty for fewer than 2 pairs.
   std::optional<double> difference_bound;
@@ -85,8 +85,8 @@ PartComparison ComparePart(const std::vector<PartOutcome>& setting,
 
 // The rule, for one part: at least 2 paired completions, a reference noise,
 // difference_bound < noise, ks_shift < noise, the KS p-value at least
-// kKsLevel and outcome_share < kMaxOutcomeShare. Returns the reasons it is not met, "; "-separated, times
-// in ms ("" when met).
+// kKsLevel and outcome_share < kMaxOutcomeShare. Returns the reasons it is not met, ";
+// "-separated, times in ms ("" when met).
 std::string RuleFailures(const PartComparison& c);
 
 // Wall time of a setting's trials of one part: median, p10, p90 (s); empty
@@ -100,9 +100,9 @@ WallSummary SummarizeWall(const std::vector<PartOutcome>& outcomes);
 // A setting of one scene as the recommendation sees it.
 struct Candidate {
   std::string label;
-  double cost = 0;          // median wall seconds per cycle (all its parts)
-  bool reference = false;   // meets the rule by definition
-  std::string failures;     // "" when every part meets the rule, else which did not
+  double cost = 0;         // median wall seconds per cycle (all its parts)
+  bool reference = false;  // meets the rule by definition
+  std::string failures;    // "" when every part meets the rule, else which did not
 };
 
 struct Recommendation {

@@ -21,14 +21,19 @@ namespace {
 const char* const kRule =
     "A setting meets the rule for a part when at least 2 cycles completed the part under "
     "it and under the reference, and, with the Monte Carlo noise = the reference's "
-    "completion-time standard deviation / sqrt(noise_trials): the larger end (in absolute "
+    "completion-time standard deviation / sqrt(noise_trials): the larger end (in "
+    "absolute "
     "value) of the 95 % t interval of the paired mean difference of completion time is "
     "below the noise; the KS distance as a shift (the smallest shift of the reference's "
     "completion times that puts them as far from themselves) is below the noise; the "
-    "two-sample KS test does not tell the setting's times from the reference's at the 5 % "
-    "level; and the outcome (status, or not reaching the part) differs from the reference's in fewer "
-    "than 5 % of the cycles. The recommended setting of a scene is the cheapest by median "
-    "wall time per cycle among those meeting the rule for every part; the reference meets "
+    "two-sample KS test does not tell the setting's times from the reference's at the 5 "
+    "% "
+    "level; and the outcome (status, or not reaching the part) differs from the "
+    "reference's in fewer "
+    "than 5 % of the cycles. The recommended setting of a scene is the cheapest by "
+    "median "
+    "wall time per cycle among those meeting the rule for every part; the reference "
+    "meets "
     "it by definition.";
 
 double Or(const std::optional<double>& x) { return x.value_or(NAN); }
@@ -62,9 +67,9 @@ struct SceneData {
   std::vector<std::string> parts;
   std::size_t cycles = 0;
   std::vector<std::vector<std::vector<PartOutcome>>> outcomes;
-  std::vector<std::vector<double>> cycle_wall;  // [setting][cycle], s
+  std::vector<std::vector<double>> cycle_wall;           // [setting][cycle], s
   std::vector<std::vector<PartComparison>> comparisons;  // [setting][part]
-  std::vector<std::vector<WallSummary>> wall;             // [setting][part]
+  std::vector<std::vector<WallSummary>> wall;            // [setting][part]
 };
 
 std::vector<SceneData> Collect(const experiment::ExperimentRun& run) {
@@ -137,31 +142,32 @@ std::string SettingFailures(const SceneData& sd, std::size_t k) {
 }
 
 nlohmann::json ComparisonJson(const PartComparison& c) {
-  return {{"cycles", c.cycles},
-          {"completed", c.completed},
-          {"paired", c.paired},
-          {"mean_difference_s", Json(c.difference.mean)},
-          {"ci_lower_s", c.difference.ci ? nlohmann::json(c.difference.ci->lower) : nullptr},
-          {"ci_upper_s", c.difference.ci ? nlohmann::json(c.difference.ci->upper) : nullptr},
-          {"difference_bound_s", Json(c.difference_bound)},
-          {"mean_abs_difference_s", Json(c.mean_abs_difference)},
-          {"ks_distance", c.ks ? nlohmann::json(c.ks->distance) : nullptr},
-          {"ks_p_value", c.ks ? nlohmann::json(c.ks->p_value) : nullptr},
-          {"ks_shift_s", Json(c.ks_shift)},
-          {"ks_noise_distance", Json(c.ks_noise_distance)},
-          {"p10_s", Json(c.p10)},
-          {"p90_s", Json(c.p90)},
-          {"reference_p10_s", Json(c.reference_p10)},
-          {"reference_p90_s", Json(c.reference_p90)},
-          {"outcome_differences", c.outcome_differences},
-          {"outcome_share", c.outcome_share},
-          {"reference_completed", c.reference_completed},
-          {"reference_sd_s", Json(c.reference_sd)},
-          {"noise_s", Json(c.noise)},
-          {"steps_median", Json(c.steps_median)},
-          {"realizations_median", Json(c.realizations_median)},
-          {"meets_rule", c.meets_rule()},
-          {"failures", c.failures}};
+  return {
+      {"cycles", c.cycles},
+      {"completed", c.completed},
+      {"paired", c.paired},
+      {"mean_difference_s", Json(c.difference.mean)},
+      {"ci_lower_s", c.difference.ci ? nlohmann::json(c.difference.ci->lower) : nullptr},
+      {"ci_upper_s", c.difference.ci ? nlohmann::json(c.difference.ci->upper) : nullptr},
+      {"difference_bound_s", Json(c.difference_bound)},
+      {"mean_abs_difference_s", Json(c.mean_abs_difference)},
+      {"ks_distance", c.ks ? nlohmann::json(c.ks->distance) : nullptr},
+      {"ks_p_value", c.ks ? nlohmann::json(c.ks->p_value) : nullptr},
+      {"ks_shift_s", Json(c.ks_shift)},
+      {"ks_noise_distance", Json(c.ks_noise_distance)},
+      {"p10_s", Json(c.p10)},
+      {"p90_s", Json(c.p90)},
+      {"reference_p10_s", Json(c.reference_p10)},
+      {"reference_p90_s", Json(c.reference_p90)},
+      {"outcome_differences", c.outcome_differences},
+      {"outcome_share", c.outcome_share},
+      {"reference_completed", c.reference_completed},
+      {"reference_sd_s", Json(c.reference_sd)},
+      {"noise_s", Json(c.noise)},
+      {"steps_median", Json(c.steps_median)},
+      {"realizations_median", Json(c.realizations_median)},
+      {"meets_rule", c.meets_rule()},
+      {"failures", c.failures}};
 }
 
 // A work-precision diagram of one error measure for one scene: a panel per
@@ -170,7 +176,7 @@ nlohmann::json ComparisonJson(const PartComparison& c) {
 // and the threshold of the rule as a horizontal line. Zeros, which a log axis
 // cannot show, are drawn on the bottom edge.
 struct Measure {
-  const char* file;   // plot file stem
+  const char* file;  // plot file stem
   const char* title;
   const char* ylabel;
   std::optional<double> (*value)(const PartComparison&);
@@ -183,7 +189,9 @@ std::optional<double> AbsMeanDifference(const PartComparison& c) {
   if (!c.difference.mean) return std::nullopt;
   return std::fabs(*c.difference.mean);
 }
-std::optional<double> DifferenceBound(const PartComparison& c) { return c.difference_bound; }
+std::optional<double> DifferenceBound(const PartComparison& c) {
+  return c.difference_bound;
+}
 std::optional<double> KsDistance(const PartComparison& c) {
   if (!c.ks) return std::nullopt;
   return c.ks->distance;
@@ -242,8 +250,8 @@ Plot WorkPrecisionPlot(const SceneData& sd, const Measure& m) {
     const auto add = [&](const std::string& block, const std::string& rows,
                          const std::string& title, bool line) {
       data += fmt::format("${} << EOD\n{}EOD\n", block, rows);
-      plot += fmt::format("{}${} using {} with {} title {}", plot.empty() ? "" : ", ", block,
-                          bars ? "1:2:2:3" : "1:2",
+      plot += fmt::format("{}${} using {} with {} title {}", plot.empty() ? "" : ", ",
+                          block, bars ? "1:2:2:3" : "1:2",
                           line ? (bars ? "yerrorlines pt 7" : "linespoints pt 7")
                                : (bars ? "yerrorbars pt 6 ps 1.5" : "points pt 6 ps 1.5"),
                           Quoted(title));
@@ -270,29 +278,31 @@ Plot WorkPrecisionPlot(const SceneData& sd, const Measure& m) {
     if (!plot.empty() && threshold && *threshold > 0)
       plot += fmt::format(", {} with lines dt 2 lc rgb 'black' title {}", *threshold,
                           Quoted(m.threshold_title));
-    panels += fmt::format("set title {}\nset yrange [{}:*]\n", Quoted(sd.parts[p]), floor);
-    panels += plot.empty() ? "set label 1 'no setting has this measure' at graph 0.5, 0.5 "
-                             "center\nplot [1:10] [1:10] 2 lc rgb 'white' notitle\n"
-                             "unset label 1\n"
-                           : "plot " + plot + "\n";
+    panels +=
+        fmt::format("set title {}\nset yrange [{}:*]\n", Quoted(sd.parts[p]), floor);
+    panels += plot.empty()
+                  ? "set label 1 'no setting has this measure' at graph 0.5, 0.5 "
+                    "center\nplot [1:10] [1:10] 2 lc rgb 'white' notitle\n"
+                    "unset label 1\n"
+                  : "plot " + plot + "\n";
   }
   const std::string title = fmt::format("{}: {}", sd.scene->scene.name, m.title);
   const std::string script =
       fmt::format("set terminal pngcairo size {},500 noenhanced\n",
                   std::max<std::size_t>(800, 100 + 500 * np)) +
-      data +
-      fmt::format("set multiplot layout 1,{} title {}\n", np, Quoted(title)) +
+      data + fmt::format("set multiplot layout 1,{} title {}\n", np, Quoted(title)) +
       "set logscale xy\nset format xy '%g'\nset grid\nset key below font ',9'\n"
       "set xlabel 'median wall per trial (s)'\n" +
       fmt::format("set ylabel {}\n", Quoted(m.ylabel)) + panels + "unset multiplot\n";
-  return {fmt::format("plots/precision_{}_{}.png", sd.scene->scene.name, m.file),
-          fmt::format("{} against median wall time per trial ({} cycles per setting; the "
-                      "reference itself is not drawn; a zero is drawn on the bottom edge{})",
-                      title, sd.cycles,
-                      bars ? "; the error bars reach the larger end of the difference's 95 % "
-                             "interval"
-                           : ""),
-          script};
+  return {
+      fmt::format("plots/precision_{}_{}.png", sd.scene->scene.name, m.file),
+      fmt::format("{} against median wall time per trial ({} cycles per setting; the "
+                  "reference itself is not drawn; a zero is drawn on the bottom edge{})",
+                  title, sd.cycles,
+                  bars ? "; the error bars reach the larger end of the difference's 95 % "
+                         "interval"
+                       : ""),
+      script};
 }
 
 }  // namespace
@@ -306,19 +316,42 @@ Section PrecisionSection(const experiment::ExperimentRun& run) {
   Table trials({"scene", "setting", "cycle", "position", "part", "status",
                 "completion_time_s", "steps_taken", "realizations"});
   Table wall({"scene", "setting", "cycle", "position", "part", "status", "wall_s"});
-  Table settings({"scene", "setting", "reference", "position", "part", "cycles",
-                  "completed", "paired", "mean_difference_s", "ci_lower_s", "ci_upper_s",
-                  "difference_bound_s", "mean_abs_difference_s", "ks_distance",
-                  "ks_p_value", "ks_shift_s", "ks_noise_distance", "p10_s", "p90_s", "reference_p10_s",
-                  "reference_p90_s", "outcome_differences", "outcome_share",
-                  "reference_sd_s", "noise_s", "steps_median", "realizations_median",
-                  "meets_rule", "failures"});
+  Table settings({"scene",
+                  "setting",
+                  "reference",
+                  "position",
+                  "part",
+                  "cycles",
+                  "completed",
+                  "paired",
+                  "mean_difference_s",
+                  "ci_lower_s",
+                  "ci_upper_s",
+                  "difference_bound_s",
+                  "mean_abs_difference_s",
+                  "ks_distance",
+                  "ks_p_value",
+                  "ks_shift_s",
+                  "ks_noise_distance",
+                  "p10_s",
+                  "p90_s",
+                  "reference_p10_s",
+                  "reference_p90_s",
+                  "outcome_differences",
+                  "outcome_share",
+                  "reference_sd_s",
+                  "noise_s",
+                  "steps_median",
+                  "realizations_median",
+                  "meets_rule",
+                  "failures"});
   nlohmann::json summary_scenes = nlohmann::json::array();
   nlohmann::json measured_scenes = nlohmann::json::array();
   nlohmann::json recommended = nlohmann::json::object();
   std::string md = fmt::format(
       "## Error against run time (precision)\n\n"
-      "Each setting runs the same cycles as the reference ({}), on common random numbers, "
+      "Each setting runs the same cycles as the reference ({}), on common random "
+      "numbers, "
       "and is compared part by part with it over the cycles in which both completed the "
       "part. The Monte Carlo noise is that of an experiment of {} cycles per condition "
       "(`noise_trials`). {}\n\n"
@@ -356,19 +389,35 @@ Section PrecisionSection(const experiment::ExperimentRun& run) {
       for (std::size_t p = 0; p < sd.parts.size(); ++p) {
         const PartComparison& c = sd.comparisons[k][p];
         const WallSummary& w = sd.wall[k][p];
-        settings.AddRow(
-            {name, s.label, std::int64_t{k == 0 ? 1 : 0}, static_cast<std::int64_t>(p), sd.parts[p],
-             static_cast<std::int64_t>(c.cycles), static_cast<std::int64_t>(c.completed),
-             static_cast<std::int64_t>(c.paired), Or(c.difference.mean),
-             c.difference.ci ? c.difference.ci->lower : NAN,
-             c.difference.ci ? c.difference.ci->upper : NAN, Or(c.difference_bound),
-             Or(c.mean_abs_difference), c.ks ? c.ks->distance : NAN,
-             c.ks ? c.ks->p_value : NAN, Or(c.ks_shift), Or(c.ks_noise_distance), Or(c.p10),
-             Or(c.p90),
-             Or(c.reference_p10), Or(c.reference_p90),
-             static_cast<std::int64_t>(c.outcome_differences), c.outcome_share,
-             Or(c.reference_sd), Or(c.noise), Or(c.steps_median), Or(c.realizations_median),
-             std::int64_t{c.meets_rule() ? 1 : 0}, c.failures});
+        settings.AddRow({name,
+                         s.label,
+                         std::int64_t{k == 0 ? 1 : 0},
+                         static_cast<std::int64_t>(p),
+                         sd.parts[p],
+                         static_cast<std::int64_t>(c.cycles),
+                         static_cast<std::int64_t>(c.completed),
+                         static_cast<std::int64_t>(c.paired),
+                         Or(c.difference.mean),
+                         c.difference.ci ? c.difference.ci->lower : NAN,
+                         c.difference.ci ? c.difference.ci->upper : NAN,
+                         Or(c.difference_bound),
+                         Or(c.mean_abs_difference),
+                         c.ks ? c.ks->distance : NAN,
+                         c.ks ? c.ks->p_value : NAN,
+                         Or(c.ks_shift),
+                         Or(c.ks_noise_distance),
+                         Or(c.p10),
+                         Or(c.p90),
+                         Or(c.reference_p10),
+                         Or(c.reference_p90),
+                         static_cast<std::int64_t>(c.outcome_differences),
+                         c.outcome_share,
+                         Or(c.reference_sd),
+                         Or(c.noise),
+                         Or(c.steps_median),
+                         Or(c.realizations_median),
+                         std::int64_t{c.meets_rule() ? 1 : 0},
+                         c.failures});
         nlohmann::json pj = ComparisonJson(c);
         pj["part"] = sd.parts[p];
         parts.push_back(pj);
@@ -395,11 +444,12 @@ Section PrecisionSection(const experiment::ExperimentRun& run) {
     nlohmann::json errors = nlohmann::json::object();
     for (std::size_t p = 0; p < sd.parts.size(); ++p) {
       const PartComparison& c = sd.comparisons[rec.index][p];
-      errors[sd.parts[p]] = {{"difference_bound_s", Json(c.difference_bound)},
-                             {"ks_distance", c.ks ? nlohmann::json(c.ks->distance) : nullptr},
-                             {"ks_shift_s", Json(c.ks_shift)},
-                             {"outcome_share", c.outcome_share},
-                             {"noise_s", Json(c.noise)}};
+      errors[sd.parts[p]] = {
+          {"difference_bound_s", Json(c.difference_bound)},
+          {"ks_distance", c.ks ? nlohmann::json(c.ks->distance) : nullptr},
+          {"ks_shift_s", Json(c.ks_shift)},
+          {"outcome_share", c.outcome_share},
+          {"noise_s", Json(c.noise)}};
     }
     recommended[name] = {{"setting", chosen.label},
                          {"overrides", Overrides(chosen)},
@@ -422,35 +472,40 @@ Section PrecisionSection(const experiment::ExperimentRun& run) {
                         sd.parts[p], Ms(ref.noise), Ms(ref.reference_sd),
                         ref.reference_completed);
     }
-    md += ".\n\n| setting | part | wall per trial (s), median [p10, p90] | steps | "
-          "realizations | mean difference (ms) [95 % CI] | mean abs. difference (ms) | KS "
-          "distance (p) | KS as a shift (ms) | p10-p90 (s) | reference p10-p90 (s) | outcome "
-          "differs | rule |\n"
-          "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    md +=
+        ".\n\n| setting | part | wall per trial (s), median [p10, p90] | steps | "
+        "realizations | mean difference (ms) [95 % CI] | mean abs. difference (ms) | KS "
+        "distance (p) | KS as a shift (ms) | p10-p90 (s) | reference p10-p90 (s) | "
+        "outcome "
+        "differs | rule |\n"
+        "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- "
+        "|\n";
     for (std::size_t k = 0; k < sd.settings.size(); ++k)
       for (std::size_t p = 0; p < sd.parts.size(); ++p) {
         const PartComparison& c = sd.comparisons[k][p];
         const WallSummary& w = sd.wall[k][p];
-        const std::string ci =
-            c.difference.ci ? fmt::format(" [{:.3g}, {:.3g}]", c.difference.ci->lower * 1e3,
-                                          c.difference.ci->upper * 1e3)
-                            : "";
+        const std::string ci = c.difference.ci ? fmt::format(" [{:.3g}, {:.3g}]",
+                                                             c.difference.ci->lower * 1e3,
+                                                             c.difference.ci->upper * 1e3)
+                                               : "";
         md += fmt::format(
-            "| {} | {} | {} [{}, {}] | {} | {} | {}{} | {} | {} | {} | {}-{} | {}-{} | {}/{} "
+            "| {} | {} | {} [{}, {}] | {} | {} | {}{} | {} | {} | {} | {}-{} | {}-{} | "
+            "{}/{} "
             "| {} |\n",
-            k == 0 ? "**" + sd.settings[k]->label + "**" : sd.settings[k]->label, sd.parts[p],
-            Seconds(w.median), Seconds(w.p10), Seconds(w.p90), Count(c.steps_median),
-            Count(c.realizations_median), Ms(c.difference.mean), ci,
-            Ms(c.mean_abs_difference),
+            k == 0 ? "**" + sd.settings[k]->label + "**" : sd.settings[k]->label,
+            sd.parts[p], Seconds(w.median), Seconds(w.p10), Seconds(w.p90),
+            Count(c.steps_median), Count(c.realizations_median), Ms(c.difference.mean),
+            ci, Ms(c.mean_abs_difference),
             c.ks ? fmt::format("{:.3f} ({:.2g})", c.ks->distance, c.ks->p_value) : "-",
             Ms(c.ks_shift), Seconds(c.p10), Seconds(c.p90), Seconds(c.reference_p10),
             Seconds(c.reference_p90), c.outcome_differences, c.cycles,
-            k == 0 ? "reference" : c.meets_rule() ? "meets" : "no: " + c.failures);
+            k == 0           ? "reference"
+            : c.meets_rule() ? "meets"
+                             : "no: " + c.failures);
       }
     md += fmt::format("\n**Recommended for {}: {}** ({}). {}.\n\n", name, chosen.label,
                       Overrides(chosen).dump(), rec.why);
-    for (const Measure& m : kMeasures)
-      out.plots.push_back(WorkPrecisionPlot(sd, m));
+    for (const Measure& m : kMeasures) out.plots.push_back(WorkPrecisionPlot(sd, m));
   }
 
   out.tables.emplace_back("precision_trials.csv", trials);
@@ -461,11 +516,12 @@ Section PrecisionSection(const experiment::ExperimentRun& run) {
                  {"max_outcome_share", kMaxOutcomeShare},
                  {"rule", kRule},
                  {"scenes", summary_scenes}};
-  out.measured = {{"note",
-                   "wall seconds per trial, measured on this machine with the run's threads "
-                   "(manifest.json: threads); the recommendation ranks settings by them"},
-                  {"scenes", measured_scenes},
-                  {"recommended", recommended}};
+  out.measured = {
+      {"note",
+       "wall seconds per trial, measured on this machine with the run's threads "
+       "(manifest.json: threads); the recommendation ranks settings by them"},
+      {"scenes", measured_scenes},
+      {"recommended", recommended}};
   out.markdown = md;
   return out;
 }

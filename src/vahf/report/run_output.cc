@@ -14,7 +14,8 @@ namespace vahf::report {
 namespace {
 
 // The runs whose sections the output holds: the run itself, or a paper's parts.
-std::vector<const experiment::ExperimentRun*> Leaves(const experiment::ExperimentRun& run) {
+std::vector<const experiment::ExperimentRun*> Leaves(
+    const experiment::ExperimentRun& run) {
   std::vector<const experiment::ExperimentRun*> out;
   if (run.parts.empty()) {
     out.push_back(&run);
@@ -114,8 +115,10 @@ RunOutput WriteSections(const RunHeader& h, const std::vector<Section>& sections
   RunOutput result;
   const scene::ExperimentFile& file = *h.file;
   std::map<std::string, std::string> results;  // name -> bytes, for the digest
-  nlohmann::json summary = {
-      {"experiment", file.name}, {"kind", file.kind}, {"seed", h.seed}, {"trials", h.trials}};
+  nlohmann::json summary = {{"experiment", file.name},
+                            {"kind", file.kind},
+                            {"seed", h.seed},
+                            {"trials", h.trials}};
   for (const Section& s : sections) {
     for (const auto& [name, table] : s.tables) results[name] = table.ToCsv();
     for (const auto& [name, bytes] : s.files) results[name] = bytes;
@@ -190,8 +193,10 @@ RunOutput WriteSections(const RunHeader& h, const std::vector<Section>& sections
     }
     md += "Tables: ";
     std::size_t k = 0;
-    for (const auto& [name, table] : s.tables) md += fmt::format("{}`{}`", k++ ? ", " : "", name);
-    for (const auto& [name, bytes] : s.files) md += fmt::format("{}`{}`", k++ ? ", " : "", name);
+    for (const auto& [name, table] : s.tables)
+      md += fmt::format("{}`{}`", k++ ? ", " : "", name);
+    for (const auto& [name, bytes] : s.files)
+      md += fmt::format("{}`{}`", k++ ? ", " : "", name);
     for (const auto& [name, table] : s.measured_tables)
       md += fmt::format(", `{}` (measured, outside the digest)", name);
     if (!s.measured.is_null()) md += ", `measured.json` (measured, outside the digest)";

@@ -29,16 +29,18 @@ nlohmann::json UntestableClaim(const std::string& claim, const std::string& test
 std::optional<stats::WelchResult> WelchIfDefined(const std::vector<double>& a,
                                                  const std::vector<double>& b,
                                                  const std::string& a_name,
-                                                 const std::string& b_name, std::string* why) {
+                                                 const std::string& b_name,
+                                                 std::string* why) {
   if (a.size() < 2 || b.size() < 2) {
     *why = fmt::format("{} has {} value(s) and {} {}: the test needs two each", a_name,
                        a.size(), b_name, b.size());
     return std::nullopt;
   }
   if (stats::SampleStandardDeviation(a) == 0 && stats::SampleStandardDeviation(b) == 0) {
-    *why = fmt::format("neither {} ({:.6g} every time) nor {} ({:.6g} every time) varies: "
-                       "the t statistic is undefined",
-                       a_name, a.front(), b_name, b.front());
+    *why = fmt::format(
+        "neither {} ({:.6g} every time) nor {} ({:.6g} every time) varies: "
+        "the t statistic is undefined",
+        a_name, a.front(), b_name, b.front());
     return std::nullopt;
   }
   return stats::WelchTTest(a, b);
@@ -55,8 +57,9 @@ std::optional<stats::PairedTResult> PairedIfDefined(const std::vector<double>& a
   std::vector<double> d(a.size());
   for (std::size_t i = 0; i < a.size(); ++i) d[i] = a[i] - b[i];
   if (stats::SampleStandardDeviation(d) == 0) {
-    *why = fmt::format("the {} {} differ by {:.6g} every time: the t statistic is undefined",
-                       a.size(), pairs, d.front());
+    *why =
+        fmt::format("the {} {} differ by {:.6g} every time: the t statistic is undefined",
+                    a.size(), pairs, d.front());
     return std::nullopt;
   }
   return stats::PairedTTest(a, b);

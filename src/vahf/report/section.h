@@ -1,7 +1,7 @@
 // What one experiment contributes to a run's output (docs/outputs.md): tidy
 // tables, its part of summary.json (statistics and the paper's claims, each
-// with its verdict: yes, no or untestable), a Markdown section of report.md and its plots.
-// The analysis of each kind lives in its own file; this header declares them.
+// with its verdict: yes, no or untestable), a Markdown section of report.md and its
+// plots. The analysis of each kind lives in its own file; this header declares them.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -12,8 +12,8 @@
 
 #include "vahf/experiment/design.h"
 #include "vahf/report/table.h"
-#include "vahf/stats/summary.h"
 #include "vahf/stats/paired.h"
+#include "vahf/stats/summary.h"
 #include "vahf/stats/welch.h"
 
 namespace vahf::report {
@@ -58,7 +58,8 @@ nlohmann::json UntestableClaim(const std::string& claim, const std::string& test
 std::optional<stats::WelchResult> WelchIfDefined(const std::vector<double>& a,
                                                  const std::vector<double>& b,
                                                  const std::string& a_name,
-                                                 const std::string& b_name, std::string* why);
+                                                 const std::string& b_name,
+                                                 std::string* why);
 
 // Student's paired t test of a against b, pair by pair (stats/paired.h): the
 // outcomes of one cycle under two conditions on the same streams. Defined

@@ -57,7 +57,8 @@ std::string Statuses(const Cell& cell) {
   }
   if (cell.trials.size() == 1) return counts[0].first;
   std::string out;
-  for (const auto& [s, n] : counts) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", s, n);
+  for (const auto& [s, n] : counts)
+    out += fmt::format("{}{} {}", out.empty() ? "" : ", ", s, n);
   return out;
 }
 
@@ -69,13 +70,15 @@ std::string CompactWarnings(const Warnings& w) {
   std::string out;
   for (int k = 0; k < kWarningKinds; ++k) {
     const WarningEntry& e = w.at(static_cast<WarningKind>(k));
-    if (e.count > 0) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", kShortNames[k], e.count);
+    if (e.count > 0)
+      out += fmt::format("{}{} {}", out.empty() ? "" : ", ", kShortNames[k], e.count);
   }
   return out.empty() ? "-" : out;
 }
 
-std::vector<std::string> FailedCases(const scene::StabilityDesign& d,
-                                     const std::vector<experiment::StabilityTrial>& trials) {
+std::vector<std::string> FailedCases(
+    const scene::StabilityDesign& d,
+    const std::vector<experiment::StabilityTrial>& trials) {
   std::vector<bool> failed(d.cases.size(), false);
   for (const experiment::StabilityTrial& t : trials)
     if (!t.failures.empty()) failed[t.case_index] = true;
@@ -91,10 +94,13 @@ Section StabilitySection(const scene::ExperimentFile& file,
   Section s;
   s.kind = "stability";
 
-  Table table({"case", "integrator", "seed_index", "status", "expected", "pass", "failures",
-               "end_time_s", "completion_time_s", "work_j", "steps_taken", "steps_attempted",
-               "max_steps", "realizations", "warnings", "warnings_total", "max_penetration_m",
-               "penetration_bound_m", "clearance_m", "stiffness_pa_per_m", "detail"});
+  Table table({"case",           "integrator",         "seed_index",
+               "status",         "expected",           "pass",
+               "failures",       "end_time_s",         "completion_time_s",
+               "work_j",         "steps_taken",        "steps_attempted",
+               "max_steps",      "realizations",       "warnings",
+               "warnings_total", "max_penetration_m",  "penetration_bound_m",
+               "clearance_m",    "stiffness_pa_per_m", "detail"});
   Table cost({"case", "integrator", "seed_index", "simulated_s", "cpu_s", "wall_s",
               "real_time_factor"});
   nlohmann::json cases = nlohmann::json::array();
@@ -112,15 +118,30 @@ Section StabilitySection(const scene::ExperimentFile& file,
     nlohmann::json cell_trials = nlohmann::json::array();
     for (const experiment::StabilityTrial* t : cell.trials) {
       const sim::TrialResult& r = t->result;
-      const std::int64_t max_steps = c.scenes[t->integrator_index].params.simulation.max_steps;
+      const std::int64_t max_steps =
+          c.scenes[t->integrator_index].params.simulation.max_steps;
       const bool pass = t->failures.empty();
-      table.AddRow({c.name, cell.integrator, std::int64_t{t->seed_index},
-                    std::string(sim::StatusName(r.status)), fmt::format("{}", fmt::join(c.expect, " ")),
-                    std::string(pass ? "yes" : "no"), fmt::format("{}", fmt::join(t->failures, "; ")),
-                    r.end_time, r.completion_time, r.work, r.counters.steps_taken,
-                    r.counters.steps_attempted, max_steps, r.counters.realizations,
-                    CompactWarnings(r.warnings), r.warnings.total(), r.max_penetration,
-                    r.penetration_bound, r.clearance, r.stiffness, r.detail});
+      table.AddRow({c.name,
+                    cell.integrator,
+                    std::int64_t{t->seed_index},
+                    std::string(sim::StatusName(r.status)),
+                    fmt::format("{}", fmt::join(c.expect, " ")),
+                    std::string(pass ? "yes" : "no"),
+                    fmt::format("{}", fmt::join(t->failures, "; ")),
+                    r.end_time,
+                    r.completion_time,
+                    r.work,
+                    r.counters.steps_taken,
+                    r.counters.steps_attempted,
+                    max_steps,
+                    r.counters.realizations,
+                    CompactWarnings(r.warnings),
+                    r.warnings.total(),
+                    r.max_penetration,
+                    r.penetration_bound,
+                    r.clearance,
+                    r.stiffness,
+                    r.detail});
       const double rtf = r.cpu_seconds > 0 ? r.end_time / r.cpu_seconds : 0.0;
       cost.AddRow({c.name, cell.integrator, std::int64_t{t->seed_index}, r.end_time,
                    r.cpu_seconds, r.wall_seconds, rtf});
@@ -163,11 +184,13 @@ Section StabilitySection(const scene::ExperimentFile& file,
       "pose, velocities, forces, factors) is finite, and its accepted steps stay within "
       "simulation/max_steps. **{}**\n\n",
       d.cases.size(), trials.size(),
-      failed.empty() ? std::string("Every case passes.")
-                     : fmt::format("{} case(s) fail: {}.", failed.size(), fmt::join(failed, ", ")));
-  md += "| case | integrator | status | expected | verdict | warnings | deepest contact / "
-        "bound (um) | steps | CPU (s) | real-time factor |\n"
-        "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+      failed.empty()
+          ? std::string("Every case passes.")
+          : fmt::format("{} case(s) fail: {}.", failed.size(), fmt::join(failed, ", ")));
+  md +=
+      "| case | integrator | status | expected | verdict | warnings | deepest contact / "
+      "bound (um) | steps | CPU (s) | real-time factor |\n"
+      "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (const Cell& cell : Cells(d, trials)) {
     Warnings w;
     double depth = 0, bound = 0, cpu = 0, simulated = 0;
@@ -191,24 +214,27 @@ Section StabilitySection(const scene::ExperimentFile& file,
           if (std::find(why.begin(), why.end(), f) == why.end()) why.push_back(f);
       verdict = fmt::format("**FAIL**: {}", fmt::join(why, "; "));
     }
-    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} / {} | {} | {:.3f} | {} |\n",
-                      cell.c->name, cell.integrator, Statuses(cell),
-                      fmt::join(cell.c->expect, ", "), verdict, CompactWarnings(w), Um(depth),
-                      bound > 0 ? Um(bound) : std::string("-"), steps, cpu,
-                      cpu > 0 ? fmt::format("{:.3g}", simulated / cpu) : std::string("-"));
+    md += fmt::format(
+        "| {} | {} | {} | {} | {} | {} | {} / {} | {} | {:.3f} | {} |\n", cell.c->name,
+        cell.integrator, Statuses(cell), fmt::join(cell.c->expect, ", "), verdict,
+        CompactWarnings(w), Um(depth), bound > 0 ? Um(bound) : std::string("-"), steps,
+        cpu, cpu > 0 ? fmt::format("{:.3g}", simulated / cpu) : std::string("-"));
   }
-  md += "\nWarnings (counts over accepted steps): pen = penetration_bound (contact deeper "
-        "than the bound), retry = integrator_retry, floor = step_size_floor, nonfinite = "
-        "non_finite_state, fail = integrator_failure. Steps: accepted steps (the largest over "
-        "seeds). CPU and the real-time factor (simulated over CPU seconds, the trial's "
-        "thread) are measured on this machine, outside the results digest "
-        "(stability_cost.csv, measured.json); over several seeds CPU is their sum.\n\n"
-        "Why each trial ended:\n\n";
+  md +=
+      "\nWarnings (counts over accepted steps): pen = penetration_bound (contact deeper "
+      "than the bound), retry = integrator_retry, floor = step_size_floor, nonfinite = "
+      "non_finite_state, fail = integrator_failure. Steps: accepted steps (the largest "
+      "over "
+      "seeds). CPU and the real-time factor (simulated over CPU seconds, the trial's "
+      "thread) are measured on this machine, outside the results digest "
+      "(stability_cost.csv, measured.json); over several seeds CPU is their sum.\n\n"
+      "Why each trial ended:\n\n";
   for (const experiment::StabilityTrial& t : trials) {
     const scene::StabilityCase& c = d.cases[t.case_index];
-    md += fmt::format("- {}, {}{}: {} ({})\n", c.name, c.integrators[t.integrator_index],
-                      c.seeds > 1 ? fmt::format(", seed {}", t.seed_index) : std::string(),
-                      sim::StatusName(t.result.status), t.result.detail);
+    md +=
+        fmt::format("- {}, {}{}: {} ({})\n", c.name, c.integrators[t.integrator_index],
+                    c.seeds > 1 ? fmt::format(", seed {}", t.seed_index) : std::string(),
+                    sim::StatusName(t.result.status), t.result.detail);
   }
   s.markdown = md;
   return s;

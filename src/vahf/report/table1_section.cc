@@ -14,14 +14,14 @@ namespace vahf::report {
 namespace {
 
 constexpr std::array<char, 4> kInstants = {'a', 'b', 'c', 'd'};
-const std::array<const char*, 9> kColumns = {"V", "f", "eta", "r", "g", "lambda_c",
-                                             "t", "A", "psi"};
+const std::array<const char*, 9> kColumns = {"V",        "f", "eta", "r",  "g",
+                                             "lambda_c", "t", "A",   "psi"};
 
 // The nine Table 1 quantities of a row; t and A counted from the cycle's start.
 std::array<double, 9> Values(const sim::TraceRow& row, const experiment::PartRun& part) {
   const auto& f = row.factors;
-  return {f.V, f.f, f.eta, f.r, f.g, f.lambda_c, part.start_time + row.time, row.work,
-          row.psi};
+  return {f.V,      f.f,    f.eta, f.r, f.g, f.lambda_c, part.start_time + row.time,
+          row.work, row.psi};
 }
 
 std::array<double, 9> PaperValues(const experiment::Table1Row& r) {
@@ -38,7 +38,8 @@ Section Table1Section(const experiment::ExperimentRun& run) {
   out.tables.emplace_back("table1_cycles.csv", CyclesTable(run.run));
 
   std::optional<experiment::Table1> paper;
-  if (!file.paper_table_path.empty()) paper = experiment::LoadTable1(file.paper_table_path);
+  if (!file.paper_table_path.empty())
+    paper = experiment::LoadTable1(file.paper_table_path);
 
   // Every instant of every completed cycle.
   Table instants({"cycle", "position", "part", "instant", "V", "f", "eta", "r", "g",
@@ -56,8 +57,8 @@ Section Table1Section(const experiment::ExperimentRun& run) {
       const scene::Part& sp = scene.parts[scene.sequence[p]];
       const experiment::Instants in = experiment::FindInstants(
           part.trial, sp.target.Rotation(), scene.params.simulation.completion_angle_deg);
-      const std::array<const std::optional<sim::TraceRow>*, 4> rows = {&in.a, &in.b, &in.c,
-                                                                        &in.d};
+      const std::array<const std::optional<sim::TraceRow>*, 4> rows = {&in.a, &in.b,
+                                                                       &in.c, &in.d};
       for (std::size_t k = 0; k < 4; ++k) {
         if (!*rows[k]) continue;
         const auto v = Values(**rows[k], part);
@@ -76,8 +77,8 @@ Section Table1Section(const experiment::ExperimentRun& run) {
   out.tables.emplace_back("table1_instants.csv", instants);
 
   // Means beside the paper.
-  Table means({"position", "part", "instant", "n", "quantity", "virtual_mean", "virtual_sd",
-               "paper", "difference"});
+  Table means({"position", "part", "instant", "n", "quantity", "virtual_mean",
+               "virtual_sd", "paper", "difference"});
   nlohmann::json claims = nlohmann::json::array();
   std::string md = fmt::format(
       "## Table 1: human factors at the instants of Fig. 9\n\n"
@@ -127,10 +128,11 @@ Section Table1Section(const experiment::ExperimentRun& run) {
                       rise.size())));
     } else {
       const stats::Interval ci = stats::MeanConfidenceInterval(rise);
-      claims.push_back(Claim(claim, ci.lower > 0, test,
-                             fmt::format("eta(d) - eta(a) = {:.3f}, 95 % CI [{:.3f}, {:.3f}], "
-                                         "n = {}",
-                                         stats::Mean(rise), ci.lower, ci.upper, rise.size())));
+      claims.push_back(
+          Claim(claim, ci.lower > 0, test,
+                fmt::format("eta(d) - eta(a) = {:.3f}, 95 % CI [{:.3f}, {:.3f}], "
+                            "n = {}",
+                            stats::Mean(rise), ci.lower, ci.upper, rise.size())));
     }
   }
   out.tables.emplace_back("table1_means.csv", means);
@@ -142,7 +144,8 @@ Section Table1Section(const experiment::ExperimentRun& run) {
       {"plots/table1_eta.png", "eta at the instants a-d of each part, virtual and paper",
        "$d << EOD\n" + eta_data +
            "EOD\nset title 'Table 1: vision coefficient eta at instants a-d'\n"
-           "set ylabel 'eta'\nset yrange [0:1]\nset xtics (" + xtics +
+           "set ylabel 'eta'\nset yrange [0:1]\nset xtics (" +
+           xtics +
            ") rotate by -30\nset key left top\nset grid\n"
            "plot $d using 1:2 with linespoints pt 7 title 'virtual (mean)', "
            "$d using 1:3 with linespoints pt 5 title 'paper'\n"});

@@ -1,7 +1,8 @@
 #include "vahf/rng/stream.h"
 
-#include <Random123/boxmuller.hpp>
 #include <Random123/philox.h>
+
+#include <Random123/boxmuller.hpp>
 #include <Random123/uniform.hpp>
 
 namespace vahf::rng {
@@ -12,7 +13,8 @@ Stream::Stream(StreamKey key, std::uint64_t decision, Purpose purpose)
 
 void Stream::Refill() {
   r123::Philox4x64 philox;
-  const r123::Philox4x64::ctr_type ctr = {{counter_[0], counter_[1], counter_[2], counter_[3]}};
+  const r123::Philox4x64::ctr_type ctr = {
+      {counter_[0], counter_[1], counter_[2], counter_[3]}};
   const r123::Philox4x64::key_type key = {{key_[0], key_[1]}};
   const r123::Philox4x64::ctr_type out = philox(ctr, key);
   for (int i = 0; i < 4; ++i) block_[i] = out.v[i];

@@ -18,12 +18,12 @@ namespace vahf::rng {
 // for one purpose never shifts another's. Values are part of the file format
 // of every seeded result: never renumber, only append.
 enum class Purpose : std::uint32_t {
-  kTargetEstimate = 1,   // c1, c2, c3 of Eq. 5
-  kVisionError = 2,      // E_i of Eq. 5
-  kTorqueError = 3,      // perturbation of the assembly torque
+  kTargetEstimate = 1,  // c1, c2, c3 of Eq. 5
+  kVisionError = 2,     // E_i of Eq. 5
+  kTorqueError = 3,     // perturbation of the assembly torque
   kOperatorVariation = 4,
-  kMeasurementNoise = 5, // a synthetic lab's reading errors (calibrate/synthetic_lab.h)
-  kTest = 0xFFFF,        // reserved for tests
+  kMeasurementNoise = 5,  // a synthetic lab's reading errors (calibrate/synthetic_lab.h)
+  kTest = 0xFFFF,         // reserved for tests
 };
 
 struct StreamKey {

@@ -31,9 +31,10 @@ std::string ResolvePath(const JsonNode& node, const std::string& experiment_path
   if (error && error != std::errc::no_such_file_or_directory)
     node.Fail(fmt::format("cannot be a {} file's path: {}", what, error.message()));
   // The path as the message shows it: a long one keeps both ends.
-  const std::string shown = resolved.size() <= 200 ? resolved
-                                                   : resolved.substr(0, 120) + "..." +
-                                                         resolved.substr(resolved.size() - 60);
+  const std::string shown =
+      resolved.size() <= 200
+          ? resolved
+          : resolved.substr(0, 120) + "..." + resolved.substr(resolved.size() - 60);
   if (!found)
     node.Fail(std::string("no ") + what + " file at " + shown +
               " (a relative path is taken from the experiment file's folder)");
@@ -150,14 +151,17 @@ namespace {
 
 // A fitted parameter's value must obey the parameter table's rule, and so
 // must the points a central difference visits around it.
-void CheckFitValue(const ParamSpec& spec, const JsonNode& node, double value, double step) {
+void CheckFitValue(const ParamSpec& spec, const JsonNode& node, double value,
+                   double step) {
   Parameters scratch;
   try {
-    ReadParamValue(spec, JsonNode(nlohmann::json(value), node.file(), node.path()), &scratch);
+    ReadParamValue(spec, JsonNode(nlohmann::json(value), node.file(), node.path()),
+                   &scratch);
   } catch (const InputError& e) {
-    node.Fail(fmt::format("with relative_step {}, derivatives are taken at {}, which breaks "
-                          "{}'s rule: {}",
-                          step, value, ParamName(spec), e.rule()));
+    node.Fail(
+        fmt::format("with relative_step {}, derivatives are taken at {}, which breaks "
+                    "{}'s rule: {}",
+                    step, value, ParamName(spec), e.rule()));
   }
 }
 
@@ -165,7 +169,8 @@ void CheckFitValue(const ParamSpec& spec, const JsonNode& node, double value, do
 // them: quantity, part (of the scene's sequence, or "all"), by ("operator" or
 // "all"), segment (1-based) and condition (the lab's, not empty: without it,
 // any), and for a comparison the equivalence margin.
-std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, bool margin) {
+std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene,
+                                   bool margin) {
   std::vector<FitTarget> out;
   const std::size_t m = list.ArraySize(1);
   for (std::size_t k = 0; k < m; ++k) {
@@ -181,7 +186,8 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, boo
     std::vector<std::string> parts = {"all"};
     for (int index : scene.sequence) parts.push_back(scene.parts[index].name);
     t.part = node.Required("part").Choice(parts);
-    if (auto by = node.Optional("by")) t.by_operator = by->Choice({"operator", "all"}) == "operator";
+    if (auto by = node.Optional("by"))
+      t.by_operator = by->Choice({"operator", "all"}) == "operator";
     if (auto segment = node.Optional("segment"))
       t.segment = static_cast<int>(segment->Integer(1, 1000));
     if (auto condition = node.Optional("condition")) {
@@ -193,7 +199,8 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, boo
       node.Required("by").Fail("a segment's value is the lab's over all operators");
     // A margin is in the quantity's unit: at most an hour for a time, 1 for a rate.
     if (margin)
-      t.margin = node.Required("margin").InRange(0, t.quantity == "assembly_time" ? 3600 : 1);
+      t.margin =
+          node.Required("margin").InRange(0, t.quantity == "assembly_time" ? 3600 : 1);
     if (margin && !(t.margin > 0)) node.Required("margin").Fail("must be > 0");
     out.push_back(t);
   }
@@ -202,16 +209,18 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, boo
 
 // A stage's parameters, targets and solver, from `node` (a stage of
 // "stages", or the file's root for a file of one stage).
-CalibrationStage ReadStage(const JsonNode& node, const CalibrationDesign& d, const Scene& scene,
-                           const std::string& path) {
+CalibrationStage ReadStage(const JsonNode& node, const CalibrationDesign& d,
+                           const Scene& scene, const std::string& path) {
   CalibrationStage stage;
   if (auto solver = node.Optional("solver"))
     stage.solver = solver->Choice({"levenberg_marquardt", "golden_section"});
   const JsonNode params = node.Required("parameters");
   const std::size_t n = params.ArraySize(1);
   if (stage.solver == "golden_section" && n != 1)
-    params.Fail("the golden_section solver fits exactly one parameter; use levenberg_marquardt, or one "
-                "stage per parameter");
+    params.Fail(
+        "the golden_section solver fits exactly one parameter; use levenberg_marquardt, "
+        "or one "
+        "stage per parameter");
   for (std::size_t k = 0; k < n; ++k) {
     const JsonNode p_node = params.At(k);
     p_node.ExpectObject({"name", "start", "lower", "upper"});
@@ -223,9 +232,11 @@ CalibrationStage ReadStage(const JsonNode& node, const CalibrationDesign& d, con
     if (!spec.real) name.Fail("a calibration fits real-valued parameters");
     for (const CalibrationStage& earlier : d.stages)
       for (const FitParameter& other : earlier.parameters)
-        if (other.name == p.name) name.Fail("fitted once only (also at " + other.pointer + ")");
+        if (other.name == p.name)
+          name.Fail("fitted once only (also at " + other.pointer + ")");
     for (const FitParameter& other : stage.parameters)
-      if (other.name == p.name) name.Fail("fitted once only (also at " + other.pointer + ")");
+      if (other.name == p.name)
+        name.Fail("fitted once only (also at " + other.pointer + ")");
     const JsonNode lower = p_node.Required("lower"), upper = p_node.Required("upper"),
                    start = p_node.Required("start");
     p.lower = lower.Number();
@@ -233,7 +244,8 @@ CalibrationStage ReadStage(const JsonNode& node, const CalibrationDesign& d, con
     p.start = start.Number();
     if (!(p.lower < p.upper)) upper.Fail(fmt::format("must exceed lower = {}", p.lower));
     if (!(p.lower <= p.start && p.start <= p.upper))
-      start.Fail(fmt::format("must lie within [lower, upper] = [{}, {}]", p.lower, p.upper));
+      start.Fail(
+          fmt::format("must lie within [lower, upper] = [{}, {}]", p.lower, p.upper));
     // Numeric derivatives step a relative_step beyond the bounds.
     CheckFitValue(spec, lower, p.lower * (1 - d.relative_step), d.relative_step);
     CheckFitValue(spec, upper, p.upper * (1 + d.relative_step), d.relative_step);
@@ -244,10 +256,11 @@ CalibrationStage ReadStage(const JsonNode& node, const CalibrationDesign& d, con
   // in segments.
   for (const FitTarget& t : stage.targets)
     if ((t.segment > 0) != (stage.targets[0].segment > 0))
-      throw InputError(path, t.pointer, t.quantity,
-                       "targets of segments and targets without a segment cannot be fitted "
-                       "in one stage (one runs the fatigue design, the other the lab's "
-                       "operators): put them in stages of their own");
+      throw InputError(
+          path, t.pointer, t.quantity,
+          "targets of segments and targets without a segment cannot be fitted "
+          "in one stage (one runs the fatigue design, the other the lab's "
+          "operators): put them in stages of their own");
   return stage;
 }
 
@@ -256,8 +269,9 @@ void CheckSegments(const std::vector<FitTarget>& targets, const FatigueDesign& f
                    const std::string& path) {
   for (const FitTarget& t : targets)
     if (t.segment > fatigue.segments)
-      throw InputError(path, t.pointer + "/segment", std::to_string(t.segment),
-                       fmt::format("the fatigue design has {} segments", fatigue.segments));
+      throw InputError(
+          path, t.pointer + "/segment", std::to_string(t.segment),
+          fmt::format("the fatigue design has {} segments", fatigue.segments));
 }
 
 }  // namespace
@@ -267,7 +281,8 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
   CalibrationDesign& d = e->calibration;
   d.fatigue = e->fatigue;
   d.lab_path = ResolvePath(root.Required("lab"), path, "lab dataset");
-  if (auto step = root.Optional("relative_step")) d.relative_step = step->InRange(1e-4, 0.5);
+  if (auto step = root.Optional("relative_step"))
+    d.relative_step = step->InRange(1e-4, 0.5);
   if (auto it = root.Optional("max_iterations"))
     d.max_iterations = static_cast<int>(it->Integer(1, 1000));
   if (auto tol = root.Optional("tolerance")) d.tolerance = tol->InRange(1e-4, 0.5);
@@ -279,8 +294,9 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
   if (auto stages = root.Optional("stages")) {
     for (const char* key : {"parameters", "targets", "solver"})
       if (auto node = root.Optional(key))
-        node->Fail("a calibration in stages states its parameters, targets and solver in "
-                   "each stage");
+        node->Fail(
+            "a calibration in stages states its parameters, targets and solver in "
+            "each stage");
     const std::size_t n = stages->ArraySize(1);
     for (std::size_t k = 0; k < n; ++k) {
       const JsonNode node = stages->At(k);
@@ -290,13 +306,15 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
       stage.name = node.Required("name").String();
       for (const CalibrationStage& earlier : d.stages)
         if (earlier.name == stage.name)
-          node.Required("name").Fail("a stage name is used once (also " + earlier.pointer + ")");
+          node.Required("name").Fail("a stage name is used once (also " +
+                                     earlier.pointer + ")");
       d.stages.push_back(std::move(stage));
     }
   } else {
     d.stages.push_back(ReadStage(root, d, e->scene, path));
   }
-  for (const CalibrationStage& stage : d.stages) CheckSegments(stage.targets, d.fatigue, path);
+  for (const CalibrationStage& stage : d.stages)
+    CheckSegments(stage.targets, d.fatigue, path);
 }
 
 void ReadComparison(const JsonNode& root, const std::string& path, ExperimentFile* e) {
@@ -324,8 +342,10 @@ nlohmann::json* Resolve(nlohmann::json& document, const std::string& pointer,
     target = Pointer();
   }
   if (target.empty()) {
-    *why = "a JSON pointer into the scene starts with '/' and writes '~' as ~0 and '/' as ~1 "
-           "(RFC 6901), e.g. /parts/0/friction";
+    *why =
+        "a JSON pointer into the scene starts with '/' and writes '~' as ~0 and '/' as "
+        "~1 "
+        "(RFC 6901), e.g. /parts/0/friction";
     return nullptr;
   }
   const auto holds = [&](const Pointer& p) {
@@ -347,9 +367,10 @@ nlohmann::json* Resolve(nlohmann::json& document, const std::string& pointer,
   const nlohmann::json& at = document.at(held);
   const std::string where = held.empty() ? "the scene's root" : held.to_string();
   if (at.is_object())
-    *why = fmt::format("the scene has no '{}' at {}; a patch replaces a value the scene "
-                       "already holds",
-                       tokens.back(), where);
+    *why = fmt::format(
+        "the scene has no '{}' at {}; a patch replaces a value the scene "
+        "already holds",
+        tokens.back(), where);
   else if (at.is_array())
     *why = fmt::format("{} holds {} elements; '{}' names none of them", where, at.size(),
                        tokens.back());
@@ -367,7 +388,8 @@ bool Under(const std::string& where, const std::string& pointer) {
 // The scene of a case, from its patched `document`: read by the scene loader,
 // its parameters overridden; a scene rule it breaks names the experiment file
 // and the case's pointer (the patch entry at fault, or the case).
-Scene CaseScene(const StabilityCase& c, const JsonNode& node, const nlohmann::json& document) {
+Scene CaseScene(const StabilityCase& c, const JsonNode& node,
+                const nlohmann::json& document) {
   const std::optional<JsonNode> patch = node.Optional("patch");
   Scene scene;
   try {
@@ -375,9 +397,10 @@ Scene CaseScene(const StabilityCase& c, const JsonNode& node, const nlohmann::js
   } catch (const InputError& e) {
     for (const auto& [pointer, value] : c.patch)
       if (Under(e.where(), pointer))
-        throw InputError(node.file(),
-                         patch->Required(pointer).path() + e.where().substr(pointer.size()),
-                         e.value(), e.rule() + " (scene " + c.scene_path + ", patched)");
+        throw InputError(
+            node.file(),
+            patch->Required(pointer).path() + e.where().substr(pointer.size()), e.value(),
+            e.rule() + " (scene " + c.scene_path + ", patched)");
     node.Fail(fmt::format("the scene {}{} breaks a rule: {}", c.scene_path,
                           c.patch.empty() ? "" : " with the case's patch", e.what()));
   }
@@ -400,7 +423,8 @@ Scene UnderIntegrator(const StabilityCase& c, const JsonNode& node, Scene scene,
                  &scene.params);
   const std::string violation = ParameterViolation(scene);
   if (!violation.empty())
-    node.Fail("applied to scene '" + scene.name + "' (" + c.scene_path + "): " + violation);
+    node.Fail("applied to scene '" + scene.name + "' (" + c.scene_path +
+              "): " + violation);
   return scene;
 }
 
@@ -425,8 +449,8 @@ void ReadStability(const JsonNode& root, const std::string& path, ExperimentFile
   const std::size_t n = cases.ArraySize(1);
   for (std::size_t k = 0; k < n; ++k) {
     const JsonNode node = cases.At(k);
-    node.ExpectObject(
-        {"name", "scene", "position", "parameters", "patch", "integrators", "seeds", "expect"});
+    node.ExpectObject({"name", "scene", "position", "parameters", "patch", "integrators",
+                       "seeds", "expect"});
     StabilityCase c;
     c.pointer = node.path();
     c.name = node.Required("name").String();
@@ -466,7 +490,8 @@ void ReadStability(const JsonNode& root, const std::string& path, ExperimentFile
     }
     c.integrators = d.integrators;
     if (auto list = node.Optional("integrators")) c.integrators = ReadIntegrators(*list);
-    if (auto seeds = node.Optional("seeds")) c.seeds = static_cast<int>(seeds->Integer(1, 1000));
+    if (auto seeds = node.Optional("seeds"))
+      c.seeds = static_cast<int>(seeds->Integer(1, 1000));
     const JsonNode expect = node.Required("expect");
     const std::size_t m = expect.ArraySize(1);
     for (std::size_t j = 0; j < m; ++j) {
@@ -490,8 +515,9 @@ std::string DescribeStability(const ExperimentFile& e) {
   std::string out = fmt::format("stability: {} case(s); integrators by default: {}\n",
                                 d.cases.size(), fmt::join(d.integrators, ", "));
   for (const StabilityCase& c : d.cases) {
-    out += fmt::format("  {} ({}): {}, position {}, {} seed(s), expects {}\n", c.name, c.pointer,
-                       c.scene_path, c.position, c.seeds, fmt::join(c.expect, " or "));
+    out += fmt::format("  {} ({}): {}, position {}, {} seed(s), expects {}\n", c.name,
+                       c.pointer, c.scene_path, c.position, c.seeds,
+                       fmt::join(c.expect, " or "));
     for (const auto& [pointer, value] : c.patch)
       out += fmt::format("    patch {} = {}\n", pointer, value.dump());
     for (const auto& [name, value] : c.overrides)
@@ -540,8 +566,9 @@ std::string DescribePrecision(const ExperimentFile& e) {
       d.noise_trials);
   out += fmt::format("scenes ({}):\n", d.scenes.size());
   for (const PrecisionScene& s : d.scenes)
-    out += fmt::format("  {} ({}): {} part(s), {} cycles per setting\n", s.scene.name, s.path,
-                       s.scene.sequence.size(), s.trials > 0 ? s.trials : e.trials);
+    out +=
+        fmt::format("  {} ({}): {} part(s), {} cycles per setting\n", s.scene.name,
+                    s.path, s.scene.sequence.size(), s.trials > 0 ? s.trials : e.trials);
   const auto overrides = [](const PrecisionSetting& s) {
     std::string o;
     for (const auto& [name, value] : s.overrides)
@@ -573,7 +600,8 @@ ExperimentFile ReadExperimentHeader(const JsonNode& root, const std::string& pat
   return e;
 }
 
-void ReadExperimentScene(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+void ReadExperimentScene(const JsonNode& root, const std::string& path,
+                         ExperimentFile* e) {
   e->scene_path = ResolvePath(root.Required("scene"), path, "scene");
   e->scene = LoadScene(e->scene_path);
 }
@@ -587,7 +615,8 @@ void ReadAssemblyTime(const JsonNode& root, const std::string&, ExperimentFile* 
   if (auto ops = root.Optional("operators")) e->operators = ReadOperators(*ops, e->scene);
 }
 
-void ReadHumanFactorsGroups(const JsonNode& root, const std::string& path, ExperimentFile* e) {
+void ReadHumanFactorsGroups(const JsonNode& root, const std::string& path,
+                            ExperimentFile* e) {
   const JsonNode list = root.Required("conditions");
   const std::size_t n = list.ArraySize(1);
   for (std::size_t k = 0; k < n; ++k) {
@@ -598,7 +627,8 @@ void ReadHumanFactorsGroups(const JsonNode& root, const std::string& path, Exper
     entry.scene_path = ResolvePath(c.Required("scene"), path, "scene");
     entry.scene = LoadScene(entry.scene_path);
     for (const ConditionEntry& other : e->conditions)
-      if (other.name == entry.name) c.Required("name").Fail("condition names must be unique");
+      if (other.name == entry.name)
+        c.Required("name").Fail("condition names must be unique");
     e->conditions.push_back(std::move(entry));
   }
   if (auto cycle = root.Optional("paper_cycle_s")) e->paper_cycle_s = cycle->Positive();
@@ -607,8 +637,9 @@ void ReadHumanFactorsGroups(const JsonNode& root, const std::string& path, Exper
   for (std::size_t k = 0; k < m; ++k) {
     const double t = instants.At(k).Positive();
     if (t > e->paper_cycle_s)
-      instants.At(k).Fail(fmt::format(
-          "an instant lies within the paper's cycle, paper_cycle_s = {} s", e->paper_cycle_s));
+      instants.At(k).Fail(
+          fmt::format("an instant lies within the paper's cycle, paper_cycle_s = {} s",
+                      e->paper_cycle_s));
     e->instants_s.push_back(t);
   }
 }

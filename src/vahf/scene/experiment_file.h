@@ -27,10 +27,10 @@ inline constexpr const char* kSyntheticFormat = "vahf-synthetic/1";
 // stature and arm length (standing where the scene's operator stands).
 struct OperatorEntry {
   std::string name;
-  std::string sex;     // "male" or "female"
-  double height = 0;   // m
+  std::string sex;        // "male" or "female"
+  double height = 0;      // m
   double arm_length = 0;  // m
-  std::string source;  // where the dimensions come from
+  std::string source;     // where the dimensions come from
 };
 
 // A working condition of a human_factors_groups experiment: its own scene.
@@ -62,9 +62,9 @@ struct PrecisionSetting {
 // applied on top of its own, each validated as the scene loader does.
 struct PrecisionScene {
   std::string path;
-  Scene scene;           // as its file gives it
-  int trials = 0;        // > 0: this scene's cycles per setting instead of `trials`
-  Scene reference;       // scene + the reference's overrides
+  Scene scene;      // as its file gives it
+  int trials = 0;   // > 0: this scene's cycles per setting instead of `trials`
+  Scene reference;  // scene + the reference's overrides
   std::vector<Scene> settings;  // scene + each setting's overrides, in file order
 };
 
@@ -132,14 +132,15 @@ struct CalibrationStage {
 // (calibrate/calibration.h), in stages: each stage starts from the scene with
 // every earlier stage's estimates (a sequential calibration).
 struct CalibrationDesign {
-  std::string lab_path;  // the lab dataset's manifest
+  std::string lab_path;                  // the lab dataset's manifest
   std::vector<CalibrationStage> stages;  // at least one
   // Robust loss on the whitened residuals: "huber", "cauchy" or "none"; its
   // scale in standard deviations (residuals beyond it are down-weighted).
   std::string loss = "huber";
   double loss_scale = 3.0;
   double relative_step = 0.05;  // of each parameter's value, central differences
-  int max_iterations = 30;      // Levenberg-Marquardt (or golden-section) iterations per round
+  int max_iterations =
+      30;  // Levenberg-Marquardt (or golden-section) iterations per round
   // golden_section: the search stops when the bracket is narrower than this fraction
   // of the estimate.
   double tolerance = 0.02;
@@ -185,7 +186,8 @@ struct StabilityDesign {
 // value" for each other override, joined by ", " ("CVODE 1e-4,
 // simulation/velocity_time_scale 0.1"); "scene parameters" for no overrides.
 // Numbers in their shortest exact form, powers of ten as 1e-4.
-std::string SettingLabel(const std::vector<std::pair<std::string, nlohmann::json>>& overrides);
+std::string SettingLabel(
+    const std::vector<std::pair<std::string, nlohmann::json>>& overrides);
 
 struct ExperimentFile {
   std::string file;
@@ -207,17 +209,17 @@ struct ExperimentFile {
   // table1: the paper's Table 1 as JSON (reference/paper/table1.json), shown
   // beside the virtual values; empty: no comparison.
   std::string paper_table_path;
-  FatigueDesign fatigue;                   // fatigue
+  FatigueDesign fatigue;  // fatigue
   // precision: the scenes, reference and settings; `scene_path` and `scene`
   // are its first scene's (the manifest's "scene").
   PrecisionDesign precision;
-  CalibrationDesign calibration;           // calibrate
+  CalibrationDesign calibration;  // calibrate
   // stability: its cases; `scene_path` and `scene` are its first case's.
   StabilityDesign stability;
-  ComparisonDesign comparison;             // compare
+  ComparisonDesign comparison;  // compare
   // The parameter-override file applied to every scene (overrides.h), if any.
   std::string overrides_path;
-  std::vector<ExperimentFile> experiments; // paper: the experiments it runs
+  std::vector<ExperimentFile> experiments;  // paper: the experiments it runs
 };
 
 // What `vahf check` prints about a precision experiment: its scenes with
@@ -244,13 +246,15 @@ std::vector<OperatorEntry> ReadOperators(const JsonNode& node, const Scene& scen
 ExperimentFile ReadExperimentHeader(const JsonNode& root, const std::string& path,
                                     const std::vector<std::string>& kinds);
 // "scene": the file it names, loaded.
-void ReadExperimentScene(const JsonNode& root, const std::string& path, ExperimentFile* e);
+void ReadExperimentScene(const JsonNode& root, const std::string& path,
+                         ExperimentFile* e);
 // table1: "paper_table".
 void ReadTable1(const JsonNode& root, const std::string& path, ExperimentFile* e);
 // assembly_time: "operators".
 void ReadAssemblyTime(const JsonNode& root, const std::string& path, ExperimentFile* e);
 // human_factors_groups: "conditions", "instants_s", "paper_cycle_s".
-void ReadHumanFactorsGroups(const JsonNode& root, const std::string& path, ExperimentFile* e);
+void ReadHumanFactorsGroups(const JsonNode& root, const std::string& path,
+                            ExperimentFile* e);
 // fatigue: "fatigue" (also read by calibrate and compare for segment targets).
 void ReadFatigue(const JsonNode& root, const std::string& path, ExperimentFile* e);
 // precision: "scenes", "reference", "settings", "noise_trials".
@@ -266,8 +270,8 @@ void ReadStability(const JsonNode& root, const std::string& path, ExperimentFile
 // scene, patch, overrides, integrators, seeds and expected outcomes.
 std::string DescribeStability(const ExperimentFile& file);
 
-// "scene", "experiment", "lab", "overrides" or "synthetic" by the document's "format" field; an
-// InputError naming `file` otherwise.
+// "scene", "experiment", "lab", "overrides" or "synthetic" by the document's "format"
+// field; an InputError naming `file` otherwise.
 std::string FormatOf(const nlohmann::json& document, const std::string& file);
 // The same, reading the file.
 std::string FileFormatOf(const std::string& path);

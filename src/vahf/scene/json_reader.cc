@@ -2,10 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <cstdlib>
-
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -56,7 +55,8 @@ constexpr int kShownDepth = 4;          // container levels written out
 // [...] or {...}. Recursion is bounded by `depth`, not by j's nesting (a
 // document built in code may nest without limit: nlohmann's dump would
 // recurse through all of it and overflow the stack).
-void AppendBounded(const nlohmann::json& j, int depth, std::size_t limit, std::string& out) {
+void AppendBounded(const nlohmann::json& j, int depth, std::size_t limit,
+                   std::string& out) {
   if (!j.is_structured()) {
     out += ScalarText(j);
     return;
@@ -101,27 +101,30 @@ class StructureCheck {
  public:
   explicit StructureCheck(const std::string& file) : file_(file) {}
 
-  bool operator()(int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+  bool operator()(int depth, nlohmann::json::parse_event_t event,
+                  nlohmann::json& parsed) {
     using Event = nlohmann::json::parse_event_t;
     switch (event) {
       case Event::object_start:
       case Event::array_start:
         // `depth` counts the enclosing containers.
         if (depth + 1 > kMaxJsonDepth)
-          throw InputError(file_, Pointer(), "",
-                           fmt::format("nested deeper than {} levels of arrays and objects "
-                                       "(the most a vahf file may hold)",
-                                       kMaxJsonDepth));
+          throw InputError(
+              file_, Pointer(), "",
+              fmt::format("nested deeper than {} levels of arrays and objects "
+                          "(the most a vahf file may hold)",
+                          kMaxJsonDepth));
         levels_.push_back({event == Event::object_start});
         break;
       case Event::key: {
         Level& object = levels_.back();
         object.key = parsed.get<std::string>();
         if (!object.keys.insert(object.key).second)
-          throw InputError(file_, Pointer(), "",
-                           fmt::format("duplicate key {} (a key appears at most once in an "
-                                       "object)",
-                                       ScalarText(parsed)));
+          throw InputError(
+              file_, Pointer(), "",
+              fmt::format("duplicate key {} (a key appears at most once in an "
+                          "object)",
+                          ScalarText(parsed)));
         break;
       }
       case Event::object_end:
@@ -190,9 +193,10 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& file) {
     // invalid literal: say why, since other tools write them.
     const std::string what = e.what();
     const bool literal = what.find("invalid literal") != std::string::npos;
-    throw InputError(file, "", "",
-                     fmt::format("not valid JSON: {}{}", what,
-                                 literal ? " (NaN and Infinity are not JSON numbers)" : ""));
+    throw InputError(
+        file, "", "",
+        fmt::format("not valid JSON: {}{}", what,
+                    literal ? " (NaN and Infinity are not JSON numbers)" : ""));
   } catch (const nlohmann::json::exception& e) {
     throw InputError(file, "", "", fmt::format("not valid JSON: {}", e.what()));
   }
@@ -201,10 +205,14 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& file) {
 std::string PointerToken(const std::string& key) {
   std::string out;
   for (char c : key) {
-    if (c == '~') out += "~0";
-    else if (c == '/') out += "~1";
-    else if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", int{c});
-    else out += c;
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else if (static_cast<unsigned char>(c) < 0x20)
+      out += fmt::format("\\u{:04x}", int{c});
+    else
+      out += c;
   }
   return out;
 }
@@ -232,8 +240,8 @@ void JsonNode::ExpectObject(const std::vector<std::string>& allowed) const {
       const std::size_t d = EditDistance(item.key(), k);
       if (d < best) best = d, nearest = k;
     }
-    const std::string hint =
-        nearest.empty() ? "known keys: " + Joined(allowed) : "did you mean '" + nearest + "'?";
+    const std::string hint = nearest.empty() ? "known keys: " + Joined(allowed)
+                                             : "did you mean '" + nearest + "'?";
     throw InputError(*file_, path_ + "/" + PointerToken(item.key()), Shown(item.value()),
                      "unknown key '" + item.key() + "' (" + hint + ")");
   }
@@ -258,7 +266,8 @@ std::optional<JsonNode> JsonNode::Optional(const std::string& key) const {
 std::size_t JsonNode::ArraySize(std::size_t min_size) const {
   if (!json_->is_array()) Fail("must be an array, not a " + TypeName(*json_));
   if (json_->size() < min_size)
-    Fail(fmt::format("must have at least {} element{}", min_size, min_size == 1 ? "" : "s"));
+    Fail(fmt::format("must have at least {} element{}", min_size,
+                     min_size == 1 ? "" : "s"));
   return json_->size();
 }
 
@@ -287,7 +296,8 @@ double JsonNode::NonNegative() const {
 
 double JsonNode::InRange(double lo, double hi) const {
   const double v = Number();
-  if (!(v >= lo && v <= hi)) Fail(fmt::format("must lie in [{}, {}]", NumberText(lo), NumberText(hi)));
+  if (!(v >= lo && v <= hi))
+    Fail(fmt::format("must lie in [{}, {}]", NumberText(lo), NumberText(hi)));
   return v;
 }
 
@@ -309,7 +319,8 @@ std::string NumberText(double x) {
 
 double JsonNode::InOpenClosed(double lo, double hi) const {
   const double v = Number();
-  if (!(v > lo && v <= hi)) Fail(fmt::format("must lie in ({}, {}]", NumberText(lo), NumberText(hi)));
+  if (!(v > lo && v <= hi))
+    Fail(fmt::format("must lie in ({}, {}]", NumberText(lo), NumberText(hi)));
   return v;
 }
 
@@ -324,8 +335,8 @@ std::int64_t JsonNode::Integer(std::int64_t min, std::int64_t max) const {
 }
 
 std::uint64_t JsonNode::Unsigned() const {
-  if (!json_->is_number_integer() || (!json_->is_number_unsigned() &&
-                                      json_->get<std::int64_t>() < 0))
+  if (!json_->is_number_integer() ||
+      (!json_->is_number_unsigned() && json_->get<std::int64_t>() < 0))
     Fail("must be a non-negative integer");
   return json_->get<std::uint64_t>();
 }

@@ -54,9 +54,9 @@ class JsonNode {
 
   // Scalars. Numbers must be finite.
   double Number() const;
-  double Positive() const;     // > 0
-  double NonNegative() const;  // >= 0
-  double InRange(double lo, double hi) const;  // lo <= x <= hi
+  double Positive() const;                          // > 0
+  double NonNegative() const;                       // >= 0
+  double InRange(double lo, double hi) const;       // lo <= x <= hi
   double InOpenClosed(double lo, double hi) const;  // lo < x <= hi
   std::int64_t Integer(std::int64_t min, std::int64_t max) const;
   std::uint64_t Unsigned() const;

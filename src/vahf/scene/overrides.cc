@@ -10,8 +10,8 @@
 namespace vahf::scene {
 namespace {
 
-void Set(const ParameterOverrides& o, const std::string& name, const nlohmann::json& value,
-         Scene* scene) {
+void Set(const ParameterOverrides& o, const std::string& name,
+         const nlohmann::json& value, Scene* scene) {
   // Each value was read by its rule at load; reading it again cannot fail.
   ReadParamValue(*FindParam(name), JsonNode(value, o.file, "/parameters/" + name),
                  &scene->params);
@@ -33,8 +33,8 @@ ParameterOverrides LoadOverrides(const std::string& path) {
   root.ExpectObject({"format", "source", "parameters"});
   const JsonNode format = root.Required("format");
   if (format.String() != kOverridesFormat)
-    format.Fail(std::string("an override file declares \"format\": \"") + kOverridesFormat +
-                "\"");
+    format.Fail(std::string("an override file declares \"format\": \"") +
+                kOverridesFormat + "\"");
   ParameterOverrides out;
   out.file = path;
   if (auto source = root.Optional("source")) out.source = source->String();
@@ -70,16 +70,17 @@ void ApplyOverrides(const ParameterOverrides& o, ExperimentFile* file) {
   }
   for (ConditionEntry& c : file->conditions) ApplyOverrides(o, &c.scene);
   // What a precision setting or a stability case sets itself stays its own.
-  const auto apply_except = [&](const std::vector<std::pair<std::string, nlohmann::json>>& own,
-                                const std::string& also_own, Scene* scene) {
-    for (const auto& [name, value] : o.values) {
-      const bool kept = name == also_own ||
-                        std::any_of(own.begin(), own.end(),
-                                    [&](const auto& s) { return s.first == name; });
-      if (!kept) Set(o, name, value, scene);
-    }
-    Check(o, *scene);
-  };
+  const auto apply_except =
+      [&](const std::vector<std::pair<std::string, nlohmann::json>>& own,
+          const std::string& also_own, Scene* scene) {
+        for (const auto& [name, value] : o.values) {
+          const bool kept = name == also_own ||
+                            std::any_of(own.begin(), own.end(),
+                                        [&](const auto& s) { return s.first == name; });
+          if (!kept) Set(o, name, value, scene);
+        }
+        Check(o, *scene);
+      };
   PrecisionDesign& d = file->precision;
   for (PrecisionScene& ps : d.scenes) {
     ApplyOverrides(o, &ps.scene);
@@ -90,7 +91,8 @@ void ApplyOverrides(const ParameterOverrides& o, ExperimentFile* file) {
   if (!d.scenes.empty()) file->scene = d.scenes[0].scene;
   // A stability case runs each of its integrators.
   for (StabilityCase& c : file->stability.cases)
-    for (Scene& scene : c.scenes) apply_except(c.overrides, "simulation/integrator", &scene);
+    for (Scene& scene : c.scenes)
+      apply_except(c.overrides, "simulation/integrator", &scene);
   if (!file->stability.cases.empty()) file->scene = file->stability.cases[0].scenes[0];
   for (ExperimentFile& sub : file->experiments) ApplyOverrides(o, &sub);
 }

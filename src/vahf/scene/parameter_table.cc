@@ -55,9 +55,10 @@ const std::string& StepperHelp() {
 
 std::vector<ParamSpec> MakeTable() {
   using R = ParamRule;
-  // Every number has a finite range: rules that match the numerics. The ranges are wide, orders of magnitude around any physical
-  // value, and exist so that no accepted value overflows the model's
-  // arithmetic or stalls its integration; where a bound has a source, it says so.
+  // Every number has a finite range: rules that match the numerics. The ranges are wide,
+  // orders of magnitude around any physical value, and exist so that no accepted value
+  // overflows the model's arithmetic or stalls its integration; where a bound has a
+  // source, it says so.
   std::vector<ParamSpec> t = {
       {"sight", "value_at_0", "1", R::kClosed, 0, 1, "f at Ang = 0 deg (Fig. 3)",
        VAHF_REAL(sight.value_at_0)},

@@ -49,11 +49,11 @@ struct Part {
   Role role = Role::kBase;
   geometry::Shape shape;
   geometry::MassProperties mass_properties;  // computed from shape
-  double mass = 0.0;     // kg: given, or density * volume
-  double density = 0.0;  // kg/m^3: given, or mass / volume
-  double friction = 0.0; // Coulomb coefficient, dimensionless
-  Pose initial;          // for base and assembled parts: where they are
-  Pose target;           // the assembled pose (T_t); equals initial when fixed
+  double mass = 0.0;                         // kg: given, or density * volume
+  double density = 0.0;                      // kg/m^3: given, or mass / volume
+  double friction = 0.0;                     // Coulomb coefficient, dimensionless
+  Pose initial;  // for base and assembled parts: where they are
+  Pose target;   // the assembled pose (T_t); equals initial when fixed
   // Where the operator's hand applies the assembly force, part frame, m
   // (default: the centroid).
   Eigen::Vector3d grasp = Eigen::Vector3d::Zero();

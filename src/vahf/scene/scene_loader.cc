@@ -17,9 +17,9 @@ namespace vahf::scene {
 namespace {
 
 // The bounds of a scene's numbers: finite bounds the code can honour
-// (docs/scene-format.md, "Scene": the bounds). A workcell spans metres; 100 m holds any of them, and keeps the
-// operator's shoulder offsets (centimetres) far above the rounding of a
-// coordinate (2.2e-16 * 100 m = 2e-14 m).
+// (docs/scene-format.md, "Scene": the bounds). A workcell spans metres; 100 m holds any
+// of them, and keeps the operator's shoulder offsets (centimetres) far above the rounding
+// of a coordinate (2.2e-16 * 100 m = 2e-14 m).
 constexpr double kMaxCoordinate = 100.0;  // m, every position
 // Gravity up to 10 g: the Earth's 9.81 m/s^2 (ISO 80000-3), the Moon's, or none.
 constexpr double kMaxGravity = 100.0;  // m/s^2, per component

@@ -8,28 +8,32 @@
 
 namespace vahf::sim::internal {
 
-std::optional<Decision> Decide(TrialContext& c, double time, const contact::RigidMotion& m) {
+std::optional<Decision> Decide(TrialContext& c, double time,
+                               const contact::RigidMotion& m) {
   const TrialModel& model = c.model;
   const auto& p = c.params();
   const std::int64_t i = std::llround(time / p.simulation.decision_interval);
   if (i <= c.last_decision) return std::nullopt;  // already decided at this instant
   c.last_decision = i;
   const Vector3d T = m.pose.translation();
-  if (std::optional<Ending> bad = CheckState(m, model.part->mass_properties.bounding_radius,
-                                             p.simulation, "decision", i, time)) {
+  if (std::optional<Ending> bad =
+          CheckState(m, model.part->mass_properties.bounding_radius, p.simulation,
+                     "decision", i, time)) {
     c.End(std::move(*bad));
     return std::nullopt;
   }
 
   // Fatigue: Eq. 4 over the last interval's travel with the force held then, Eq. 6.
   if (i > 0)
-    c.work += human::WorkEq4(c.last_force, human::TravelOf(T - c.last_position), p.fatigue.k);
+    c.work +=
+        human::WorkEq4(c.last_force, human::TravelOf(T - c.last_position), p.fatigue.k);
   c.last_position = T;
   const double psi = human::FatigueCoefficient(c.work, p.fatigue.a_max);
 
   // Human factors at the part's centre of mass.
   const Vector3d centre = m.pose * model.part_com;
-  const human::FactorValues f = c.FactorsAt(m, centre, c.MotionDirection(centre, T, i == 0));
+  const human::FactorValues f =
+      c.FactorsAt(m, centre, c.MotionDirection(centre, T, i == 0));
   c.last_centre = centre;
 
   // Contact now: for the jam rule and the trace (the force law reads the
@@ -51,7 +55,8 @@ std::optional<Decision> Decide(TrialContext& c, double time, const contact::Rigi
   facts.distance = model.DistanceToTarget(m);
   c.progress.Observe(i == 0, facts.time, facts.distance, facts.in_contact,
                      p.simulation.jam_progress);
-  if (std::optional<Ending> end = CheckOperator(facts, p.fatigue, p.simulation, c.progress))
+  if (std::optional<Ending> end =
+          CheckOperator(facts, p.fatigue, p.simulation, c.progress))
     c.End(std::move(*end));
 
   // Eq. 5 and the held orientation, keyed by {seed, trial} and decision i.

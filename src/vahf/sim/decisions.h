@@ -16,7 +16,8 @@ namespace vahf::sim::internal {
 // The decision at `time` (a decision instant) for the part at motion m, to be
 // held until the next; nothing when this instant was decided already. May end
 // the trial (c.ended): the decision then holds the part's own pose.
-std::optional<Decision> Decide(TrialContext& c, double time, const contact::RigidMotion& m);
+std::optional<Decision> Decide(TrialContext& c, double time,
+                               const contact::RigidMotion& m);
 
 // The row at the instant the trial ended: where the part is, its factors (f
 // from the travel since the last decision), and A with that last stretch of

@@ -14,8 +14,9 @@ std::optional<Ending> CheckState(const contact::RigidMotion& m, double bounding_
   const Eigen::Vector3d T = m.pose.translation();
   if (!T.allFinite() || !m.velocity.allFinite() || !m.angular_velocity.allFinite() ||
       !m.pose.linear().allFinite()) {
-    return Ending{Status::kNumericalFailure,
-                  fmt::format("non-finite state at {} {} (t = {} s)", where, decision, time)};
+    return Ending{
+        Status::kNumericalFailure,
+        fmt::format("non-finite state at {} {} (t = {} s)", where, decision, time)};
   }
   // The fastest point of the part's bounding sphere, a bound on any point's speed.
   const double speed = m.velocity.norm() + m.angular_velocity.norm() * bounding_radius;
@@ -25,7 +26,8 @@ std::optional<Ending> CheckState(const contact::RigidMotion& m, double bounding_
         fmt::format("diverged: a point of the part moves at up to {:.6g} m/s > "
                     "divergence_speed {} m/s at {} {} (t = {} s, position {:.6g} "
                     "{:.6g} {:.6g} m)",
-                    speed, sim.divergence_speed, where, decision, time, T.x(), T.y(), T.z())};
+                    speed, sim.divergence_speed, where, decision, time, T.x(), T.y(),
+                    T.z())};
   }
   return std::nullopt;
 }
@@ -53,11 +55,11 @@ std::optional<Ending> CheckOperator(const DecisionFacts& facts,
                               facts.shoulder_distance, facts.reach_limit, facts.time)};
   }
   if (facts.in_contact && facts.time - progress.last_progress_time() >= sim.jam_time) {
-    return Ending{Status::kJammed,
-                  fmt::format("in contact without {} m of progress since t = {} s; "
-                              "{:.6f} m from the target",
-                              sim.jam_progress, progress.last_progress_time(),
-                              facts.distance)};
+    return Ending{
+        Status::kJammed,
+        fmt::format("in contact without {} m of progress since t = {} s; "
+                    "{:.6f} m from the target",
+                    sim.jam_progress, progress.last_progress_time(), facts.distance)};
   }
   return std::nullopt;
 }

@@ -52,7 +52,7 @@ struct DecisionFacts {
   double shoulder_distance = 0;  // m
   double reach_limit = 0;        // D3, m
   bool in_contact = false;
-  double distance = 0;           // from the part's origin to its target, m
+  double distance = 0;  // from the part's origin to its target, m
 };
 
 // In order of precedence: exhausted (psi <= psi_floor), unreachable (beyond

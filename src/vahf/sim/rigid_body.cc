@@ -26,9 +26,7 @@ contact::RigidMotion MotionOf(const BodyState& y) {
   return m;
 }
 
-void NormaliseQuaternion(BodyState* y) {
-  y->segment<4>(3).normalize();
-}
+void NormaliseQuaternion(BodyState* y) { y->segment<4>(3).normalize(); }
 
 BodyState Derivative(const TrialModel& model, const BodyState& y, const Loads& loads,
                      const Vector3d& gravity) {
@@ -39,7 +37,8 @@ BodyState Derivative(const TrialModel& model, const BodyState& y, const Loads& l
   const Matrix3d I = R * model.inertia_body * R.transpose();
   const Vector3d tau_c = loads.torque - c.cross(loads.force);
   const Vector3d alpha = I.ldlt().solve(tau_c - w.cross(I * w));
-  const Vector3d a = loads.force / model.mass + gravity - alpha.cross(c) - w.cross(w.cross(c));
+  const Vector3d a =
+      loads.force / model.mass + gravity - alpha.cross(c) - w.cross(w.cross(c));
   // qdot = 1/2 [0, w] (x) q for a world-frame w.
   const Quaterniond raw(y[3], y[4], y[5], y[6]);
   const Quaterniond qdot = Quaterniond(0, w.x(), w.y(), w.z()) * raw;

@@ -29,8 +29,9 @@ Eigen::Matrix<double, 3, 4> RotationOfQuaternion(const Eigen::Vector4d& q) {
 //   a = F / m + g - alpha x c - w x (w x c)
 //   qdot = 1/2 [0, w] (x) q:  d/dq = 1/2 [[0, -w^T], [w, [w]x]],
 //                             d/dw = 1/2 [-u^T; s I - [u]x] (raw q = (s, u))
-BodyJacobian DerivativeJacobian(const TrialModel& model, const BodyState& y, const Loads& loads,
-                                const LoadJacobian& load_jacobian, const Vector3d&) {
+BodyJacobian DerivativeJacobian(const TrialModel& model, const BodyState& y,
+                                const Loads& loads, const LoadJacobian& load_jacobian,
+                                const Vector3d&) {
   const Matrix3d Id = Matrix3d::Identity();
   const Eigen::Quaterniond q = Eigen::Quaterniond(y[3], y[4], y[5], y[6]).normalized();
   const Matrix3d R = q.toRotationMatrix();

@@ -16,8 +16,8 @@ using BodyJacobian = Eigen::Matrix<double, kBodyStateSize, kBodyStateSize>;
 
 // d Derivative / dy at y, with `loads` = the loads at MotionOf(y) and
 // `load_jacobian` their derivative w.r.t. the motion (TrialModel::LoadsAt).
-BodyJacobian DerivativeJacobian(const TrialModel& model, const BodyState& y, const Loads& loads,
-                                const LoadJacobian& load_jacobian,
+BodyJacobian DerivativeJacobian(const TrialModel& model, const BodyState& y,
+                                const Loads& loads, const LoadJacobian& load_jacobian,
                                 const Eigen::Vector3d& gravity);
 
 // d dtheta / dq: the world rotation vector of a change dq of the state's raw

@@ -9,9 +9,9 @@ namespace vahf::sim::internal {
 bool StepChecks::Accepted(double t, const contact::RigidMotion& m, double depth, double h,
                           std::int64_t retries,
                           const std::function<std::string()>& retry_detail) {
-  if (std::optional<Ending> bad =
-          CheckState(m, c_.model.part->mass_properties.bounding_radius,
-                     c_.params().simulation, "a step after decision", c_.last_decision, t)) {
+  if (std::optional<Ending> bad = CheckState(
+          m, c_.model.part->mass_properties.bounding_radius, c_.params().simulation,
+          "a step after decision", c_.last_decision, t)) {
     if (!IsFinite(m)) c_.warnings.Note(WarningKind::kNonFiniteState, t, bad->detail);
     c_.End(std::move(*bad));
     return false;
@@ -28,11 +28,12 @@ bool StepChecks::Accepted(double t, const contact::RigidMotion& m, double depth,
   const std::uint64_t tests = c_.contact_counters.Tests();
   const double test_budget = c_.params().simulation.max_contact_tests;
   if (static_cast<double>(tests) >= test_budget) {
-    c_.End({Status::kStepBudget,
-            fmt::format("{} contact tests (simulation/max_contact_tests {:g}) at t = {} s "
-                        "after {} accepted steps, {:.0f} tests a step on average",
-                        tests, test_budget, t, accepted_,
-                        static_cast<double>(tests) / static_cast<double>(accepted_))});
+    c_.End(
+        {Status::kStepBudget,
+         fmt::format("{} contact tests (simulation/max_contact_tests {:g}) at t = {} s "
+                     "after {} accepted steps, {:.0f} tests a step on average",
+                     tests, test_budget, t, accepted_,
+                     static_cast<double>(tests) / static_cast<double>(accepted_))});
     return false;
   }
   const double floor = c_.params().simulation.step_floor;
@@ -52,10 +53,11 @@ void StepChecks::Depth(double depth, double t) {
   const TrialModel& model = c_.model;
   if (model.penetration_bound > 0 && depth > model.penetration_bound)
     c_.warnings.Count(WarningKind::kPenetrationBound, t, [&] {
-      return fmt::format("depth {:.3g} um > bound {:.3g} um ({} of the {:.3g} um radial "
-                         "clearance)",
-                         depth * 1e6, model.penetration_bound * 1e6,
-                         c_.params().contact.penetration_fraction, model.clearance * 1e6);
+      return fmt::format(
+          "depth {:.3g} um > bound {:.3g} um ({} of the {:.3g} um radial "
+          "clearance)",
+          depth * 1e6, model.penetration_bound * 1e6,
+          c_.params().contact.penetration_fraction, model.clearance * 1e6);
     });
 }
 

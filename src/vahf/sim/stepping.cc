@@ -1,11 +1,11 @@
 #include "vahf/sim/stepping.h"
 
-#include "vahf/sim/step_checks.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdint>
+
+#include "vahf/sim/step_checks.h"
 
 namespace vahf::sim::internal {
 namespace {
@@ -14,9 +14,9 @@ namespace {
 // through Acceleration (so the force element's loads are in its cache).
 bool Accepted(SimbodyTrial& t, StepChecks& checks, const SimTK::Integrator& integ,
               const SimTK::State& s) {
-  const std::int64_t retries = static_cast<std::int64_t>(integ.getNumConvergenceTestFailures()) +
-                               integ.getNumRealizationFailures() +
-                               integ.getNumProjectionFailures();
+  const std::int64_t retries =
+      static_cast<std::int64_t>(integ.getNumConvergenceTestFailures()) +
+      integ.getNumRealizationFailures() + integ.getNumProjectionFailures();
   return checks.Accepted(s.getTime(), t.MotionOf(s), t.LoadsOf(s).contact.max_depth,
                          integ.getPreviousStepSizeTaken(), retries, [&] {
                            return fmt::format(
@@ -59,8 +59,10 @@ class Sampler {
         const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
         SimTK::State x = now;
         x.setTime(t);
-        x.updQ() = h00 * q0_ + (h10 * h) * qdot0_ + h01 * now.getQ() + (h11 * h) * now.getQDot();
-        x.updU() = h00 * u0_ + (h10 * h) * udot0_ + h01 * now.getU() + (h11 * h) * now.getUDot();
+        x.updQ() =
+            h00 * q0_ + (h10 * h) * qdot0_ + h01 * now.getQ() + (h11 * h) * now.getQDot();
+        x.updU() =
+            h00 * u0_ + (h10 * h) * udot0_ + h01 * now.getU() + (h11 * h) * now.getUDot();
         t_.system().realize(x, SimTK::Stage::Position);
         t_.system().project(x, 1e-10);  // the quaternion back to unit length
         t_.context().samples.push_back(SampleRow(t_, x));
@@ -109,11 +111,13 @@ double Integrate(SimbodyTrial& t, SimTK::Integrator& integ, double sample_interv
   sampler.Advanced(integ.getState(), limit);
   SimTK::Array_<SimTK::EventId> scheduled;
   double last_event_time = -SimTK::Infinity;
-  const auto handle = [&](SimTK::Event::Cause cause, const SimTK::Array_<SimTK::EventId>& ids) {
+  const auto handle = [&](SimTK::Event::Cause cause,
+                          const SimTK::Array_<SimTK::EventId>& ids) {
     SimTK::HandleEventsResults results;
     system.handleEvents(integ.updAdvancedState(), cause, ids, handle_options, results);
-    integ.reinitialize(results.getLowestModifiedStage(),
-                       results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate);
+    integ.reinitialize(
+        results.getLowestModifiedStage(),
+        results.getExitStatus() == SimTK::HandleEventsResults::ShouldTerminate);
   };
   while (!integ.isSimulationOver() && !c.ended) {
     const double now = integ.getTime();
@@ -141,7 +145,7 @@ double Integrate(SimbodyTrial& t, SimTK::Integrator& integ, double sample_interv
       case Integrator::EndOfSimulation:
         handle(SimTK::Event::Cause::Termination, {});
         break;
-      default:  // TimeHasAdvanced, ReachedReportTime, StartOfContinuousInterval,
+      default:     // TimeHasAdvanced, ReachedReportTime, StartOfContinuousInterval,
         continue;  // ReachedStepLimit: step on
     }
     checks.Restarted();

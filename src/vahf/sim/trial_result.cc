@@ -6,13 +6,20 @@ namespace vahf::sim {
 
 const char* StatusName(Status status) {
   switch (status) {
-    case Status::kCompleted: return "completed";
-    case Status::kTimeout: return "timeout";
-    case Status::kExhausted: return "exhausted";
-    case Status::kUnreachable: return "unreachable";
-    case Status::kJammed: return "jammed";
-    case Status::kNumericalFailure: return "numerical_failure";
-    case Status::kStepBudget: return "step_budget";
+    case Status::kCompleted:
+      return "completed";
+    case Status::kTimeout:
+      return "timeout";
+    case Status::kExhausted:
+      return "exhausted";
+    case Status::kUnreachable:
+      return "unreachable";
+    case Status::kJammed:
+      return "jammed";
+    case Status::kNumericalFailure:
+      return "numerical_failure";
+    case Status::kStepBudget:
+      return "step_budget";
   }
   return "?";
 }
@@ -27,17 +34,19 @@ std::string TrialResult::BriefReport() const {
   out += fmt::format("part: {}, seed {}, trial {}\n", part, key.seed, key.trial);
   if (status == Status::kCompleted)
     out += fmt::format("completion time: {:.6f} s\n", completion_time);
-  out += fmt::format("simulated: {:.6f} s in {:.4f} s wall, {:.4f} s CPU ({:.1f} x real time)\n",
-                     end_time, wall_seconds, cpu_seconds,
-                     cpu_seconds > 0 ? end_time / cpu_seconds : 0.0);
+  out += fmt::format(
+      "simulated: {:.6f} s in {:.4f} s wall, {:.4f} s CPU ({:.1f} x real time)\n",
+      end_time, wall_seconds, cpu_seconds,
+      cpu_seconds > 0 ? end_time / cpu_seconds : 0.0);
   out += fmt::format(
       "integrator: {} at accuracy {:g}: {} steps taken, {} attempted, {} error-test "
       "failures, {} realizations\n",
       integrator, accuracy, c.steps_taken, c.steps_attempted, c.error_test_failures,
       c.realizations);
   if (c.jacobian_evaluations > 0)
-    out += fmt::format("linear solver: {} Jacobian evaluations, {} nonlinear convergence failures\n",
-                       c.jacobian_evaluations, c.convergence_failures);
+    out += fmt::format(
+        "linear solver: {} Jacobian evaluations, {} nonlinear convergence failures\n",
+        c.jacobian_evaluations, c.convergence_failures);
   out += fmt::format(
       "contact: {} shell points, {} evaluations, {} point queries, {} tests, {} clusters "
       "and {} pairs skipped by the broad phase\n",
@@ -45,14 +54,15 @@ std::string TrialResult::BriefReport() const {
       c.clusters_skipped, c.broad_phase_skips);
   out += fmt::format("decisions: {}, rays cast: {}\n", c.decisions, c.rays_cast);
   if (penetration_bound > 0)
-    out += fmt::format("penetration: deepest {:.3g} um, bound {:.3g} um ({:.3g} um radial clearance)\n",
-                       max_penetration * 1e6, penetration_bound * 1e6, clearance * 1e6);
+    out += fmt::format(
+        "penetration: deepest {:.3g} um, bound {:.3g} um ({:.3g} um radial clearance)\n",
+        max_penetration * 1e6, penetration_bound * 1e6, clearance * 1e6);
   else
     out += fmt::format("penetration: deepest {:.3g} um (no radial fit to bound it)\n",
                        max_penetration * 1e6);
   if (line_stiffness > 0)
-    out += fmt::format("contact stiffness: {:.3g} Pa/m (faces), {:.3g} Pa (edges)\n", stiffness,
-                       line_stiffness);
+    out += fmt::format("contact stiffness: {:.3g} Pa/m (faces), {:.3g} Pa (edges)\n",
+                       stiffness, line_stiffness);
   else if (stiffness > 0)
     out += fmt::format("contact stiffness: {:.3g} Pa/m (faces)\n", stiffness);
   out += fmt::format("warnings: {}\n", warnings.Summary());

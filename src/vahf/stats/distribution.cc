@@ -103,7 +103,8 @@ double KsEquivalentShift(const std::vector<double>& xs, double distance) {
   std::sort(s.begin(), s.end());
   const std::size_t n = s.size();
   // k = ceil(n D), with room for the rounding of a distance i/n - j/n.
-  const auto k = static_cast<std::size_t>(std::ceil(distance * static_cast<double>(n) - 1e-9));
+  const auto k =
+      static_cast<std::size_t>(std::ceil(distance * static_cast<double>(n) - 1e-9));
   if (k <= 1) return 0.0;
   double shift = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i + k <= n; ++i) shift = std::min(shift, s[i + k - 1] - s[i]);

@@ -17,8 +17,8 @@ namespace vahf::stats {
 double Quantile(const std::vector<double>& xs, double p);
 
 struct KolmogorovSmirnov {
-  double distance = 0;   // D = sup_x |F_a(x) - F_b(x)| of the empirical CDFs
-  double p_value = 1;    // P(D' >= D) for independent samples of one distribution
+  double distance = 0;     // D = sup_x |F_a(x) - F_b(x)| of the empirical CDFs
+  double p_value = 1;      // P(D' >= D) for independent samples of one distribution
   double effective_n = 0;  // n_a n_b / (n_a + n_b)
 };
 

@@ -19,8 +19,8 @@ namespace vahf::stats {
 struct TostResult {
   WelchResult welch;  // the difference, its standard error and 95 % interval
   double margin = 0;
-  double p = 1;             // max of the two one-sided p-values
-  Interval ci90;            // the (1 - 2 alpha) = 90 % interval of the difference
+  double p = 1;   // max of the two one-sided p-values
+  Interval ci90;  // the (1 - 2 alpha) = 90 % interval of the difference
 };
 TostResult EquivalenceTest(const std::vector<double>& a, const std::vector<double>& b,
                            double margin);

@@ -14,8 +14,8 @@ struct VisibilityParams {
   // "constant": V = `value` throughout (no tessellation, no rays);
   // "off": the visual factor is switched off, V = 1.
   std::string mode = "raycast";
-  double value = 1.0;          // V when mode is "constant"
-  int grid = 128;              // N of the N x N ray grid
+  double value = 1.0;                    // V when mode is "constant"
+  int grid = 128;                        // N of the N x N ray grid
   double tessellation_tolerance = 1e-4;  // chord error of part meshes, m
 };
 
