@@ -1,4 +1,4 @@
-// CPU per trial over many seeds (issue 11's measure): the peg and each of the
+// CPU per trial over many seeds (docs/performance.md): the peg and each of the
 // hydraulic cylinder's three parts, per integrator at accuracy 1e-4 and at the
 // cylinder scene's own setting (and the peg and the piston rod with the
 // contact that resolves their fits), trials
