@@ -85,6 +85,33 @@ TEST(Calibration, RecoversKappaFromASyntheticLabWithinItsInterval) {
   EXPECT_LT(k.ci.upper, 400.0) << r.ceres_brief;
   // One target, one parameter: the fit matches the lab's mean time.
   EXPECT_LT(std::abs(r.targets[0].residual), 0.1);
+  EXPECT_FALSE(k.has_profile);  // Levenberg-Marquardt: Ceres' interval only
+}
+
+// The golden_section solver's stage also gives the profile interval
+// (ProfileBounds on the stage's own cost): on the same lab it holds the
+// estimate and kappa_true, closes on both sides well inside the bounds, and
+// leaves out the start, 400 N/m.
+TEST(Calibration, GoldenSectionStageGivesAProfileIntervalHoldingTheTruth) {
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const data::LabDataset lab = GenerateSyntheticLab(BlockLab(101), Quiet());
+  CalibrationSpec spec = KappaFromTime();
+  spec.stages[0].solver = "golden_section";
+  spec.tolerance = 0.01;
+  spec.max_iterations = 30;
+  const CalibrationResult r = Fit(scene, lab, spec, "test", 7, 24, Quiet());
+  const FittedParameter& k = r.parameters[0];
+  ASSERT_TRUE(k.has_profile) << r.search_log;
+  EXPECT_FALSE(k.profile_open_lower) << r.search_log;
+  EXPECT_FALSE(k.profile_open_upper) << r.search_log;
+  EXPECT_LE(k.profile.lower, k.estimate);
+  EXPECT_GE(k.profile.upper, k.estimate);
+  EXPECT_LE(k.profile.lower, kKappaTrue) << r.search_log;
+  EXPECT_GE(k.profile.upper, kKappaTrue) << r.search_log;
+  EXPECT_GT(k.profile.lower, 50.0);
+  EXPECT_LT(k.profile.upper, 400.0) << r.search_log;
+  EXPECT_NE(r.search_log.find("profile: cost"), std::string::npos);
 }
 
 TEST(Calibration, SameInputsGiveTheSameBitsOnAnyThreadCount) {
