@@ -2,6 +2,9 @@
 // which runs the experiments it lists into one output directory.
 #include <fmt/format.h>
 
+#include <set>
+#include <string>
+
 #include "vahf/kinds/kind_functions.h"
 #include "vahf/kinds/run_support.h"
 #include "vahf/scene/json_reader.h"
@@ -57,8 +60,10 @@ void ParsePaper(const scene::JsonNode& root, const std::string& path,
 
 std::string CheckPaper(const scene::ExperimentFile& file) {
   std::string out;
+  std::set<std::string> checked;  // a file listed again is the same experiment
   for (const scene::ExperimentFile& x : file.experiments) {
-    FindKind(x.kind).check(x);  // every experiment valid before the first trial of any
+    // Every experiment valid before the first trial of any; each file once.
+    if (checked.insert(x.file).second) FindKind(x.kind).check(x);
     out += fmt::format("  {} ({}): kind {}, {} cycles per condition, scene {}: valid\n",
                        x.name, x.file, x.kind, x.trials, x.scene_path);
   }
