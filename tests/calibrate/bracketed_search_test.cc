@@ -10,6 +10,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "vahf/core/error.h"
+
 namespace vahf::calibrate {
 namespace {
 
@@ -99,7 +101,7 @@ TEST(BracketedSearch, ANonFiniteCostCountsAsTheWorst) {
 
 TEST(BracketedSearch, RefusesAStartOutsideTheBounds) {
   EXPECT_THROW(MinimizeBracketed([](double) { return 0.0; }, 1, 2, 3, 0.01, 5),
-               std::invalid_argument);
+               ComputationError);
 }
 
 // The profile interval (ProfileBounds): of a whitened quadratic cost, 1/2
@@ -147,8 +149,7 @@ TEST(ProfileInterval, IsOpenWhereTheCostStaysWithinTheRiseToABound) {
   const auto broken = [](double x) { return x < 20 ? std::nan("") : 0.0; };
   const ProfileInterval b = ProfileBounds(broken, 1, 400, 40, 0, 1.92, 0.05, 0.01);
   EXPECT_NEAR(b.lower, 20, 0.3) << b.log;
-  EXPECT_THROW(ProfileBounds(cost, 1, 400, 500, 0, 1.92, 0.05, 0.01),
-               std::invalid_argument);
+  EXPECT_THROW(ProfileBounds(cost, 1, 400, 500, 0, 1.92, 0.05, 0.01), ComputationError);
 }
 
 }  // namespace

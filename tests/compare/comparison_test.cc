@@ -70,6 +70,23 @@ TEST(CompareSamples, TooFewTimesAreUntestableAndSaySo) {
   EXPECT_NE(q.verdict.find("1 lab"), std::string::npos) << q.verdict;
 }
 
+// Times that do not vary on either side leave no t statistic: untestable, and
+// it says why. Only that refusal is a verdict; a margin outside the test's
+// domain is the caller's to fix, and reaches it.
+TEST(CompareSamples, ZeroVarianceOnBothSidesIsUntestable) {
+  const QuantityComparison q =
+      CompareSamples(TimeTarget(), 0.05, Times({1.0, 1.0, 1.0}), Times({1.2, 1.2}));
+  EXPECT_FALSE(q.testable);
+  EXPECT_EQ(q.verdict.rfind("untestable: both samples have zero variance", 0), 0u)
+      << q.verdict;
+  try {
+    CompareSamples(TimeTarget(), 0.0, Times({1.0, 1.0, 1.0}), Times({1.2, 1.2}));
+    ADD_FAILURE() << "a zero margin was taken for zero variance";
+  } catch (const ComputationError& e) {
+    EXPECT_EQ(e.reason(), ComputationError::Reason::kOutOfDomain) << e.what();
+  }
+}
+
 TEST(CompareSamples, RatesAgreeOnlyWhenTheDataResolveTheMargin) {
   calibrate::Target t = TimeTarget();
   t.spec.quantity = "success_rate";

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "vahf/core/error.h"
 #include "vahf/rng/stream.h"
 
 namespace vahf::experiment {
@@ -164,7 +165,8 @@ TEST_F(RunnerTest, ThreadsBelowOneIsAnError) {
     try {
       RunIndexed<int>(5, Quiet(threads), fn);
       ADD_FAILURE() << "no exception for " << threads;
-    } catch (const std::invalid_argument& e) {
+    } catch (const ComputationError& e) {
+      EXPECT_EQ(e.reason(), ComputationError::Reason::kOutOfDomain);
       EXPECT_EQ(std::string(e.what()),
                 "runner: threads = " + std::to_string(threads) + ": must be at least 1");
     }

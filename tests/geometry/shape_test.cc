@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <stdexcept>
 
 namespace vahf::geometry {
 namespace {
@@ -22,7 +21,7 @@ void ExpectRejected(const std::vector<ProfilePoint>& points,
   try {
     MakeRevolvedProfile(points);
     ADD_FAILURE() << "accepted a profile that should fail with '" << fragment << "'";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ProfileError& e) {
     EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
   }
 }

@@ -7,7 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <stdexcept>
+
+#include "refusal.h"
 
 namespace vahf::stats {
 namespace {
@@ -36,10 +37,11 @@ TEST(PairedTTest, RemovesWhatThePairsShare) {
 }
 
 TEST(PairedTTest, RefusesWhatIsUndefined) {
-  EXPECT_THROW(PairedTTest({1, 2}, {1}), std::invalid_argument);           // unpaired
-  EXPECT_THROW(PairedTTest({1}, {0}), std::invalid_argument);              // one pair
-  EXPECT_THROW(PairedTTest({2, 3, 4}, {1, 2, 3}), std::invalid_argument);  // no spread
-  EXPECT_THROW(PairedTTest({NAN, 3}, {1, 2}), std::invalid_argument);
+  // Unpaired; one pair; no spread in the differences.
+  EXPECT_EQ(RefusalOf([] { PairedTTest({1, 2}, {1}); }).reason, "out of domain");
+  EXPECT_EQ(RefusalOf([] { PairedTTest({1}, {0}); }).reason, "too few values");
+  EXPECT_EQ(RefusalOf([] { PairedTTest({2, 3, 4}, {1, 2, 3}); }).reason, "zero variance");
+  EXPECT_EQ(RefusalOf([] { PairedTTest({NAN, 3}, {1, 2}); }).reason, "out of domain");
 }
 
 TEST(McNemarRateFellP, IsTheBinomialTailOfTheDiscordantPairs) {
@@ -48,7 +50,7 @@ TEST(McNemarRateFellP, IsTheBinomialTailOfTheDiscordantPairs) {
   EXPECT_NEAR(McNemarRateFellP(3, 1), 5.0 / 16.0, 1e-14);  // P(X >= 3 | n = 4)
   EXPECT_DOUBLE_EQ(McNemarRateFellP(0, 4), 1.0);
   EXPECT_DOUBLE_EQ(McNemarRateFellP(0, 0), 1.0);  // nothing discordant
-  EXPECT_THROW(McNemarRateFellP(-1, 2), std::invalid_argument);
+  EXPECT_EQ(RefusalOf([] { McNemarRateFellP(-1, 2); }).reason, "out of domain");
 }
 
 }  // namespace

@@ -5,7 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <stdexcept>
+
+#include "refusal.h"
 
 namespace vahf::stats {
 namespace {
@@ -35,15 +36,12 @@ TEST(FitLine, PointsOnALineHaveNoSpread) {
 }
 
 TEST(FitLine, DegenerateInputsThrow) {
-  EXPECT_THROW(FitLine({1, 2}, {1, 2}), std::invalid_argument);
-  EXPECT_THROW(FitLine({1, 2, 3}, {1, 2}), std::invalid_argument);
-  try {
-    FitLine({4, 4, 4}, {1, 2, 3});
-    ADD_FAILURE();
-  } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(),
-                 "FitLine: every x = 4: the slope is undefined when x does not vary");
-  }
+  EXPECT_EQ(RefusalOf([] { FitLine({1, 2}, {1, 2}); }).reason, "too few values");
+  EXPECT_EQ(RefusalOf([] { FitLine({1, 2, 3}, {1, 2}); }).reason, "out of domain");
+  const Refusal r = RefusalOf([] { FitLine({4, 4, 4}, {1, 2, 3}); });
+  EXPECT_EQ(r.reason, "zero variance");
+  EXPECT_EQ(r.message,
+            "FitLine: every x = 4: the slope is undefined when x does not vary");
 }
 
 }  // namespace

@@ -7,20 +7,18 @@
 
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 #include <string>
+
+#include "refusal.h"
 
 namespace vahf::stats {
 namespace {
 
+// "reason: message" of what f refuses with.
 template <class F>
-std::string MessageOf(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(no std::invalid_argument)";
+std::string RefusalText(F&& f) {
+  const Refusal r = RefusalOf(f);
+  return r.reason + ": " + r.message;
 }
 
 TEST(Summary, HandComputedSample) {
@@ -82,22 +80,23 @@ TEST(Summary, ZeroVarianceGivesAPointInterval) {
 }
 
 TEST(Summary, UndefinedValuesThrowWithTheirReason) {
-  EXPECT_EQ(MessageOf([] { Mean({}); }), "Mean: xs has 0 values: needs at least 1");
-  EXPECT_EQ(MessageOf([] { SampleStandardDeviation({1.0}); }),
-            "SampleStandardDeviation: xs has 1 values: needs at least 2");
-  EXPECT_EQ(MessageOf([] { MeanConfidenceInterval({1.0}); }),
-            "SampleStandardDeviation: xs has 1 values: needs at least 2");
+  EXPECT_EQ(RefusalText([] { Mean({}); }),
+            "too few values: Mean: xs has 0 values: needs at least 1");
+  EXPECT_EQ(RefusalText([] { SampleStandardDeviation({1.0}); }),
+            "too few values: SampleStandardDeviation: xs has 1 values: needs at least 2");
+  EXPECT_EQ(RefusalText([] { MeanConfidenceInterval({1.0}); }),
+            "too few values: SampleStandardDeviation: xs has 1 values: needs at least 2");
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(MessageOf([&] {
+  EXPECT_EQ(RefusalText([&] {
               Summarize({1.0, nan});
             }),
-            "Summarize: xs[1] = nan: must be finite");
-  EXPECT_EQ(MessageOf([] {
+            "out of domain: Summarize: xs[1] = nan: must be finite");
+  EXPECT_EQ(RefusalText([] {
               MeanConfidenceInterval({1.0, 2.0}, 1.0);
             }),
-            "MeanConfidenceInterval: level = 1: must lie in (0, 1)");
-  EXPECT_EQ(MessageOf([] { TwoSidedStudentT(0, 0.95); }),
-            "TwoSidedStudentT: df = 0: must be finite and > 0");
+            "out of domain: MeanConfidenceInterval: level = 1: must lie in (0, 1)");
+  EXPECT_EQ(RefusalText([] { TwoSidedStudentT(0, 0.95); }),
+            "out of domain: TwoSidedStudentT: df = 0: must be finite and > 0");
 }
 
 }  // namespace

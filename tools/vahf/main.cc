@@ -1,10 +1,10 @@
 // The vahf command: validates scene, experiment and lab dataset files, checks
 // the paper's reference values, and (as the harness grows) runs trials and
 // experiments.
-// Exit status: 0 success; 1 a failure of the computation, stated on stderr
-// (for `vahf trial`: the trial ended other than completed, its summary still
-// printed); 2 bad input (a file, a value or an option), in one line; 130
-// interrupted.
+// Exit status, by the tiers of vahf/core/error.h: 0 success; 1 a failure of
+// the computation, stated on stderr (for `vahf trial`: the trial ended other
+// than completed, its summary still printed); 2 bad input (a file, a value or
+// an option), in one line; 130 interrupted.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -176,7 +176,7 @@ int Trial(const TrialArgs& a) {
   std::replace(detail.begin(), detail.end(), '\n', ' ');  // Simbody's texts span lines
   std::fprintf(stderr, "vahf: trial ended %s: %s\n", vahf::sim::StatusName(r.status),
                detail.c_str());
-  return 1;
+  return vahf::kExitComputationFailure;
 }
 
 struct RunArgs {
@@ -395,10 +395,15 @@ int main(int argc, char** argv) {
     return vahf::kExitInputError;
   } catch (const vahf::experiment::Interrupted& e) {
     std::fprintf(stderr, "vahf: interrupted: %s; no output was written\n", e.what());
-    return 130;
-  } catch (const std::exception& e) {
+    return vahf::kExitInterrupted;
+  } catch (const vahf::ComputationError& e) {
     std::fprintf(stderr, "vahf: error: %s\n", e.what());
-    return 1;
+    return vahf::kExitComputationFailure;
+  } catch (const std::exception& e) {
+    // Not one of ours: a library's exception or std::bad_alloc. The computation
+    // failed all the same.
+    std::fprintf(stderr, "vahf: error: %s\n", e.what());
+    return vahf::kExitComputationFailure;
   }
-  return 1;
+  return vahf::kExitComputationFailure;
 }

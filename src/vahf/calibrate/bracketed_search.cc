@@ -10,7 +10,8 @@
 #include <iterator>
 #include <map>
 #include <memory>
-#include <stdexcept>
+
+#include "vahf/core/error.h"
 
 namespace vahf::calibrate {
 namespace {
@@ -45,7 +46,8 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
                                   int max_iterations,
                                   const std::optional<std::array<double, 3>>& hint) {
   if (!(lower < upper && lower <= start && start <= upper && tolerance > 0))
-    throw std::invalid_argument(
+    throw ComputationError(
+        ComputationError::Reason::kOutOfDomain,
         "MinimizeBracketed: needs lower <= start <= upper, tolerance > 0");
   const Scale scale{lower > 0};
   const double lo = scale.ToU(lower), hi = scale.ToU(upper);
@@ -201,7 +203,8 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
   if (gsl_min_fminimizer_set_with_values(s.get(), &fn, b.m->first, b.m->second,
                                          b.a->first, b.a->second, b.c->first,
                                          b.c->second) != GSL_SUCCESS)
-    throw std::logic_error("MinimizeBracketed: GSL refused a strict bracket");
+    throw ComputationError(ComputationError::Reason::kRefused,
+                           "MinimizeBracketed: GSL refused a strict bracket");
   auto narrow = [&] {
     return narrow_enough(gsl_min_fminimizer_x_lower(s.get()),
                          gsl_min_fminimizer_x_upper(s.get()),
@@ -231,7 +234,8 @@ ProfileInterval ProfileBounds(const std::function<double(double)>& cost, double 
                               double rise, double first_step, double tolerance) {
   if (!(lower <= estimate && estimate <= upper && rise > 0 && first_step > 0 &&
         tolerance > 0))
-    throw std::invalid_argument(
+    throw ComputationError(
+        ComputationError::Reason::kOutOfDomain,
         "ProfileBounds: needs lower <= estimate <= upper and positive rise, step, "
         "tolerance");
   const Scale scale{lower > 0};

@@ -10,7 +10,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 
 #include "vahf/calibrate/bracketed_search.h"
 #include "vahf/core/error.h"
@@ -134,11 +133,13 @@ std::vector<double> Weights(const std::vector<Target>& targets,
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const double var = LabVariance(targets[i].lab, v[i]) + v[i].variance;
     if (!std::isfinite(v[i].value) || !(std::isfinite(var) && var > 0))
-      throw std::runtime_error(fmt::format(
-          "calibration: the virtual design at {} gives no usable {} ({} samples): "
-          "too few completed trials to weigh this target; widen `trials` or change the "
-          "start",
-          where, targets[i].label, v[i].n));
+      throw ComputationError(
+          ComputationError::Reason::kTooFewValues,
+          fmt::format(
+              "calibration: the virtual design at {} gives no usable {} ({} samples): "
+              "too few completed trials to weigh this target; widen `trials` or change "
+              "the start",
+              where, targets[i].label, v[i].n));
     sigma.push_back(std::sqrt(var));
   }
   return sigma;

@@ -1,8 +1,26 @@
-// Errors a user can cause (bad input files, bad options) and their exit code.
+// The three tiers of what can go wrong, and the vahf command's exit status for
+// each (docs/design.md, "Errors"; docs/style.md):
 //
-// Two tiers: a user's bad input throws vahf::InputError, which the
-// command reports in one line and exits with kExitInputError; a broken internal
-// invariant is a bug and aborts loudly through VAHF_CHECK.
+// 1. Input error: the user's input (a file, a value in it, a command-line
+//    option) breaks a rule. Throw vahf::InputError naming the file, where in
+//    it, the value and the rule; the command prints it on one line and exits
+//    kExitInputError (2). A layer that checks a value without knowing its file
+//    (geometry, tessellation, visibility, a contact model) throws it with an
+//    empty file and its own `where`; the reader that knows the file catches
+//    exactly that class and throws again with the file and JSON pointer.
+// 2. Computation failure: the input is valid, but a computation cannot give a
+//    result (a statistic of too few values or of values that do not vary, an
+//    argument outside a function's domain, a library, program or system call
+//    refusing). Throw vahf::ComputationError with its Reason; the command
+//    prints it and exits kExitComputationFailure (1). A caller that can go on
+//    without the result catches ComputationError and tests reason(), or
+//    catches a subclass (report::PlotError); never a standard exception.
+// 3. Internal check: an invariant the code itself guarantees fails. That is a
+//    bug, not input: VAHF_CHECK aborts with file and line.
+//
+// Not an error: experiment::Interrupted (experiment/interrupt.h) reports a
+// stop the user asked for (Ctrl-C); the command exits kExitInterrupted (130,
+// 128 + SIGINT, as a shell reports a process ended by SIGINT).
 #pragma once
 
 #include <stdexcept>
@@ -12,6 +30,11 @@ namespace vahf {
 
 // Exit status of the vahf command when its input is bad.
 inline constexpr int kExitInputError = 2;
+// Exit status when a computation failed on valid input (and when `vahf trial`'s
+// trial ended other than completed).
+inline constexpr int kExitComputationFailure = 1;
+// Exit status when the user stopped a run.
+inline constexpr int kExitInterrupted = 130;
 
 // One error in a user's input: which file, where in it (a JSON pointer such as
 // "/parts/2/profile/3", or "line 7" for CSV), the offending value, and the rule
@@ -27,6 +50,27 @@ class InputError : public std::runtime_error {
 
  private:
   std::string file_, where_, value_, rule_;
+};
+
+// A computation that cannot give a result on valid input. what() is the
+// message as given: the function, the value and why, e.g. "WelchTTest: a has 1
+// values: needs at least 2".
+class ComputationError : public std::runtime_error {
+ public:
+  enum class Reason {
+    kTooFewValues,  // fewer values than the quantity needs (a mean of none)
+    kZeroVariance,  // the values do not vary: a t statistic or slope is undefined
+    kOutOfDomain,   // an argument outside the function's domain (NaN, p > 1)
+    kRefused,       // a library, program or system call refused or failed
+  };
+
+  ComputationError(Reason reason, const std::string& message)
+      : std::runtime_error(message), reason_(reason) {}
+
+  Reason reason() const { return reason_; }
+
+ private:
+  Reason reason_;
 };
 
 // Aborts with file and line when an internal invariant fails: a bug, not input.

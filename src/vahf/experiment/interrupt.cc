@@ -6,6 +6,8 @@
 #include <cstring>
 #include <system_error>
 
+#include "vahf/core/error.h"
+
 namespace vahf::experiment {
 namespace {
 
@@ -29,7 +31,8 @@ void InstallInterruptHandler() {
   action.sa_flags = SA_RESTART | SA_RESETHAND;
   for (int signal : {SIGINT, SIGTERM}) {
     if (sigaction(signal, &action, nullptr) != 0) {
-      throw std::system_error(errno, std::generic_category(), "sigaction");
+      throw ComputationError(ComputationError::Reason::kRefused,
+                             "sigaction: " + std::generic_category().message(errno));
     }
   }
 }

@@ -8,7 +8,9 @@
 
 namespace vahf::experiment {
 
-// Thrown by the runner when a stop was requested before every trial started.
+// Thrown by the runner when a stop was requested before every trial started. A
+// request the user made, not an error of any tier (core/error.h): the command
+// writes no output and exits kExitInterrupted.
 class Interrupted : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

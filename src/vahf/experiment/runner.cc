@@ -9,9 +9,9 @@
 #include <exception>
 #include <limits>
 #include <mutex>
-#include <stdexcept>
 #include <thread>
 
+#include "vahf/core/error.h"
 #include "vahf/experiment/progress.h"
 
 namespace vahf::experiment::internal {
@@ -67,7 +67,8 @@ void Work(std::size_t n, const std::function<void(std::size_t)>& body, Shared* s
 void RunIndices(std::size_t n, const RunnerOptions& options,
                 const std::function<void(std::size_t)>& body) {
   if (options.threads < 1) {
-    throw std::invalid_argument(
+    throw ComputationError(
+        ComputationError::Reason::kOutOfDomain,
         fmt::format("runner: threads = {}: must be at least 1", options.threads));
   }
   if (n == 0) return;

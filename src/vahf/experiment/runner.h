@@ -40,7 +40,8 @@ void RunIndices(std::size_t n, const RunnerOptions& options,
 // runs to the end, and the exception of the lowest failing index is rethrown
 // once all workers stopped: the same one whatever the thread count. Otherwise,
 // if StopRequested() became true, indices not yet started are skipped, running
-// ones finish, and Interrupted is thrown. threads < 1 is std::invalid_argument.
+// ones finish, and Interrupted is thrown. threads < 1 is a ComputationError
+// (kOutOfDomain).
 template <class R>
 std::vector<R> RunIndexed(std::size_t n, const RunnerOptions& options,
                           const std::function<R(std::size_t)>& fn) {

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <stdexcept>
 
 namespace vahf::geometry {
 namespace {
@@ -31,8 +30,12 @@ bool SegmentsTouch(const ProfilePoint& a, const ProfilePoint& b, const ProfilePo
          (d3 == 0 && OnSegment(c, a, b)) || (d4 == 0 && OnSegment(d, a, b));
 }
 
-[[noreturn]] void Reject(const std::string& message) {
-  throw std::invalid_argument(message);
+[[noreturn]] void RejectPoint(std::size_t k, const std::string& rule) {
+  throw ProfileError(k, rule);
+}
+
+[[noreturn]] void RejectProfile(const std::string& rule) {
+  throw ProfileError(std::nullopt, rule);
 }
 
 // Integral of a polynomial of degree <= 5 in (r, z) over a triangle, times its
@@ -109,31 +112,29 @@ MassProperties OfBox(const Box& b) {
 RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& pts) {
   for (std::size_t k = 0; k < pts.size(); ++k) {
     if (!std::isfinite(pts[k].r) || !std::isfinite(pts[k].z))
-      Reject(fmt::format("point {}: coordinates must be finite numbers", k));
+      RejectPoint(k, "coordinates must be finite numbers");
     if (pts[k].r < 0)
-      Reject(
-          fmt::format("point {}: r = {} is negative; a profile lies in the "
-                      "half-plane r >= 0",
-                      k, pts[k].r));
+      RejectPoint(k, fmt::format("r = {} is negative; a profile lies in the "
+                                 "half-plane r >= 0",
+                                 pts[k].r));
     if (pts[k].r > kMaxExtent || std::abs(pts[k].z) > kMaxExtent)
-      Reject(
-          fmt::format("point {}: ({}, {}) m lies beyond {} m; a part's profile lies "
-                      "within r <= {} m, |z| <= {} m",
-                      k, pts[k].r, pts[k].z, kMaxExtent, kMaxExtent, kMaxExtent));
+      RejectPoint(k, fmt::format("({}, {}) m lies beyond {} m; a part's profile lies "
+                                 "within r <= {} m, |z| <= {} m",
+                                 pts[k].r, pts[k].z, kMaxExtent, kMaxExtent, kMaxExtent));
   }
   if (pts.size() > kMaxProfileVertices + 1)
-    Reject(fmt::format("profile: {} points; at most {} vertices (and the closing repeat)",
-                       pts.size(), kMaxProfileVertices));
+    RejectProfile(fmt::format("{} points; at most {} vertices (and the closing repeat)",
+                              pts.size(), kMaxProfileVertices));
   if (pts.size() < 4)
-    Reject(
-        fmt::format("profile: {} points; a closed profile needs at least 3 distinct "
+    RejectProfile(
+        fmt::format("{} points; a closed profile needs at least 3 distinct "
                     "vertices and its first point repeated at the end",
                     pts.size()));
   const ProfilePoint& first = pts.front();
   const ProfilePoint& last = pts.back();
   if (first.r != last.r || first.z != last.z)
-    Reject(
-        fmt::format("profile: open, its last point ({}, {}) is not its first ({}, "
+    RejectProfile(
+        fmt::format("open, its last point ({}, {}) is not its first ({}, "
                     "{}); repeat the first point to close it",
                     last.r, last.z, first.r, first.z));
   RevolvedProfile p;
@@ -144,8 +145,8 @@ RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& pts) {
     const ProfilePoint& a = v[k];
     const ProfilePoint& b = v[(k + 1) % n];
     if (a.r == b.r && a.z == b.z)
-      Reject(fmt::format("point {}: repeats the point before it (zero-length edge)",
-                         (k + 1) % n == 0 ? n : k + 1));
+      RejectPoint((k + 1) % n == 0 ? n : k + 1,
+                  "repeats the point before it (zero-length edge)");
   }
   for (std::size_t i = 0; i < n; ++i) {
     const ProfilePoint& a = v[i];
@@ -162,23 +163,21 @@ RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& pts) {
         const double dot =
             (p1.r - shared.r) * (p2.r - shared.r) + (p1.z - shared.z) * (p2.z - shared.z);
         if (Cross(shared, p1, p2) == 0 && dot > 0)
-          Reject(fmt::format("point {}: the profile folds back on itself here",
-                             j == i + 1 ? j : i));
+          RejectPoint(j == i + 1 ? j : i, "the profile folds back on itself here");
         continue;
       }
       if (SegmentsTouch(a, b, c, d))
-        Reject(
-            fmt::format("point {}: edge {}-{} crosses or touches edge {}-{}; a "
-                        "profile must be a simple (non-self-crossing) polygon",
-                        j, i, (i + 1) % n, j, (j + 1) % n));
+        RejectPoint(j, fmt::format("edge {}-{} crosses or touches edge {}-{}; a "
+                                   "profile must be a simple (non-self-crossing) polygon",
+                                   i, (i + 1) % n, j, (j + 1) % n));
     }
   }
   double twice_area = 0.0;
   for (std::size_t k = 0; k < n; ++k)
     twice_area += v[k].r * v[(k + 1) % n].z - v[(k + 1) % n].r * v[k].z;
   if (std::abs(twice_area) < 2 * kMinProfileArea)
-    Reject(fmt::format("profile: encloses {:.3g} m^2; at least {:g} m^2 (a 10 um square)",
-                       std::abs(twice_area) / 2, kMinProfileArea));
+    RejectProfile(fmt::format("encloses {:.3g} m^2; at least {:g} m^2 (a 10 um square)",
+                              std::abs(twice_area) / 2, kMinProfileArea));
   if (twice_area < 0) std::reverse(p.vertices.begin(), p.vertices.end());
   return p;
 }

@@ -6,9 +6,12 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
+
+#include "vahf/core/error.h"
 
 namespace vahf::geometry {
 
@@ -41,13 +44,29 @@ inline constexpr double kMinProfileArea = 1e-10;
 // a few ms; the shipped profiles have under 30).
 inline constexpr std::size_t kMaxProfileVertices = 1000;
 
+// A profile that breaks a rule of MakeRevolvedProfile: an input error whose file
+// and JSON pointer the reader adds. point() is the index K of the vertex in the
+// list as given (where() reads "point K"), or empty for a rule about the whole
+// profile (where() reads "profile"); rule() states the rule.
+class ProfileError : public InputError {
+ public:
+  ProfileError(std::optional<std::size_t> point, std::string rule)
+      : InputError("", point ? "point " + std::to_string(*point) : "profile", "",
+                   std::move(rule)),
+        point_(point) {}
+
+  const std::optional<std::size_t>& point() const { return point_; }
+
+ private:
+  std::optional<std::size_t> point_;
+};
+
 // Checks a profile as written in a file: a list of points whose last equals its
 // first (closed), at least three distinct vertices and at most
 // kMaxProfileVertices, 0 <= r <= kMaxExtent and |z| <= kMaxExtent, no
 // repeated consecutive points, no self-crossing or folding edge, an area of
 // at least kMinProfileArea. On success returns the polygon without the closing repeat,
-// oriented counter-clockwise; on failure throws std::invalid_argument whose message
-// starts with "point K: " (or "profile: ") and states the rule.
+// oriented counter-clockwise; on failure throws ProfileError.
 RevolvedProfile MakeRevolvedProfile(const std::vector<ProfilePoint>& closed_points);
 
 // Mass properties of a uniform solid, in the part frame.

@@ -3,16 +3,20 @@
 // subprocess with the script on its standard input.
 #pragma once
 
-#include <stdexcept>
 #include <string>
+
+#include "vahf/core/error.h"
 
 namespace vahf::report {
 
-// gnuplot missing, failing, or not writing the PNG. The message names the
-// script by its first line and carries gnuplot's standard error.
-class PlotError : public std::runtime_error {
+// gnuplot missing, failing, or not writing the PNG: a computation failure
+// (reason kRefused) that a report survives, with the figure marked missing. The
+// message names the script by its first line and carries gnuplot's standard
+// error.
+class PlotError : public ComputationError {
  public:
-  using std::runtime_error::runtime_error;
+  explicit PlotError(const std::string& message)
+      : ComputationError(Reason::kRefused, message) {}
 };
 
 // Renders `gnuplot_script` into `png_path`. Unless the script chooses a

@@ -3,9 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <map>
-#include <stdexcept>
 
 #include "vahf/contact/point_shell.h"
 #include "vahf/contact/rim.h"
@@ -71,14 +69,9 @@ geometry::Shape ReadShape(const JsonNode& node) {
   }
   try {
     return geometry::MakeRevolvedProfile(points);
-  } catch (const std::invalid_argument& e) {
-    // "point K: rule" names a vertex; anything else is about the whole profile.
-    const std::string message = e.what();
-    std::size_t k = 0;
-    if (std::sscanf(message.c_str(), "point %zu:", &k) == 1 && k < n) {
-      profile.At(k).Fail(message.substr(message.find(':') + 2));
-    }
-    profile.Fail(message.substr(message.find(':') + 2));
+  } catch (const geometry::ProfileError& e) {
+    if (e.point() && *e.point() < n) profile.At(*e.point()).Fail(e.rule());
+    profile.Fail(e.rule());
   }
 }
 

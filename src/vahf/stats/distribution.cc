@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
+#include "vahf/core/error.h"
 #include "vahf/stats/internal/checks.h"
 
 namespace vahf::stats {
@@ -16,7 +16,8 @@ double Quantile(const std::vector<double>& xs, double p) {
   internal::RequireFinite(xs, "Quantile");
   internal::RequireSize(xs, 1, "Quantile");
   if (!(p >= 0 && p <= 1))
-    throw std::invalid_argument(fmt::format("Quantile: p = {}: must lie in [0, 1]", p));
+    throw ComputationError(ComputationError::Reason::kOutOfDomain,
+                           fmt::format("Quantile: p = {}: must lie in [0, 1]", p));
   std::vector<double> sorted = xs;
   std::sort(sorted.begin(), sorted.end());
   return gsl_stats_quantile_from_sorted_data(sorted.data(), 1, sorted.size(), p);
@@ -52,7 +53,8 @@ KolmogorovSmirnov KolmogorovSmirnovTest(const std::vector<double>& a,
 
 double KolmogorovQ(double lambda) {
   if (!(lambda >= 0) || !std::isfinite(lambda))
-    throw std::invalid_argument(
+    throw ComputationError(
+        ComputationError::Reason::kOutOfDomain,
         fmt::format("KolmogorovQ: lambda = {}: must be finite and >= 0", lambda));
   if (lambda == 0) return 1.0;
   double sum = 0;
@@ -79,7 +81,8 @@ double KsDistanceOfShift(const std::vector<double>& xs, double delta) {
   internal::RequireFinite(xs, "KsDistanceOfShift");
   internal::RequireSize(xs, 1, "KsDistanceOfShift");
   if (!(delta >= 0) || !std::isfinite(delta))
-    throw std::invalid_argument(
+    throw ComputationError(
+        ComputationError::Reason::kOutOfDomain,
         fmt::format("KsDistanceOfShift: delta = {}: must be finite and >= 0", delta));
   std::vector<double> s = xs;
   std::sort(s.begin(), s.end());
@@ -97,7 +100,8 @@ double KsEquivalentShift(const std::vector<double>& xs, double distance) {
   internal::RequireFinite(xs, "KsEquivalentShift");
   internal::RequireSize(xs, 1, "KsEquivalentShift");
   if (!(distance >= 0 && distance <= 1))
-    throw std::invalid_argument(
+    throw ComputationError(
+        ComputationError::Reason::kOutOfDomain,
         fmt::format("KsEquivalentShift: distance = {}: must lie in [0, 1]", distance));
   std::vector<double> s = xs;
   std::sort(s.begin(), s.end());

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
+#include "vahf/core/error.h"
 #include "vahf/stats/internal/checks.h"
 
 namespace vahf::stats {
@@ -13,7 +13,8 @@ namespace vahf::stats {
 TostResult EquivalenceTest(const std::vector<double>& a, const std::vector<double>& b,
                            double margin) {
   if (!(margin > 0 && std::isfinite(margin)))
-    throw std::invalid_argument("EquivalenceTest: the margin must be finite and > 0");
+    throw ComputationError(ComputationError::Reason::kOutOfDomain,
+                           "EquivalenceTest: the margin must be finite and > 0");
   TostResult r;
   r.welch = WelchTTest(a, b);
   r.margin = margin;

@@ -3,8 +3,8 @@
 #include <gsl/gsl_cdf.h>
 
 #include <cmath>
-#include <stdexcept>
 
+#include "vahf/core/error.h"
 #include "vahf/stats/internal/checks.h"
 
 namespace vahf::stats {
@@ -15,13 +15,15 @@ PairedTResult PairedTTest(const std::vector<double>& a, const std::vector<double
   internal::RequireFinite(a, "PairedTTest", "a");
   internal::RequireFinite(b, "PairedTTest", "b");
   if (a.size() != b.size())
-    throw std::invalid_argument("PairedTTest: a and b differ in size: pairs need both");
+    throw ComputationError(ComputationError::Reason::kOutOfDomain,
+                           "PairedTTest: a and b differ in size: pairs need both");
   std::vector<double> d(a.size());
   for (std::size_t i = 0; i < a.size(); ++i) d[i] = a[i] - b[i];
   internal::RequireSize(d, 2, "PairedTTest", "the differences");
   const double sd = SampleStandardDeviation(d);
   if (sd == 0)
-    throw std::invalid_argument(
+    throw ComputationError(
+        ComputationError::Reason::kZeroVariance,
         "PairedTTest: every difference is the same: the t statistic is undefined");
   PairedTResult r;
   r.n = d.size();
@@ -40,7 +42,8 @@ PairedTResult PairedTTest(const std::vector<double>& a, const std::vector<double
 
 double McNemarRateFellP(std::int64_t fell, std::int64_t rose) {
   if (fell < 0 || rose < 0)
-    throw std::invalid_argument("McNemarRateFellP: counts are >= 0");
+    throw ComputationError(ComputationError::Reason::kOutOfDomain,
+                           "McNemarRateFellP: counts are >= 0");
   const auto n = static_cast<unsigned int>(fell + rose);
   if (n == 0 || fell == 0) return 1.0;
   // P(X >= fell) = Q(fell - 1), X ~ Binomial(n, 1/2).

@@ -29,7 +29,7 @@ struct PairedTResult {
 // Student's paired t test ("Student" 1908, Biometrika 6:1-25) of a_i - b_i,
 // on GSL's Student-t distribution. a and b have the same size n >= 2, finite
 // values, and differences that are not all equal (else t is undefined:
-// std::invalid_argument).
+// vahf::ComputationError, kZeroVariance).
 PairedTResult PairedTTest(const std::vector<double>& a, const std::vector<double>& b,
                           double level = 0.95);
 

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
+#include "vahf/core/error.h"
 #include "vahf/stats/internal/checks.h"
 
 namespace vahf::stats {
@@ -15,7 +15,8 @@ namespace {
 
 void RequireCount(Count c, const char* function, const char* name) {
   if (c.trials < 1 || c.successes < 0 || c.successes > c.trials) {
-    throw std::invalid_argument(
+    throw ComputationError(
+        ComputationError::Reason::kOutOfDomain,
         fmt::format("{}: {} = {} of {}: needs trials >= 1 and 0 <= successes <= trials",
                     function, name, c.successes, c.trials));
   }
@@ -45,7 +46,8 @@ double FisherRateFellP(Count before, Count after) {
   RequireCount(after, "FisherRateFellP", "after");
   constexpr auto kMax = std::numeric_limits<unsigned int>::max();  // GSL's argument type
   if (before.trials + after.trials > static_cast<std::int64_t>(kMax)) {
-    throw std::invalid_argument("FisherRateFellP: more trials than GSL can count");
+    throw ComputationError(ComputationError::Reason::kOutOfDomain,
+                           "FisherRateFellP: more trials than GSL can count");
   }
   // Of all trials (urn), `successes` are white; `after` draws after.trials.
   const auto successes = static_cast<unsigned int>(before.successes + after.successes);

@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
+#include "vahf/core/error.h"
 #include "vahf/stats/internal/checks.h"
 
 namespace vahf::stats {
@@ -17,13 +17,17 @@ LinearFit FitLine(const std::vector<double>& x, const std::vector<double>& y,
   internal::RequireFinite(x, "FitLine", "x");
   internal::RequireFinite(y, "FitLine", "y");
   if (x.size() != y.size()) {
-    throw std::invalid_argument(fmt::format(
-        "FitLine: x has {} values, y has {}: must be equally many", x.size(), y.size()));
+    throw ComputationError(
+        ComputationError::Reason::kOutOfDomain,
+        fmt::format("FitLine: x has {} values, y has {}: must be equally many", x.size(),
+                    y.size()));
   }
   internal::RequireSize(x, 3, "FitLine", "x");
   if (std::all_of(x.begin(), x.end(), [&](double v) { return v == x.front(); })) {
-    throw std::invalid_argument(fmt::format(
-        "FitLine: every x = {}: the slope is undefined when x does not vary", x.front()));
+    throw ComputationError(
+        ComputationError::Reason::kZeroVariance,
+        fmt::format("FitLine: every x = {}: the slope is undefined when x does not vary",
+                    x.front()));
   }
   LinearFit f;
   f.level = level;

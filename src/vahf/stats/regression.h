@@ -23,8 +23,8 @@ struct LinearFit {
 
 // x and y of equal length n >= 3 (n = 2 fits exactly and leaves no degree of
 // freedom for the error), finite, and x not all equal (else the slope is
-// undefined); these throw std::invalid_argument. Points exactly on a line give
-// a zero standard error and the single-point interval [slope, slope].
+// undefined: kZeroVariance); these throw vahf::ComputationError. Points exactly on a line
+// give a zero standard error and the single-point interval [slope, slope].
 LinearFit FitLine(const std::vector<double>& x, const std::vector<double>& y,
                   double level = 0.95);
 

@@ -5,8 +5,8 @@
 #include <gsl/gsl_statistics_double.h>
 
 #include <cmath>
-#include <stdexcept>
 
+#include "vahf/core/error.h"
 #include "vahf/stats/internal/checks.h"
 
 namespace vahf::stats {
@@ -28,7 +28,8 @@ double SampleStandardDeviation(const std::vector<double>& xs) {
 double TwoSidedStudentT(double df, double level) {
   internal::RequireLevel(level, "TwoSidedStudentT");
   if (!(df > 0) || !std::isfinite(df)) {
-    throw std::invalid_argument(
+    throw ComputationError(
+        ComputationError::Reason::kOutOfDomain,
         fmt::format("TwoSidedStudentT: df = {}: must be finite and > 0", df));
   }
   return gsl_cdf_tdist_Pinv(0.5 * (1.0 + level), df);

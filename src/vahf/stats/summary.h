@@ -2,8 +2,9 @@
 // its mean, on GSL (gsl_stats_*, gsl_cdf_tdist_Pinv).
 //
 // Undefined quantities are never NaN: the plain functions throw
-// std::invalid_argument (a mean of no values, a standard deviation of one),
-// and Summarize() leaves them empty. Every value must be finite.
+// vahf::ComputationError (a mean of no values, a standard deviation of one:
+// kTooFewValues; a value not finite: kOutOfDomain), and Summarize() leaves
+// them empty. Every value must be finite.
 #pragma once
 
 #include <cstddef>

@@ -3,8 +3,8 @@
 #include <gsl/gsl_cdf.h>
 
 #include <cmath>
-#include <stdexcept>
 
+#include "vahf/core/error.h"
 #include "vahf/stats/internal/checks.h"
 
 namespace vahf::stats {
@@ -21,7 +21,8 @@ WelchResult WelchTTest(const std::vector<double>& a, const std::vector<double>& 
   const double sa = SampleStandardDeviation(a), sb = SampleStandardDeviation(b);
   const double va = sa * sa / na, vb = sb * sb / nb;  // squared standard errors
   if (va == 0 && vb == 0) {
-    throw std::invalid_argument(
+    throw ComputationError(
+        ComputationError::Reason::kZeroVariance,
         "WelchTTest: both samples have zero variance: the t statistic is undefined");
   }
   WelchResult r;

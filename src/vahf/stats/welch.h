@@ -25,7 +25,7 @@ struct WelchResult {
 // Each sample needs n >= 2 finite values. If one sample has zero variance the
 // test is still defined (df = n - 1 of the other); if both have, the statistic
 // is 0/0 or +-inf with 0 degrees of freedom, and this throws
-// std::invalid_argument.
+// vahf::ComputationError with reason kZeroVariance.
 WelchResult WelchTTest(const std::vector<double>& a, const std::vector<double>& b,
                        double level = 0.95);
 

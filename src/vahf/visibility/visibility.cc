@@ -7,7 +7,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 #include <string>
 
 #include "vahf/core/error.h"
@@ -75,7 +74,8 @@ void ImageAxes(const Eigen::Vector3d& a, Eigen::Vector3d* e1, Eigen::Vector3d* e
 void Check(RTCDevice device, const char* what) {
   const RTCError e = rtcGetDeviceError(device);
   if (e != RTC_ERROR_NONE)
-    throw std::runtime_error(
+    throw ComputationError(
+        ComputationError::Reason::kRefused,
         fmt::format("Embree failed to {} (error {})", what, static_cast<int>(e)));
 }
 
@@ -324,8 +324,9 @@ VisibilityCaster::VisibilityCaster(const geometry::TriangleMesh& part_mesh_P,
 
   s.device = rtcNewDevice(kDeviceConfig);
   if (!s.device)
-    throw std::runtime_error(fmt::format("Embree cannot create a device (error {})",
-                                         static_cast<int>(rtcGetDeviceError(nullptr))));
+    throw ComputationError(ComputationError::Reason::kRefused,
+                           fmt::format("Embree cannot create a device (error {})",
+                                       static_cast<int>(rtcGetDeviceError(nullptr))));
   s.part_scene = MeshScene(s.device, {&part_mesh_P.vertices}, {&part_mesh_P});
 
   // Occluders are fixed: their vertices go into the world frame once.

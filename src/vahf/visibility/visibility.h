@@ -71,7 +71,7 @@ class VisibilityCaster {
  public:
   // part_mesh_P: the assembling part in its own frame P; occluders: the fixed
   // parts. Throws vahf::InputError for a grid out of range or a part mesh
-  // without triangles, std::runtime_error if Embree cannot build its scenes.
+  // without triangles, ComputationError (kRefused) if Embree cannot build its scenes.
   VisibilityCaster(const geometry::TriangleMesh& part_mesh_P,
                    const std::vector<Occluder>& occluders, CasterOptions options = {});
   ~VisibilityCaster();

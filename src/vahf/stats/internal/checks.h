@@ -1,6 +1,7 @@
 // Argument checks shared by the statistics functions: each throws
-// std::invalid_argument whose message names the function, the argument, the
-// value and the rule, e.g. "Mean: xs[3] = nan: must be finite".
+// vahf::ComputationError (too few values: kTooFewValues; else kOutOfDomain)
+// whose message names the function, the argument, the value and the rule,
+// e.g. "Mean: xs[3] = nan: must be finite".
 #pragma once
 
 #include <cstddef>
