@@ -1,4 +1,4 @@
-#include "vahf/sim/cvode_stepper.h"
+#include "vahf/sim/internal/cvode_stepper.h"
 
 #include <cvode/cvode.h>
 #include <fmt/format.h>
@@ -13,10 +13,10 @@
 #include <string>
 
 #include "vahf/core/error.h"
-#include "vahf/sim/decisions.h"
+#include "vahf/sim/internal/decisions.h"
+#include "vahf/sim/internal/step_checks.h"
 #include "vahf/sim/rigid_body.h"
 #include "vahf/sim/rigid_body_jacobian.h"
-#include "vahf/sim/step_checks.h"
 
 namespace vahf::sim::internal {
 namespace {

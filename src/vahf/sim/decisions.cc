@@ -1,4 +1,4 @@
-#include "vahf/sim/decisions.h"
+#include "vahf/sim/internal/decisions.h"
 
 #include <cmath>
 
