@@ -1,4 +1,4 @@
-// The CVODE stepper (integrator "CVODE", cvode_stepper.h): free fall within
+// The CVODE stepper (integrator "CVODE", sim/internal/cvode_stepper.h): free fall within
 // its tolerance; the peg (seed 1) converges as the accuracy tightens and
 // agrees with Simbody's RungeKuttaMerson at 1e-8 to 1e-4 relative, as the
 // piston rod does; a shorter velocity time scale takes fewer steps and keeps

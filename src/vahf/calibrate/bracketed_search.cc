@@ -39,6 +39,169 @@ struct GslHandlerOff {
   ~GslHandlerOff() { gsl_set_error_handler(old); }
 };
 
+// The cost at points u of the search variable, each evaluated once (each
+// evaluation is a whole design), with the lowest cost seen and its bracket.
+class SearchPoints {
+ public:
+  // A point seen and its strictly higher neighbours, if any.
+  struct Bracket {
+    std::map<double, double>::const_iterator a, m, c;
+    bool has_a = false, has_c = false;
+  };
+
+  SearchPoints(const std::function<double(double)>& cost, double lower, double upper,
+               double start, double tolerance,
+               const std::optional<std::array<double, 3>>& hint)
+      : scale(Scale{lower > 0}),
+        lo(scale.ToU(lower)),
+        hi(scale.ToU(upper)),
+        u0(scale.ToU(start)),
+        cost_(cost),
+        lower_(lower),
+        upper_(upper),
+        tolerance_(tolerance),
+        // Points given as x (the start, the bounds, a hint) are evaluated at
+        // that x exactly, not at exp(log(x)): the caller's cache knows them by
+        // their bits.
+        given_({{scale.ToU(start), start}, {lo, lower}, {hi, upper}}) {
+    if (hint)
+      for (double x : *hint)
+        if (lower <= x && x <= upper) given_.emplace(scale.ToU(x), x);
+  }
+
+  // The cost at u. GSL's golden section computes each new interior point
+  // afresh, so a point it has evaluated comes back some ulps off: a point
+  // within kSame of the tolerance from one seen is that point.
+  double operator()(double u) {
+    u = std::clamp(u, lo, hi);
+    const double same =
+        kSame * (scale.logs ? std::log1p(tolerance_) : tolerance_ * std::fabs(u));
+    auto it = seen_.lower_bound(u - same);
+    if (it != seen_.end() && it->first <= u + same) return it->second;
+    const auto exact = given_.find(u);
+    const double x =
+        exact != given_.end() ? exact->second : std::clamp(scale.ToX(u), lower_, upper_);
+    double c = cost_(x);
+    if (!std::isfinite(c)) c = kNoCost;
+    seen_.emplace(u, c);
+    return c;
+  }
+
+  // The parameter value at u: a given point's exact x.
+  double XOf(double u) const {
+    const auto exact = given_.find(u);
+    return exact != given_.end() ? exact->second
+                                 : std::clamp(scale.ToX(u), lower_, upper_);
+  }
+
+  // Whether a bracket [a, c] is narrow enough around `u`.
+  bool NarrowEnough(double a, double c, double u) const {
+    return c - a < (scale.logs ? std::log1p(tolerance_)
+                               : tolerance_ * std::max(std::fabs(u), 1e-300));
+  }
+
+  // The lowest cost seen (ties: the one nearest the start) and its bracket.
+  Bracket Lowest() const {
+    Bracket b;
+    b.m = seen_.begin();
+    for (auto it = seen_.begin(); it != seen_.end(); ++it)
+      if (it->second < b.m->second ||
+          (it->second == b.m->second &&
+           std::fabs(it->first - u0) < std::fabs(b.m->first - u0)))
+        b.m = it;
+    for (auto it = b.m; it != seen_.begin();) {
+      --it;
+      if (it->second > b.m->second) {
+        b.a = it;
+        b.has_a = true;
+        break;
+      }
+    }
+    for (auto it = std::next(b.m); it != seen_.end(); ++it)
+      if (it->second > b.m->second) {
+        b.c = it;
+        b.has_c = true;
+        break;
+      }
+    return b;
+  }
+
+  // The lowest and highest points seen.
+  double Leftmost() const { return seen_.begin()->first; }
+  double Rightmost() const { return std::prev(seen_.end())->first; }
+
+  const Scale scale;
+  const double lo, hi;  // the bounds in u
+  const double u0;      // the start in u
+
+ private:
+  const std::function<double(double)>& cost_;
+  const double lower_, upper_, tolerance_;
+  std::map<double, double> given_;  // u -> the x it was given as
+  std::map<double, double> seen_;   // u -> cost
+};
+
+// Whether the hint (a bracket from an earlier search) still brackets the cost.
+bool StillBrackets(SearchPoints& f, const std::array<double, 3>& hint, std::string* log) {
+  const double a = f.scale.ToU(hint[0]), m = f.scale.ToU(hint[1]),
+               c = f.scale.ToU(hint[2]);
+  const double fm = f(m);
+  const bool hinted = a < m && m < c && fm < f(a) && fm < f(c);
+  if (hinted)
+    *log += fmt::format("bracket from the last round: [{:.6g}, {:.6g}, {:.6g}]\n",
+                        hint[0], hint[1], hint[2]);
+  return hinted;
+}
+
+// One side is flat (or falling) up to its bound, the other has a higher cost
+// (b). A step function may hide its minimum in the gap between that higher
+// point and the flat run, which the growing steps jumped: bisects the gap
+// until a lower cost appears or the run's edge is found.
+void BisectGap(SearchPoints& f, const SearchPoints::Bracket& b, std::string* log) {
+  const double low = b.m->second;
+  double high_u = b.has_a ? b.a->first : b.c->first;
+  double run_u = b.has_a ? std::next(b.a)->first : std::prev(b.c)->first;
+  while (!f.NarrowEnough(std::min(high_u, run_u), std::max(high_u, run_u), run_u)) {
+    const double q = 0.5 * (high_u + run_u);
+    const double fq = f(q);
+    *log += fmt::format("gap: cost {:.6g} at {:.6g}\n", fq, f.XOf(q));
+    if (fq < low) break;  // bracketed: (the higher point, q, the run)
+    (fq > low ? high_u : run_u) = q;
+  }
+}
+
+// The walk from the start (the header's): steps growing by kGrow in the
+// direction of descent until the lowest cost has a higher one on each side or
+// each side without one has reached its bound; then the gap of a one-sided
+// bracket. Sets out->at_bound when no bracket was found.
+void Walk(SearchPoints& f, BracketedSearch* out) {
+  double step = f.scale.logs ? std::log(2.0) : (f.hi - f.lo) / 8;
+  f(f.u0);
+  f(f.u0 < f.hi ? f.u0 + step : f.u0 - step);
+  SearchPoints::Bracket b;
+  for (;;) {
+    b = f.Lowest();
+    out->log += fmt::format("walk: lowest cost {:.6g} at {:.6g}\n", b.m->second,
+                            f.XOf(b.m->first));
+    if (b.has_a && b.has_c) break;
+    const double left = f.Leftmost(), right = f.Rightmost();
+    int dir = 0;
+    if (!b.has_a && left > f.lo) {
+      dir = -1;
+    } else if (!b.has_c && right < f.hi) {
+      dir = 1;
+    }
+    if (dir == 0) break;  // each side without a higher cost has reached its bound
+    step *= kGrow;
+    f(dir > 0 ? right + step : left - step);
+  }
+  if (b.has_a != b.has_c) {
+    BisectGap(f, b, &out->log);
+    b = f.Lowest();
+  }
+  out->at_bound = !(b.has_a && b.has_c);
+}
+
 }  // namespace
 
 BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, double lower,
@@ -50,125 +213,11 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
         ComputationError::Reason::kOutOfDomain,
         "MinimizeBracketed: needs lower <= start <= upper, tolerance > 0");
   const Scale scale{lower > 0};
-  const double lo = scale.ToU(lower), hi = scale.ToU(upper);
+  SearchPoints f(cost, lower, upper, start, tolerance, hint);
   BracketedSearch out;
-  std::map<double, double> seen;  // u -> cost
-  // Points given as x (the start, the bounds, a hint) are evaluated at that x
-  // exactly, not at exp(log(x)): the caller's cache knows them by their bits.
-  std::map<double, double> given = {{scale.ToU(start), start}, {lo, lower}, {hi, upper}};
-  if (hint)
-    for (double x : *hint)
-      if (lower <= x && x <= upper) given.emplace(scale.ToU(x), x);
-  // GSL's golden section computes each new interior point afresh, so a point
-  // it has evaluated comes back some ulps off: a point within kSame of the
-  // tolerance from one seen is that point (each evaluation is a whole design).
-  auto f = [&](double u) {
-    u = std::clamp(u, lo, hi);
-    const double same =
-        kSame * (scale.logs ? std::log1p(tolerance) : tolerance * std::fabs(u));
-    auto it = seen.lower_bound(u - same);
-    if (it != seen.end() && it->first <= u + same) return it->second;
-    const auto exact = given.find(u);
-    const double x =
-        exact != given.end() ? exact->second : std::clamp(scale.ToX(u), lower, upper);
-    double c = cost(x);
-    if (!std::isfinite(c)) c = kNoCost;
-    seen.emplace(u, c);
-    return c;
-  };
-  // The lowest cost seen (ties: the one nearest the start) and its strictly
-  // higher neighbours, if any.
-  const double u0 = scale.ToU(start);
-  struct Bracket {
-    std::map<double, double>::iterator a, m, c;
-    bool has_a = false, has_c = false;
-  };
-  auto bracket_of_seen = [&] {
-    Bracket b;
-    b.m = seen.begin();
-    for (auto it = seen.begin(); it != seen.end(); ++it)
-      if (it->second < b.m->second ||
-          (it->second == b.m->second &&
-           std::fabs(it->first - u0) < std::fabs(b.m->first - u0)))
-        b.m = it;
-    for (auto it = b.m; it != seen.begin();) {
-      --it;
-      if (it->second > b.m->second) {
-        b.a = it;
-        b.has_a = true;
-        break;
-      }
-    }
-    for (auto it = std::next(b.m); it != seen.end(); ++it)
-      if (it->second > b.m->second) {
-        b.c = it;
-        b.has_c = true;
-        break;
-      }
-    return b;
-  };
-
-  const auto x_of = [&](double u) {
-    const auto exact = given.find(u);
-    return exact != given.end() ? exact->second : std::clamp(scale.ToX(u), lower, upper);
-  };
-  bool hinted = false;
-  if (hint) {
-    const double a = scale.ToU((*hint)[0]), m = scale.ToU((*hint)[1]),
-                 c = scale.ToU((*hint)[2]);
-    const double fm = f(m);
-    hinted = a < m && m < c && fm < f(a) && fm < f(c);
-    if (hinted)
-      out.log += fmt::format("bracket from the last round: [{:.6g}, {:.6g}, {:.6g}]\n",
-                             (*hint)[0], (*hint)[1], (*hint)[2]);
-  }
-  // How narrow a bracket must get, in u, around `u`.
-  const auto narrow_enough = [&](double a, double c, double u) {
-    return c - a < (scale.logs ? std::log1p(tolerance)
-                               : tolerance * std::max(std::fabs(u), 1e-300));
-  };
-  Bracket b;
-  if (!hinted) {
-    double step = scale.logs ? std::log(2.0) : (hi - lo) / 8;
-    f(u0);
-    f(u0 < hi ? u0 + step : u0 - step);
-    for (;;) {
-      b = bracket_of_seen();
-      out.log += fmt::format("walk: lowest cost {:.6g} at {:.6g}\n", b.m->second,
-                             x_of(b.m->first));
-      if (b.has_a && b.has_c) break;
-      const double left = seen.begin()->first, right = std::prev(seen.end())->first;
-      int dir = 0;
-      if (!b.has_a && left > lo) {
-        dir = -1;
-      } else if (!b.has_c && right < hi) {
-        dir = 1;
-      }
-      if (dir == 0) break;  // each side without a higher cost has reached its bound
-      step *= kGrow;
-      f(dir > 0 ? right + step : left - step);
-    }
-    // One side is flat (or falling) up to its bound, the other has a higher
-    // cost. A step function may hide its minimum in the gap between that
-    // higher point and the flat run, which the growing steps jumped: bisect
-    // the gap until a lower cost appears or the run's edge is found.
-    if (b.has_a != b.has_c) {
-      const double low = b.m->second;
-      double high_u = b.has_a ? b.a->first : b.c->first;
-      double run_u = b.has_a ? std::next(b.a)->first : std::prev(b.c)->first;
-      while (!narrow_enough(std::min(high_u, run_u), std::max(high_u, run_u), run_u)) {
-        const double q = 0.5 * (high_u + run_u);
-        const double fq = f(q);
-        out.log += fmt::format("gap: cost {:.6g} at {:.6g}\n", fq, x_of(q));
-        if (fq < low) break;  // bracketed: (the higher point, q, the run)
-        (fq > low ? high_u : run_u) = q;
-      }
-      b = bracket_of_seen();
-    }
-    out.at_bound = !(b.has_a && b.has_c);
-  }
-  b = bracket_of_seen();
-  out.estimate = x_of(b.m->first);
+  if (!(hint && StillBrackets(f, *hint, &out.log))) Walk(f, &out);
+  const SearchPoints::Bracket b = f.Lowest();
+  out.estimate = f.XOf(b.m->first);
   out.cost = b.m->second;
   if (!(b.has_a && b.has_c)) {
     out.at_bound = true;
@@ -184,7 +233,7 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
       &gsl_min_fminimizer_free);
   // An exception (an interrupt, an input error at a new point) must not
   // unwind through GSL's C frames: it is kept and rethrown here.
-  using Cost = decltype(f);
+  using Cost = SearchPoints;
   struct Call {
     Cost* cost;
     std::exception_ptr error;
@@ -206,9 +255,9 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
     throw ComputationError(ComputationError::Reason::kRefused,
                            "MinimizeBracketed: GSL refused a strict bracket");
   auto narrow = [&] {
-    return narrow_enough(gsl_min_fminimizer_x_lower(s.get()),
-                         gsl_min_fminimizer_x_upper(s.get()),
-                         gsl_min_fminimizer_x_minimum(s.get()));
+    return f.NarrowEnough(gsl_min_fminimizer_x_lower(s.get()),
+                          gsl_min_fminimizer_x_upper(s.get()),
+                          gsl_min_fminimizer_x_minimum(s.get()));
   };
   while (!narrow() && out.iterations < max_iterations) {
     const int status = gsl_min_fminimizer_iterate(s.get());
@@ -222,10 +271,10 @@ BracketedSearch MinimizeBracketed(const std::function<double(double)>& cost, dou
                            scale.ToX(gsl_min_fminimizer_x_minimum(s.get())));
   }
   out.converged = narrow();
-  out.estimate = x_of(gsl_min_fminimizer_x_minimum(s.get()));
+  out.estimate = f.XOf(gsl_min_fminimizer_x_minimum(s.get()));
   out.cost = gsl_min_fminimizer_f_minimum(s.get());
-  out.bracket = {x_of(gsl_min_fminimizer_x_lower(s.get())), out.estimate,
-                 x_of(gsl_min_fminimizer_x_upper(s.get()))};
+  out.bracket = {f.XOf(gsl_min_fminimizer_x_lower(s.get())), out.estimate,
+                 f.XOf(gsl_min_fminimizer_x_upper(s.get()))};
   return out;
 }
 

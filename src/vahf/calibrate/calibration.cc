@@ -5,6 +5,7 @@
 #include <gsl/gsl_cdf.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -218,6 +219,111 @@ void BuildProblem(ceres::Problem* problem, VirtualModel* model,
   }
 }
 
+// One round of the golden_section solver on the round's weights `sigma`:
+// moves x[0] to the search's estimate and keeps its bracket for the next
+// round. Returns the round's one-line report.
+std::string GoldenSectionRound(VirtualModel& model, const std::vector<Target>& targets,
+                               const std::vector<double>& sigma,
+                               const CalibrationSpec& spec, const StageSpec& stage,
+                               int round, std::vector<double>* x,
+                               std::optional<std::array<double, 3>>* bracket,
+                               CalibrationResult* out) {
+  const ParameterSpec& ps = stage.parameters[0];
+  const BracketedSearch search = MinimizeBracketed(
+      [&](double v) { return Cost(model, targets, sigma, spec, v); }, ps.lower, ps.upper,
+      (*x)[0], spec.tolerance, spec.max_iterations, *bracket);
+  (*x)[0] = search.estimate;
+  *bracket = search.bracket;
+  out->search_log += fmt::format("round {}:\n{}", round, search.log);
+  out->converged = search.converged;
+  out->final_cost = search.cost;
+  return fmt::format(
+      "golden section (GSL): {} iterations, cost {:.6g}, bracket [{:.6g}, {:.6g}]{}",
+      search.iterations, search.cost, search.bracket[0], search.bracket[2],
+      search.at_bound    ? ", the cost still falls at a bound"
+      : search.converged ? ", converged"
+                         : ", not converged");
+}
+
+// One round of Ceres' Levenberg-Marquardt on `problem` (which moves its
+// parameter block). Returns the round's one-line report.
+std::string LevenbergMarquardtRound(const CalibrationSpec& spec, ceres::Problem* problem,
+                                    CalibrationResult* out) {
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::DENSE_QR;
+  solver.max_num_iterations = spec.max_iterations;
+  solver.num_threads = 1;  // parallel inside each evaluation instead
+  // A relative change of 1e-4 in the parameters is far below what the
+  // Monte Carlo noise of a design resolves.
+  solver.parameter_tolerance = 1e-4;
+  solver.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, problem, &summary);
+  out->ceres_full = summary.FullReport();
+  out->converged = summary.termination_type == ceres::CONVERGENCE;
+  out->final_cost = summary.final_cost;
+  return summary.BriefReport();
+}
+
+// The covariance of `problem` at the estimate x (p parameters): NaN where
+// Ceres cannot compute it or it is not positive.
+void EstimateCovariance(ceres::Problem* problem, const std::vector<double>& x, int p,
+                        CalibrationResult* out) {
+  ceres::Covariance::Options cov_options;
+  cov_options.algorithm_type = ceres::DENSE_SVD;
+  ceres::Covariance covariance(cov_options);
+  out->covariance = Eigen::MatrixXd::Constant(p, p, std::nan(""));
+  const std::vector<const double*> blocks = {x.data()};
+  if (covariance.Compute(blocks, problem)) {
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> c(p, p);
+    out->covariance_ok = covariance.GetCovarianceMatrix(blocks, c.data()) &&
+                         c.allFinite() && (c.diagonal().array() > 0).all();
+    if (out->covariance_ok) out->covariance = c;
+  }
+}
+
+// Each parameter's estimate with its standard error, Wald interval and, for a
+// golden_section stage, its profile interval.
+void AddFittedParameters(const scene::Scene& scene, const StageSpec& stage,
+                         const std::vector<double>& x,
+                         const std::optional<ProfileInterval>& profile,
+                         CalibrationResult* out) {
+  const int p = static_cast<int>(stage.parameters.size());
+  for (int i = 0; i < p; ++i) {
+    FittedParameter f;
+    f.name = stage.parameters[static_cast<std::size_t>(i)].name;
+    f.start = stage.parameters[static_cast<std::size_t>(i)].start;
+    scene::Parameters before = scene.params;  // the table's accessor takes a mutable set
+    f.scene_value = scene::FindParam(f.name)->real(before);
+    f.estimate = x[static_cast<std::size_t>(i)];
+    f.standard_error =
+        out->covariance_ok ? std::sqrt(out->covariance(i, i)) : std::nan("");
+    f.ci = {f.estimate - kZ95 * f.standard_error, f.estimate + kZ95 * f.standard_error};
+    if (profile) {
+      f.has_profile = true;
+      f.profile = {profile->lower, profile->upper};
+      f.profile_open_lower = profile->open_lower;
+      f.profile_open_upper = profile->open_upper;
+    }
+    out->parameters.push_back(f);
+  }
+}
+
+// Each target at the start and at the fit, with its whitened residual there.
+void AddFittedTargets(const std::vector<Target>& targets,
+                      const std::vector<Statistic>& at_start,
+                      const std::vector<Statistic>& fitted,
+                      const std::vector<double>& sigma, CalibrationResult* out) {
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    FittedTarget t;
+    t.target = targets[k];
+    t.start = at_start[k];
+    t.fitted = fitted[k];
+    t.residual = (fitted[k].value - targets[k].lab.value) / sigma[k];
+    out->targets.push_back(t);
+  }
+}
+
 }  // namespace
 
 CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDataset& lab,
@@ -251,39 +357,10 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
     out.rounds = round;
     ceres::Problem problem;
     BuildProblem(&problem, &model, spec, stage, targets, sigma, x.data());
-    std::string brief;
-    if (stage.solver == "golden_section") {
-      const ParameterSpec& ps = stage.parameters[0];
-      const BracketedSearch search = MinimizeBracketed(
-          [&](double v) { return Cost(model, targets, sigma, spec, v); }, ps.lower,
-          ps.upper, x[0], spec.tolerance, spec.max_iterations, bracket);
-      x[0] = search.estimate;
-      bracket = search.bracket;
-      out.search_log += fmt::format("round {}:\n{}", round, search.log);
-      out.converged = search.converged;
-      out.final_cost = search.cost;
-      brief = fmt::format(
-          "golden section (GSL): {} iterations, cost {:.6g}, bracket [{:.6g}, {:.6g}]{}",
-          search.iterations, search.cost, search.bracket[0], search.bracket[2],
-          search.at_bound    ? ", the cost still falls at a bound"
-          : search.converged ? ", converged"
-                             : ", not converged");
-    } else {
-      ceres::Solver::Options solver;
-      solver.linear_solver_type = ceres::DENSE_QR;
-      solver.max_num_iterations = spec.max_iterations;
-      solver.num_threads = 1;  // parallel inside each evaluation instead
-      // A relative change of 1e-4 in the parameters is far below what the
-      // Monte Carlo noise of a design resolves.
-      solver.parameter_tolerance = 1e-4;
-      solver.logging_type = ceres::SILENT;
-      ceres::Solver::Summary summary;
-      ceres::Solve(solver, &problem, &summary);
-      brief = summary.BriefReport();
-      out.ceres_full = summary.FullReport();
-      out.converged = summary.termination_type == ceres::CONVERGENCE;
-      out.final_cost = summary.final_cost;
-    }
+    const std::string brief = stage.solver == "golden_section"
+                                  ? GoldenSectionRound(model, targets, sigma, spec, stage,
+                                                       round, &x, &bracket, &out)
+                                  : LevenbergMarquardtRound(spec, &problem, &out);
     out.ceres_brief += fmt::format("round {}: {}\n", round, brief);
     if (progress)
       progress(fmt::format("{}: round {}: {} ({})", prefix, round,
@@ -300,17 +377,7 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
       continue;
     }
     // The covariance of this round's problem, at the estimate.
-    ceres::Covariance::Options cov_options;
-    cov_options.algorithm_type = ceres::DENSE_SVD;
-    ceres::Covariance covariance(cov_options);
-    out.covariance = Eigen::MatrixXd::Constant(p, p, std::nan(""));
-    const std::vector<const double*> blocks = {x.data()};
-    if (covariance.Compute(blocks, &problem)) {
-      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> c(p, p);
-      out.covariance_ok = covariance.GetCovarianceMatrix(blocks, c.data()) &&
-                          c.allFinite() && (c.diagonal().array() > 0).all();
-      if (out.covariance_ok) out.covariance = c;
-    }
+    EstimateCovariance(&problem, x, p, &out);
     break;
   }
 
@@ -327,33 +394,8 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
       progress(fmt::format("{}: profile interval [{:.6g}, {:.6g}] ({} evaluations)",
                            prefix, profile->lower, profile->upper, profile->evaluations));
   }
-  for (int i = 0; i < p; ++i) {
-    FittedParameter f;
-    f.name = stage.parameters[static_cast<std::size_t>(i)].name;
-    f.start = stage.parameters[static_cast<std::size_t>(i)].start;
-    scene::Parameters before = scene.params;  // the table's accessor takes a mutable set
-    f.scene_value = scene::FindParam(f.name)->real(before);
-    f.estimate = x[static_cast<std::size_t>(i)];
-    f.standard_error = out.covariance_ok ? std::sqrt(out.covariance(i, i)) : std::nan("");
-    f.ci = {f.estimate - kZ95 * f.standard_error, f.estimate + kZ95 * f.standard_error};
-    if (profile) {
-      f.has_profile = true;
-      f.profile = {profile->lower, profile->upper};
-      f.profile_open_lower = profile->open_lower;
-      f.profile_open_upper = profile->open_upper;
-    }
-    out.parameters.push_back(f);
-  }
-  const std::vector<Statistic>& fitted = model.At(x.data());
-  for (int i = 0; i < m; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    FittedTarget t;
-    t.target = targets[k];
-    t.start = at_start[k];
-    t.fitted = fitted[k];
-    t.residual = (fitted[k].value - targets[k].lab.value) / sigma[k];
-    out.targets.push_back(t);
-  }
+  AddFittedParameters(scene, stage, x, profile, &out);
+  AddFittedTargets(targets, at_start, model.At(x.data()), sigma, &out);
   out.evaluations = model.evaluations();
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

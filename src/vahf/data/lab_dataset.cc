@@ -387,28 +387,23 @@ std::vector<TrackSample> ReadSamples(const CsvTable& t, const TableSpec& spec) {
 
 // ---------------------------------------------------------------- the dataset
 
-LabDataset Parse(const nlohmann::json& document, const std::string& path,
-                 const TextSource& source) {
-  const JsonNode root(document, path);
-  if (!document.is_object()) root.Fail("a lab dataset's manifest is a JSON object");
-  root.ExpectObject({"format", "name", "description", "provenance", "trials", "segments",
-                     "summaries", "tracks"});
+// The manifest's format, name, description and provenance.
+void ReadHeader(const JsonNode& root, LabDataset* d) {
   const JsonNode format = root.Required("format");
   if (format.String() != scene::kLabFormat)
     format.Fail(std::string("a lab dataset declares \"format\": \"") + scene::kLabFormat +
                 "\"");
-  LabDataset d;
-  d.file = path;
-  d.folder = fs::path(path).parent_path().string();
   const JsonNode name = root.Required("name");
-  d.name = name.String();
-  if (d.name.empty() || !std::all_of(d.name.begin(), d.name.end(), [](unsigned char c) {
+  d->name = name.String();
+  if (d->name.empty() ||
+      !std::all_of(d->name.begin(), d->name.end(), [](unsigned char c) {
         return std::isalnum(c) || c == '_' || c == '.' || c == '-';
       }))
     name.Fail("a dataset's name is letters, digits, '_', '.' and '-' (at least one)");
   const JsonNode description = root.Required("description");
-  d.description = description.String();
-  if (d.description.empty()) description.Fail("say in a sentence what the dataset holds");
+  d->description = description.String();
+  if (d->description.empty())
+    description.Fail("say in a sentence what the dataset holds");
   const JsonNode provenance = root.Required("provenance");
   if (!provenance.json().is_object()) provenance.Fail("must be an object");
   const JsonNode source_node = provenance.Required("source");
@@ -417,89 +412,126 @@ LabDataset Parse(const nlohmann::json& document, const std::string& path,
         "say who recorded the data, where and when (or how it was generated)");
   for (const auto& item : provenance.json().items())
     provenance.Required(item.key()).String();  // every entry is text
-  d.provenance = provenance.json();
+  d->provenance = provenance.json();
+}
 
-  // The whole manifest is checked before any file is read.
-  const auto trials_node = root.Optional("trials");
-  const auto segments_node = root.Optional("segments");
-  const auto summaries_node = root.Optional("summaries");
-  const auto tracks_node = root.Optional("tracks");
-  if (!trials_node && !segments_node && !summaries_node && !tracks_node)
-    root.Fail("a dataset holds at least one of trials, segments, summaries and tracks");
-  std::optional<TableSpec> trials, segments, summaries;
-  if (trials_node)
-    trials = ReadTableSpec(
-        *trials_node, d.folder,
-        {{"height", &kLengthUnits}, {"arm_length", &kLengthUnits}, {"time", &kTimeUnits}},
-        false);
-  if (segments_node)
-    segments = ReadTableSpec(*segments_node, d.folder,
-                             {{"start", &kScheduleUnits},
-                              {"end", &kScheduleUnits},
-                              {"mean_time", &kTimeUnits}},
-                             false);
-  if (summaries_node)
-    summaries = ReadTableSpec(*summaries_node, d.folder,
-                              {{"instant", &kTimeUnits}, {"time", &kTimeUnits}}, true);
-  std::vector<TableSpec> tracks;
-  std::map<std::string, std::string> pointer_of;  // each file named once
-  const auto claim = [&](const TableSpec& spec, const JsonNode& node) {
-    const auto [it, fresh] =
-        pointer_of.emplace(fs::path(spec.name).lexically_normal().string(), spec.pointer);
+// The files the manifest names, each named once.
+class FileClaims {
+ public:
+  void Claim(const TableSpec& spec, const JsonNode& node) {
+    const auto [it, fresh] = pointer_of_.emplace(
+        fs::path(spec.name).lexically_normal().string(), spec.pointer);
     if (!fresh)
       node.Required("file").Fail("names the same file as " + it->second +
                                  ": each file of a dataset is named once");
-  };
-  if (trials) claim(*trials, *trials_node);
-  if (segments) claim(*segments, *segments_node);
-  if (summaries) claim(*summaries, *summaries_node);
-  if (tracks_node) {
-    const std::size_t n = tracks_node->ArraySize(1);
-    for (std::size_t k = 0; k < n; ++k) {
-      const JsonNode node = tracks_node->At(k);
-      tracks.push_back(ReadTableSpec(node, d.folder,
-                                     {{"time", &kTimeUnits}, {"position", &kLengthUnits}},
-                                     false, {"operator", "condition", "repetition"}));
-      claim(tracks.back(), node);
-      SensorTrack track;
-      track.file = tracks.back().resolved;
-      const JsonNode op = node.Required("operator");
-      track.operator_id = op.String();
-      if (track.operator_id.empty())
-        op.Fail("a track names its operator (as in trials.csv)");
-      const JsonNode condition = node.Required("condition");
-      track.condition = condition.String();
-      if (track.condition.empty()) condition.Fail("a track names its condition");
-      track.repetition =
-          static_cast<int>(node.Required("repetition").Integer(1, kMaxInt));
-      d.tracks.push_back(std::move(track));
-    }
   }
 
-  if (trials) {
-    d.trials_file = trials->name;
-    const CsvTable t = ReadTable(*trials, trials_node->Required("file"), source,
+ private:
+  std::map<std::string, std::string> pointer_of_;
+};
+
+// The manifest's tables: where each is and in which units, before any is read.
+struct ManifestTables {
+  std::optional<JsonNode> trials_node, segments_node, summaries_node, tracks_node;
+  std::optional<TableSpec> trials, segments, summaries;
+  std::vector<TableSpec> tracks;
+};
+
+// Each track's file and units, and whose it is (d->tracks, samples still empty).
+void ReadTrackSpecs(const JsonNode& tracks_node, FileClaims* claims, ManifestTables* m,
+                    LabDataset* d) {
+  const std::size_t n = tracks_node.ArraySize(1);
+  for (std::size_t k = 0; k < n; ++k) {
+    const JsonNode node = tracks_node.At(k);
+    m->tracks.push_back(ReadTableSpec(
+        node, d->folder, {{"time", &kTimeUnits}, {"position", &kLengthUnits}}, false,
+        {"operator", "condition", "repetition"}));
+    claims->Claim(m->tracks.back(), node);
+    SensorTrack track;
+    track.file = m->tracks.back().resolved;
+    const JsonNode op = node.Required("operator");
+    track.operator_id = op.String();
+    if (track.operator_id.empty())
+      op.Fail("a track names its operator (as in trials.csv)");
+    const JsonNode condition = node.Required("condition");
+    track.condition = condition.String();
+    if (track.condition.empty()) condition.Fail("a track names its condition");
+    track.repetition = static_cast<int>(node.Required("repetition").Integer(1, kMaxInt));
+    d->tracks.push_back(std::move(track));
+  }
+}
+
+// The whole manifest, checked before any file is read.
+ManifestTables ReadManifest(const JsonNode& root, LabDataset* d) {
+  ManifestTables m;
+  m.trials_node = root.Optional("trials");
+  m.segments_node = root.Optional("segments");
+  m.summaries_node = root.Optional("summaries");
+  m.tracks_node = root.Optional("tracks");
+  if (!m.trials_node && !m.segments_node && !m.summaries_node && !m.tracks_node)
+    root.Fail("a dataset holds at least one of trials, segments, summaries and tracks");
+  if (m.trials_node)
+    m.trials = ReadTableSpec(
+        *m.trials_node, d->folder,
+        {{"height", &kLengthUnits}, {"arm_length", &kLengthUnits}, {"time", &kTimeUnits}},
+        false);
+  if (m.segments_node)
+    m.segments = ReadTableSpec(*m.segments_node, d->folder,
+                               {{"start", &kScheduleUnits},
+                                {"end", &kScheduleUnits},
+                                {"mean_time", &kTimeUnits}},
+                               false);
+  if (m.summaries_node)
+    m.summaries = ReadTableSpec(*m.summaries_node, d->folder,
+                                {{"instant", &kTimeUnits}, {"time", &kTimeUnits}}, true);
+  FileClaims claims;
+  if (m.trials) claims.Claim(*m.trials, *m.trials_node);
+  if (m.segments) claims.Claim(*m.segments, *m.segments_node);
+  if (m.summaries) claims.Claim(*m.summaries, *m.summaries_node);
+  if (m.tracks_node) ReadTrackSpecs(*m.tracks_node, &claims, &m, d);
+  return m;
+}
+
+// The files the manifest names, read into d.
+void ReadFiles(const ManifestTables& m, const TextSource& source, LabDataset* d) {
+  if (m.trials) {
+    d->trials_file = m.trials->name;
+    const CsvTable t = ReadTable(*m.trials, m.trials_node->Required("file"), source,
                                  kTrialColumns, {"source", "note"}, 1);
-    d.trials = ReadTrials(t, *trials);
+    d->trials = ReadTrials(t, *m.trials);
   }
-  if (segments) {
-    d.segments_file = segments->name;
-    const CsvTable t = ReadTable(*segments, segments_node->Required("file"), source,
+  if (m.segments) {
+    d->segments_file = m.segments->name;
+    const CsvTable t = ReadTable(*m.segments, m.segments_node->Required("file"), source,
                                  kSegmentColumns, {"condition", "source", "note"}, 1);
-    d.segments = ReadSegments(t, *segments);
+    d->segments = ReadSegments(t, *m.segments);
   }
-  if (summaries) {
-    d.summaries_file = summaries->name;
-    const CsvTable t = ReadTable(*summaries, summaries_node->Required("file"), source,
+  if (m.summaries) {
+    d->summaries_file = m.summaries->name;
+    const CsvTable t = ReadTable(*m.summaries, m.summaries_node->Required("file"), source,
                                  kSummaryColumns, {"note"}, 1);
-    d.summaries = ReadSummaries(t, *summaries);
+    d->summaries = ReadSummaries(t, *m.summaries);
   }
   // A track holds sensor samples only: notes go in its comment lines.
-  for (std::size_t k = 0; k < tracks.size(); ++k) {
-    const CsvTable t = ReadTable(tracks[k], tracks_node->At(k).Required("file"), source,
-                                 TrackColumns(), {"visibility"}, 2);
-    d.tracks[k].samples = ReadSamples(t, tracks[k]);
+  for (std::size_t k = 0; k < m.tracks.size(); ++k) {
+    const CsvTable t = ReadTable(m.tracks[k], m.tracks_node->At(k).Required("file"),
+                                 source, TrackColumns(), {"visibility"}, 2);
+    d->tracks[k].samples = ReadSamples(t, m.tracks[k]);
   }
+}
+
+LabDataset Parse(const nlohmann::json& document, const std::string& path,
+                 const TextSource& source) {
+  const JsonNode root(document, path);
+  if (!document.is_object()) root.Fail("a lab dataset's manifest is a JSON object");
+  root.ExpectObject({"format", "name", "description", "provenance", "trials", "segments",
+                     "summaries", "tracks"});
+  LabDataset d;
+  d.file = path;
+  d.folder = fs::path(path).parent_path().string();
+  ReadHeader(root, &d);
+  const ManifestTables m = ReadManifest(root, &d);
+  ReadFiles(m, source, &d);
   return d;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 #include "vahf/core/error.h"
 #include "vahf/kinds/kind_functions.h"
@@ -13,11 +14,15 @@
 
 namespace vahf::kinds {
 
-const std::vector<Kind>& Kinds() {
+namespace {
+
+// The designs of cycles, each analysed into a report section (a paper run
+// lists only these).
+std::vector<Kind> DesignKinds() {
   using namespace experiment;
   using namespace report;
   using namespace scene;
-  static const std::vector<Kind> kinds = {
+  return {
       {"table1",
        "Table 1: V, f, r, g, eta, lambda_c and Psi_c at the paper's instants",
        {"paper_table"},
@@ -58,6 +63,16 @@ const std::vector<Kind>& Kinds() {
        CheckPrecision,
        PrecisionRun,
        PrecisionSection},
+  };
+}
+
+// The kinds that are no single design: a paper run of designs, and the kinds
+// with a run of their own.
+std::vector<Kind> OtherKinds() {
+  using namespace experiment;
+  using namespace report;
+  using namespace scene;
+  return {
       {"paper",
        "the paper's experiments, one report",
        {"experiments"},
@@ -95,6 +110,16 @@ const std::vector<Kind>& Kinds() {
        nullptr,
        RunStability},
   };
+}
+
+}  // namespace
+
+const std::vector<Kind>& Kinds() {
+  static const std::vector<Kind> kinds = [] {
+    std::vector<Kind> all = DesignKinds();
+    for (Kind& k : OtherKinds()) all.push_back(std::move(k));
+    return all;
+  }();
   return kinds;
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cstdint>
+#include <utility>
 
 #include "vahf/contact/contact_registry.h"
 #include "vahf/scene/stepper_catalogue.h"
@@ -53,13 +54,15 @@ const std::string& StepperHelp() {
 #define VAHF_COUNT(field) [](Parameters& p) -> int& { return p.field; }
 #define VAHF_TEXT(field) [](Parameters& p) -> std::string& { return p.field; }
 
-std::vector<ParamSpec> MakeTable() {
+// Every number has a finite range: rules that match the numerics. The ranges are wide,
+// orders of magnitude around any physical value, and exist so that no accepted value
+// overflows the model's arithmetic or stalls its integration; where a bound has a
+// source, it says so. Each function below holds one concept's rows, in table order.
+
+// The human factor curves f, g and r (Sec. 3.2, Figs. 3-5).
+std::vector<ParamSpec> SightGlanceReach() {
   using R = ParamRule;
-  // Every number has a finite range: rules that match the numerics. The ranges are wide,
-  // orders of magnitude around any physical value, and exist so that no accepted value
-  // overflows the model's arithmetic or stalls its integration; where a bound has a
-  // source, it says so.
-  std::vector<ParamSpec> t = {
+  std::vector<ParamSpec> rows = {
       {"sight", "value_at_0", "1", R::kClosed, 0, 1, "f at Ang = 0 deg (Fig. 3)",
        VAHF_REAL(sight.value_at_0)},
       {"sight", "plateau_from_deg", "deg", R::kClosed, 0, 180,
@@ -85,6 +88,14 @@ std::vector<ParamSpec> MakeTable() {
        "D3 = this * height (Sec. 3.2.2: 0.68)", VAHF_REAL(reach.d3_height_fraction)},
       {"reach", "value_at_d2", "1", R::kClosed, 0, 1,
        "r at D2 (Fig. 4); r = 1 up to D1, 0 at D3", VAHF_REAL(reach.value_at_d2)},
+  };
+  return rows;
+}
+
+// Fatigue: A by Eq. 4 and Psi_c by Eq. 6.
+std::vector<ParamSpec> Fatigue() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"fatigue", "k", "1", R::kOpenBelow, 0, 1e3, "K of Eq. 4 (Sec. 3.2.3: 6)",
        VAHF_REAL(fatigue.k)},
       // Eq. 6's 1600 kcal is 6.69e6 J; 1e10 J leaves three orders above it.
@@ -92,6 +103,15 @@ std::vector<ParamSpec> MakeTable() {
        "A at which Psi_c = 0 (Eq. 6: 1600 kcal)", VAHF_REAL(fatigue.a_max)},
       {"fatigue", "psi_floor", "1", R::kClosed, 0, 1,
        "Psi_c at or below which the operator is exhausted", VAHF_REAL(fatigue.psi_floor)},
+  };
+  return rows;
+}
+
+// The operator's force: Eq. 7's coefficient and its impedance
+// (docs/design.md decision 2).
+std::vector<ParamSpec> OperatorForce() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"guidance", "kappa", "N/m", R::kOpenBelow, 0, 1e6,
        "assembly force coefficient kappa (Eqs. 7, 8)", VAHF_REAL(guidance.kappa)},
       {"guidance",
@@ -116,6 +136,15 @@ std::vector<ParamSpec> MakeTable() {
       {"guidance", "hand_mass", "kg", R::kClosed, 0, 20,
        "hand and forearm mass moving with the grasped part",
        VAHF_REAL(guidance.hand_mass)},
+  };
+  return rows;
+}
+
+// The assembly torque and where the operator's force acts (docs/design.md
+// decision 3).
+std::vector<ParamSpec> TorqueAndGrasp() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"guidance", "torque_frequency", "rad/s", R::kOpenBelow, 0, 1e4,
        "natural frequency of the assembly torque impedance",
        VAHF_REAL(guidance.torque_frequency)},
@@ -155,6 +184,14 @@ std::vector<ParamSpec> MakeTable() {
       {"guidance", "torque_sigma_deg", "deg", R::kClosed, 0, 180,
        "error of the held orientation per axis at eta = 1",
        VAHF_REAL(guidance.torque_sigma_deg)},
+  };
+  return rows;
+}
+
+// The operator in contact: Eq. 7 passing into Eq. 8.
+std::vector<ParamSpec> ForceInContact() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"guidance", "contact_blend", "1", R::kClosed, 1e-3, 1e3,
        "contact normal force, in part weights, over which Eq. 7 passes into Eq. 8",
        VAHF_REAL(guidance.contact_blend)},
@@ -162,12 +199,28 @@ std::vector<ParamSpec> MakeTable() {
        "largest push the operator adds to overcome friction (Eq. 8); 0: unbounded, the "
        "paper's",
        VAHF_REAL(guidance.max_push)},
+  };
+  return rows;
+}
+
+// The vision error E_i of Eq. 5 (docs/design.md decision 4).
+std::vector<ParamSpec> VisionError() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"guidance", "vision_sigma_depth", "m", R::kClosed, 0, 10,
        "E_i scale along the sight line at eta = 1 (Eq. 5)",
        VAHF_REAL(guidance.vision_sigma_depth)},
       {"guidance", "vision_sigma_lateral", "m", R::kClosed, 0, 10,
        "E_i scale across the sight line at eta = 1",
        VAHF_REAL(guidance.vision_sigma_lateral)},
+  };
+  return rows;
+}
+
+// The contact's normal law, dissipation and friction (docs/design.md decision 7).
+std::vector<ParamSpec> ContactLaw() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"contact", "stiffness", "Pa/m", R::kClosed, 1, 1e13,
        "normal pressure per metre of penetration", VAHF_REAL(contact.stiffness)},
       {"contact", "onset_depth", "m", R::kClosed, 1e-9, 1e-2,
@@ -182,6 +235,15 @@ std::vector<ParamSpec> MakeTable() {
       {"contact", "friction_transition_speed", "m/s", R::kClosed, 1e-6, 1,
        "slip speed of the regularised Coulomb law",
        VAHF_REAL(contact.friction_transition_speed)},
+  };
+  return rows;
+}
+
+// The contact model, its shell and rims, the penetration bound and the
+// steady-load rule of the resolving models.
+std::vector<ParamSpec> ContactModelAndShells() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"contact", "shell_spacing", "m", R::kClosed, 1e-5, 1,
        "point spacing of the moving part's contact shell (at most 1e6 points: see scene "
        "rules)",
@@ -204,6 +266,14 @@ std::vector<ParamSpec> MakeTable() {
       {"contact", "rule_depth_fraction", "1", R::kOpenBelow, 0, 1,
        "share of the bound the largest steady load may sink (resolving, sampled)",
        VAHF_REAL(contact.rule_depth_fraction)},
+  };
+  return rows;
+}
+
+// The oil in the fits: squeeze film and lubricated friction.
+std::vector<ParamSpec> Lubrication() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"contact", "lubricant_viscosity", "Pa s", R::kClosed, 0, 10,
        "dynamic viscosity of the oil in the fits; 0: dry (squeeze film, lubricated "
        "friction)",
@@ -214,6 +284,14 @@ std::vector<ParamSpec> MakeTable() {
       {"contact", "film_floor", "m", R::kClosed, 1e-9, 1e-3,
        "thinnest oil film the squeeze law admits (smooth cap of the eccentricity)",
        VAHF_REAL(contact.film_floor)},
+  };
+  return rows;
+}
+
+// V (Eq. 1): ray cast, given or off.
+std::vector<ParamSpec> Visibility() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"visibility",
        "mode",
        "-",
@@ -231,6 +309,15 @@ std::vector<ParamSpec> MakeTable() {
        "N of the N x N ray grid", nullptr, VAHF_COUNT(visibility.grid)},
       {"visibility", "tessellation_tolerance", "m", R::kClosed, 1e-6, 0.1,
        "chord error of part meshes", VAHF_REAL(visibility.tessellation_tolerance)},
+  };
+  return rows;
+}
+
+// The operator's decision instants and the outcomes decided at them
+// (docs/design.md decisions 1 and 8).
+std::vector<ParamSpec> DecisionsAndOutcomes() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       // 1 ms to 10 s: the range the stability suite spans; the paper's
       // operator decides about every 0.1 s (parameters.h).
       {"simulation", "decision_interval", "s", R::kClosed, 1e-3, 10,
@@ -251,6 +338,14 @@ std::vector<ParamSpec> MakeTable() {
       {"simulation", "divergence_speed", "m/s", R::kClosed, 1e-3, 1e5,
        "a part point faster than this: the integration diverged (numerical_failure)",
        VAHF_REAL(simulation.divergence_speed)},
+  };
+  return rows;
+}
+
+// The integrator and its settings (docs/design.md decision 11).
+std::vector<ParamSpec> Integration() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"simulation", "integrator", "-", R::kChoice, 0, 0, StepperHelp().c_str(), nullptr,
        nullptr, VAHF_TEXT(simulation.integrator), StepperNames()},
       // Simbody's Integrator::setAccuracy asserts 0 < accuracy < 1; below
@@ -269,6 +364,15 @@ std::vector<ParamSpec> MakeTable() {
       {"simulation", "jacobian_interval", "steps", R::kCount, 1, 1e6,
        "CVODE: most steps taken on one Jacobian", nullptr,
        VAHF_COUNT(simulation.jacobian_interval)},
+  };
+  return rows;
+}
+
+// The check of every accepted step's size and the trial's work budget
+// (docs/design.md decision 12).
+std::vector<ParamSpec> StepChecksAndBudget() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
       {"simulation", "step_floor", "s", R::kClosed, 1e-15, 1,
        "an accepted step shorter than this is a warning",
        VAHF_REAL(simulation.step_floor)},
@@ -281,6 +385,16 @@ std::vector<ParamSpec> MakeTable() {
        "queries and the profile edges they examine) ends as step_budget",
        VAHF_REAL(simulation.max_contact_tests)},
   };
+  return rows;
+}
+
+std::vector<ParamSpec> MakeTable() {
+  std::vector<ParamSpec> t;
+  for (std::vector<ParamSpec> (*rows)() :
+       {SightGlanceReach, Fatigue, OperatorForce, TorqueAndGrasp, ForceInContact,
+        VisionError, ContactLaw, ContactModelAndShells, Lubrication, Visibility,
+        DecisionsAndOutcomes, Integration, StepChecksAndBudget})
+    for (ParamSpec& s : rows()) t.push_back(std::move(s));
   return t;
 }
 

@@ -1,4 +1,4 @@
-#include "vahf/sim/cvode_stepper.h"
+#include "vahf/sim/internal/cvode_stepper.h"
 
 #include <cvode/cvode.h>
 #include <fmt/format.h>
@@ -13,10 +13,10 @@
 #include <string>
 
 #include "vahf/core/error.h"
-#include "vahf/sim/decisions.h"
+#include "vahf/sim/internal/decisions.h"
+#include "vahf/sim/internal/step_checks.h"
 #include "vahf/sim/rigid_body.h"
 #include "vahf/sim/rigid_body_jacobian.h"
-#include "vahf/sim/step_checks.h"
 
 namespace vahf::sim::internal {
 namespace {
@@ -178,213 +178,284 @@ BodyState Hermite(double t0, const BodyState& y0, const BodyState& d0, double t1
          (-2 * s3 + 3 * s2) * y1 + (s3 - s2) * h * d1;
 }
 
+void Ok(int flag, const char* what) {
+  VAHF_CHECK(flag >= 0, std::string("CVODE set-up failed: ") + what);
+}
+
+// CVODE set up for c's trial from the part's state `start`: BDF with
+// Newton iteration, the dense linear solver (timed when c asks), the
+// analytic Jacobian unless c asks for difference quotients, root finding on
+// the completion witness, and the scene's order and Jacobian interval.
+void SetUp(TrialContext& c, const contact::RigidMotion& start, Problem* p, Cvode* cv) {
+  const auto& sim = c.params().simulation;
+  Ok(SUNContext_Create(nullptr, &cv->context), "context");
+  cv->y = N_VNew_Serial(kBodyStateSize, cv->context);
+  cv->dky = N_VNew_Serial(kBodyStateSize, cv->context);
+  Of(cv->y) = StateOf(start);
+  cv->mem = CVodeCreate(CV_BDF, cv->context);
+  VAHF_CHECK(cv->mem != nullptr, "CVodeCreate failed");
+  Ok(CVodeInit(cv->mem, Rhs, 0.0, cv->y), "init");
+  Ok(CVodeSetUserData(cv->mem, p), "user data");
+  Ok(CVodeSetErrHandlerFn(cv->mem, OnError, p), "error handler");
+  cv->atol = N_VNew_Serial(kBodyStateSize, cv->context);
+  SetAbsoluteTolerances(c.model, sim.accuracy, sim.velocity_time_scale, cv->atol);
+  Ok(CVodeSVtolerances(cv->mem, sim.accuracy, cv->atol), "tolerances");
+  cv->matrix = SUNDenseMatrix(kBodyStateSize, kBodyStateSize, cv->context);
+  cv->solver = SUNLinSol_Dense(cv->y, cv->matrix, cv->context);
+  if (c.time_phases)
+    cv->solver =
+        TimedDense(cv->solver, c.Timing(&PhaseSeconds::linear_algebra), cv->context);
+  Ok(CVodeSetLinearSolver(cv->mem, cv->solver, cv->matrix), "linear solver");
+  if (!c.difference_quotient_jacobian) Ok(CVodeSetJacFn(cv->mem, Jacobian), "Jacobian");
+  Ok(CVodeRootInit(cv->mem, 1, Root), "root");
+  int falling = -1;
+  Ok(CVodeSetRootDirection(cv->mem, &falling), "root direction");
+  Ok(CVodeSetMaxNumSteps(cv->mem, 1000000), "step limit");
+  Ok(CVodeSetMaxOrd(cv->mem, sim.max_order), "maximum order");
+  Ok(CVodeSetJacEvalFrequency(cv->mem, sim.jacobian_interval), "Jacobian interval");
+}
+
+// CVODE's counters restart with it: the totals of the runs before.
+struct RunTotals {
+  TrialCounters done;
+  long conv_fails = 0;
+
+  // Adds the counters of the run now ending.
+  void Harvest(void* mem) {
+    long steps = 0, error_fails = 0, run_conv_fails = 0, rhs = 0, jac_rhs = 0,
+         jacobians = 0;
+    CVodeGetNumSteps(mem, &steps);
+    CVodeGetNumJacEvals(mem, &jacobians);
+    CVodeGetNumErrTestFails(mem, &error_fails);
+    CVodeGetNumNonlinSolvConvFails(mem, &run_conv_fails);
+    CVodeGetNumRhsEvals(mem, &rhs);
+    CVodeGetNumLinRhsEvals(mem, &jac_rhs);
+    done.steps_taken += steps;
+    done.steps_attempted += steps + error_fails + run_conv_fails;
+    done.error_test_failures += error_fails;
+    done.realizations += rhs + jac_rhs;
+    done.jacobian_evaluations += jacobians;
+    conv_fails += run_conv_fails;
+  }
+};
+
+// One trial stepped by CVODE from its first decision: step by step to each
+// decision instant, every accepted step checked and sampled, restarted at
+// each decision.
+class CvodeRun {
+ public:
+  CvodeRun(TrialContext& c, const Decision& first, const contact::RigidMotion& start,
+           double sample_interval)
+      : c_(c),
+        sim_(c.params().simulation),
+        sample_interval_(sample_interval),
+        deepening_limit_(kDeepeningLimit * c.model.contact.barrier_depth),
+        checks_(c) {
+    p_.c = &c;
+    p_.held = first;
+    SetUp(c, start, &p_, &cv_);
+    c.integrated = true;
+    kept_y_ = Of(cv_.y);
+  }
+
+  // Steps to completion, an ending or the time limit: the time reached.
+  double Run(std::optional<TraceRow>* final_row, TrialCounters* counters) {
+    const double limit = sim_.time_limit, interval = sim_.decision_interval;
+    for (std::int64_t i = 1; !c_.ended && t_ < limit; ++i) {
+      StepTo(std::min(static_cast<double>(i) * interval, limit));
+      if (c_.ended || t_ >= limit) break;
+      if (!Restart()) break;
+    }
+    totals_.Harvest(cv_.mem);
+    counters->steps_taken = totals_.done.steps_taken;
+    counters->steps_attempted = totals_.done.steps_attempted;
+    counters->error_test_failures = totals_.done.error_test_failures;
+    counters->realizations = totals_.done.realizations;
+    counters->jacobian_evaluations = totals_.done.jacobian_evaluations;
+    counters->convergence_failures = totals_.conv_fails;
+    if (c_.completion_row)
+      *final_row = c_.completion_row;
+    else
+      *final_row = FinalRow(c_, t_, MotionOf(Of(cv_.y)));
+    return t_;
+  }
+
+ private:
+  // CVODE's steps up to `stop`, a decision instant or the time limit.
+  void StepTo(double stop) {
+    Ok(CVodeSetStopTime(cv_.mem, stop), "stop time");
+    checks_.Restarted();
+    while (!c_.ended) {
+      const int flag = CVode(cv_.mem, stop, cv_.y, &t_, CV_ONE_STEP);
+      if (flag < 0) {
+        c_.ended = Status::kNumericalFailure;
+        c_.detail = fmt::format("CVODE stopped at t = {} s (flag {}): {}", t_, flag,
+                                p_.last_error);
+        c_.warnings.Note(WarningKind::kIntegratorFailure, t_, c_.detail);
+        break;
+      }
+      if (!Step(flag, stop)) break;
+    }
+  }
+
+  // The step CVODE took to t_, which returned `flag`: taken back, or checked,
+  // sampled and kept. False when stepping to `stop` is over.
+  bool Step(int flag, double stop) {
+    // The accepted step: its checks, then the samples it covers.
+    const BodyState y = Of(cv_.y);
+    const contact::RigidMotion m = MotionOf(y);
+    // The depth check needs the contact alone, not the operator's load.
+    const double depth = IsFinite(m) ? c_.ContactAt(m).max_depth : 0.0;
+    long conv_fails = 0;
+    CVodeGetNumNonlinSolvConvFails(cv_.mem, &conv_fails);
+    const long retries = totals_.conv_fails + conv_fails;
+    double h = 0;
+    CVodeGetLastStep(cv_.mem, &h);
+    const BodyState slope = Slope();
+    if (TakeBack(y, slope, depth, h)) {
+      Retake(h, stop);
+      return true;
+    }
+    if (step_capped_) {  // the retaken step passed: CVODE chooses again
+      Ok(CVodeSetMaxStep(cv_.mem, 0.0), "step cap lifted");
+      step_capped_ = false;
+    }
+    if (!checks_.Accepted(t_, m, depth, h, retries, [&] {
+          return fmt::format("{} nonlinear convergence failures", retries);
+        }))
+      return false;
+    // Samples in (before, t] on the same Hermite path, the one checked
+    // above, rather than CVODE's own interpolant, a polynomial that also
+    // carries the steps before this one.
+    for (; sample_interval_ > 0; ++next_sample_) {
+      const double ts = static_cast<double>(next_sample_) * sample_interval_;
+      if (ts > t_ || ts >= sim_.time_limit) break;
+      const contact::RigidMotion ms = PathAt(y, slope, ts);
+      c_.samples.push_back(c_.SampleRow(ts, ms, c_.LoadsAt(ms, p_.held), p_.held.psi));
+    }
+    kept_y_ = y, kept_t_ = t_, kept_depth_ = depth, kept_slope_ = slope;
+    if (flag == CV_ROOT_RETURN) {
+      c_.ended = Status::kCompleted;
+      c_.completion_time = t_;
+      c_.completion_row = FinalRow(c_, t_, m);  // Table 1's instant d, at this state
+      c_.detail = fmt::format("within {} m and {} deg of the target",
+                              sim_.completion_distance, sim_.completion_angle_deg);
+    }
+    return !(flag == CV_TSTOP_RETURN || t_ >= stop);
+  }
+
+  // The slope at the step's end (CVODE's), and at its start once a step from
+  // it has been taken since a (re)start: the step's cubic Hermite is the path
+  // checked and sampled, when either is asked for; zero otherwise.
+  BodyState Slope() {
+    BodyState slope = BodyState::Zero();
+    if (deepening_limit_ > 0 || sample_interval_ > 0) {
+      CVodeGetDky(cv_.mem, t_, 1, cv_.dky);
+      slope = Of(cv_.dky);
+      if (!kept_slope_known_) {  // the first step since a (re)start
+        CVodeGetDky(cv_.mem, kept_t_, 1, cv_.dky);
+        kept_slope_ = Of(cv_.dky);
+        kept_slope_known_ = true;
+      }
+    }
+    return slope;
+  }
+
+  // The motion at ts on the step's path from the kept state to y.
+  contact::RigidMotion PathAt(const BodyState& y, const BodyState& slope,
+                              double ts) const {
+    BodyState ys = Hermite(kept_t_, kept_y_, kept_slope_, t_, y, slope, ts);
+    NormaliseQuaternion(&ys);
+    return MotionOf(ys);
+  }
+
+  // A step that carries the contact deeper than kDeepeningLimit of the
+  // barrier has jumped the contact's onset: CVODE's error test, in units of
+  // position, cannot see micrometres, and the state it accepted lies in the
+  // barrier's steep part, where the next steps' corrector fails
+  // (docs/physics.md, Integrators). So has a step whose path passes through a
+  // contact that neither end touches (the peg's rim grazing the bore's
+  // chamfer within one step, 14 um deep between clear ends): its midpoint is
+  // checked whenever the step moves the part's farthest point by more than
+  // the limit, which no step in contact does. Either is taken back and
+  // retaken with a quarter of the step; the depth is continuous in time, so
+  // the retakes end. Not below the step floor.
+  bool TakeBack(const BodyState& y, const BodyState& slope, double depth,
+                double h) const {
+    bool retake = false;
+    if (deepening_limit_ > 0 && h > sim_.step_floor) {
+      retake = depth - kept_depth_ > deepening_limit_;
+      if (!retake && Travel(kept_y_, y, c_.model.bounding_radius) > deepening_limit_) {
+        const contact::RigidMotion mid = PathAt(y, slope, kept_t_ + 0.5 * (t_ - kept_t_));
+        retake =
+            IsFinite(mid) &&
+            c_.ContactAt(mid).max_depth - std::max(depth, kept_depth_) > deepening_limit_;
+      }
+    }
+    return retake;
+  }
+
+  // Back to the kept state, CVODE restarted there with its step capped at a
+  // quarter of h.
+  void Retake(double h, double stop) {
+    totals_.Harvest(cv_.mem);
+    --totals_.done.steps_taken;  // attempted, not taken
+    Of(cv_.y) = kept_y_;
+    t_ = kept_t_;
+    Ok(CVodeReInit(cv_.mem, t_, cv_.y), "retake");
+    Ok(CVodeSetStopTime(cv_.mem, stop), "stop time");
+    Ok(CVodeSetMaxStep(cv_.mem, 0.25 * h), "retake step");
+    step_capped_ = true;
+    checks_.Restarted();
+  }
+
+  // The decision at t_i: what the operator holds from now on; the
+  // right-hand side changed, so CVODE restarts from this state. False when
+  // the decision ended the trial.
+  bool Restart() {
+    BodyState y = Of(cv_.y);
+    NormaliseQuaternion(&y);
+    Of(cv_.y) = y;
+    if (const std::optional<Decision> d = Decide(c_, t_, MotionOf(y))) p_.held = *d;
+    if (c_.ended) return false;
+    totals_.Harvest(cv_.mem);
+    Ok(CVodeReInit(cv_.mem, t_, cv_.y), "restart");
+    kept_y_ = y, kept_t_ = t_, kept_slope_known_ = false;
+    return true;
+  }
+
+  TrialContext& c_;
+  const scene::SimulationParams& sim_;
+  const double sample_interval_;
+  const double deepening_limit_;
+  Problem p_;  // outlives cv_, whose callbacks see it
+  Cvode cv_;
+  RunTotals totals_;
+  StepChecks checks_;
+  std::int64_t next_sample_ = 1;
+  double t_ = 0;
+  // The last step kept, for a step taken back.
+  BodyState kept_y_;
+  double kept_t_ = 0, kept_depth_ = 0;
+  bool step_capped_ = false;
+  // Its slope, once a step from it has been taken since a (re)start.
+  BodyState kept_slope_ = BodyState::Zero();
+  bool kept_slope_known_ = false;
+};
+
 }  // namespace
 
 double IntegrateWithCvode(TrialContext& c, double sample_interval,
                           std::optional<TraceRow>* final_row, TrialCounters* counters) {
-  const auto& sim = c.params().simulation;
-  const TrialModel& model = c.model;
   contact::RigidMotion start;
-  start.pose = model.part->initial.Transform();
+  start.pose = c.model.part->initial.Transform();
   const std::optional<Decision> first = Decide(c, 0.0, start);
   if (c.ended || !first) {  // ended at the first decision
     *final_row = FinalRow(c, 0.0, start);
     return 0.0;
   }
-  Problem p;
-  p.c = &c;
-  p.held = *first;
-  {
-    Cvode cv;
-    const auto ok = [&](int flag, const char* what) {
-      VAHF_CHECK(flag >= 0, std::string("CVODE set-up failed: ") + what);
-    };
-    ok(SUNContext_Create(nullptr, &cv.context), "context");
-    cv.y = N_VNew_Serial(kBodyStateSize, cv.context);
-    cv.dky = N_VNew_Serial(kBodyStateSize, cv.context);
-    Of(cv.y) = StateOf(start);
-    cv.mem = CVodeCreate(CV_BDF, cv.context);
-    VAHF_CHECK(cv.mem != nullptr, "CVodeCreate failed");
-    ok(CVodeInit(cv.mem, Rhs, 0.0, cv.y), "init");
-    ok(CVodeSetUserData(cv.mem, &p), "user data");
-    ok(CVodeSetErrHandlerFn(cv.mem, OnError, &p), "error handler");
-    cv.atol = N_VNew_Serial(kBodyStateSize, cv.context);
-    SetAbsoluteTolerances(model, sim.accuracy, sim.velocity_time_scale, cv.atol);
-    ok(CVodeSVtolerances(cv.mem, sim.accuracy, cv.atol), "tolerances");
-    cv.matrix = SUNDenseMatrix(kBodyStateSize, kBodyStateSize, cv.context);
-    cv.solver = SUNLinSol_Dense(cv.y, cv.matrix, cv.context);
-    if (c.time_phases)
-      cv.solver =
-          TimedDense(cv.solver, c.Timing(&PhaseSeconds::linear_algebra), cv.context);
-    ok(CVodeSetLinearSolver(cv.mem, cv.solver, cv.matrix), "linear solver");
-    if (!c.difference_quotient_jacobian) ok(CVodeSetJacFn(cv.mem, Jacobian), "Jacobian");
-    ok(CVodeRootInit(cv.mem, 1, Root), "root");
-    int falling = -1;
-    ok(CVodeSetRootDirection(cv.mem, &falling), "root direction");
-    ok(CVodeSetMaxNumSteps(cv.mem, 1000000), "step limit");
-    ok(CVodeSetMaxOrd(cv.mem, sim.max_order), "maximum order");
-    ok(CVodeSetJacEvalFrequency(cv.mem, sim.jacobian_interval), "Jacobian interval");
-    c.integrated = true;
-
-    // CVODE's counters restart with it: the totals of the runs before.
-    TrialCounters done;
-    long run_conv_fails = 0;
-    const auto harvest = [&] {
-      long steps = 0, error_fails = 0, conv_fails = 0, rhs = 0, jac_rhs = 0,
-           jacobians = 0;
-      CVodeGetNumSteps(cv.mem, &steps);
-      CVodeGetNumJacEvals(cv.mem, &jacobians);
-      CVodeGetNumErrTestFails(cv.mem, &error_fails);
-      CVodeGetNumNonlinSolvConvFails(cv.mem, &conv_fails);
-      CVodeGetNumRhsEvals(cv.mem, &rhs);
-      CVodeGetNumLinRhsEvals(cv.mem, &jac_rhs);
-      done.steps_taken += steps;
-      done.steps_attempted += steps + error_fails + conv_fails;
-      done.error_test_failures += error_fails;
-      done.realizations += rhs + jac_rhs;
-      done.jacobian_evaluations += jacobians;
-      run_conv_fails += conv_fails;
-    };
-    StepChecks checks(c);
-    const double limit = sim.time_limit, interval = sim.decision_interval;
-    std::int64_t next_sample = 1;
-    double t = 0;
-    // The last step kept, for a step taken back (below).
-    BodyState kept_y = Of(cv.y);
-    double kept_t = 0, kept_depth = 0;
-    bool step_capped = false;
-    // Its slope, once a step from it has been taken since a (re)start.
-    BodyState kept_slope = BodyState::Zero();
-    bool kept_slope_known = false;
-    const double deepening_limit = kDeepeningLimit * model.contact.barrier_depth;
-    for (std::int64_t i = 1; !c.ended && t < limit; ++i) {
-      const double stop = std::min(static_cast<double>(i) * interval, limit);
-      ok(CVodeSetStopTime(cv.mem, stop), "stop time");
-      checks.Restarted();
-      int flag = CV_SUCCESS;
-      while (!c.ended) {
-        flag = CVode(cv.mem, stop, cv.y, &t, CV_ONE_STEP);
-        if (flag < 0) {
-          c.ended = Status::kNumericalFailure;
-          c.detail = fmt::format("CVODE stopped at t = {} s (flag {}): {}", t, flag,
-                                 p.last_error);
-          c.warnings.Note(WarningKind::kIntegratorFailure, t, c.detail);
-          break;
-        }
-        // The accepted step: its checks, then the samples it covers.
-        const BodyState y = Of(cv.y);
-        const contact::RigidMotion m = MotionOf(y);
-        // The depth check needs the contact alone, not the operator's load.
-        const double depth = IsFinite(m) ? c.ContactAt(m).max_depth : 0.0;
-        long conv_fails = 0;
-        CVodeGetNumNonlinSolvConvFails(cv.mem, &conv_fails);
-        const long retries = run_conv_fails + conv_fails;
-        double h = 0;
-        CVodeGetLastStep(cv.mem, &h);
-        // The step's two ends and their slopes (CVODE's, at each end): its
-        // cubic Hermite is the path checked and sampled below, when either
-        // is asked for.
-        BodyState slope = BodyState::Zero();
-        if (deepening_limit > 0 || sample_interval > 0) {
-          CVodeGetDky(cv.mem, t, 1, cv.dky);
-          slope = Of(cv.dky);
-          if (!kept_slope_known) {  // the first step since a (re)start
-            CVodeGetDky(cv.mem, kept_t, 1, cv.dky);
-            kept_slope = Of(cv.dky);
-            kept_slope_known = true;
-          }
-        }
-        const auto path = [&](double ts) {
-          BodyState ys = Hermite(kept_t, kept_y, kept_slope, t, y, slope, ts);
-          NormaliseQuaternion(&ys);
-          return MotionOf(ys);
-        };
-        // A step that carries the contact deeper than kDeepeningLimit of the
-        // barrier has jumped the contact's onset: CVODE's error test, in
-        // units of position, cannot see micrometres, and the state it
-        // accepted lies in the barrier's steep part, where the next steps'
-        // corrector fails (docs/physics.md, Integrators). So has a step whose
-        // path passes through a contact that neither end touches (the peg's
-        // rim grazing the bore's chamfer within one step, 14 um deep between
-        // clear ends): its midpoint is checked whenever the step moves the
-        // part's farthest point by more than the limit, which no step in
-        // contact does. Either is taken back and retaken with a quarter of
-        // the step; the depth is continuous in time, so the retakes end. Not
-        // below the step floor.
-        bool retake = false;
-        if (deepening_limit > 0 && h > sim.step_floor) {
-          retake = depth - kept_depth > deepening_limit;
-          if (!retake && Travel(kept_y, y, model.bounding_radius) > deepening_limit) {
-            const contact::RigidMotion mid = path(kept_t + 0.5 * (t - kept_t));
-            retake = IsFinite(mid) &&
-                     c.ContactAt(mid).max_depth - std::max(depth, kept_depth) >
-                         deepening_limit;
-          }
-        }
-        if (retake) {
-          harvest();
-          --done.steps_taken;  // attempted, not taken
-          Of(cv.y) = kept_y;
-          t = kept_t;
-          ok(CVodeReInit(cv.mem, t, cv.y), "retake");
-          ok(CVodeSetStopTime(cv.mem, stop), "stop time");
-          ok(CVodeSetMaxStep(cv.mem, 0.25 * h), "retake step");
-          step_capped = true;
-          checks.Restarted();
-          continue;
-        }
-        if (step_capped) {  // the retaken step passed: CVODE chooses again
-          ok(CVodeSetMaxStep(cv.mem, 0.0), "step cap lifted");
-          step_capped = false;
-        }
-        if (!checks.Accepted(t, m, depth, h, retries, [&] {
-              return fmt::format("{} nonlinear convergence failures", retries);
-            }))
-          break;
-        // Samples in (before, t] on the same Hermite path, the one checked
-        // above, rather than CVODE's own interpolant, a polynomial that also
-        // carries the steps before this one.
-        for (; sample_interval > 0; ++next_sample) {
-          const double ts = static_cast<double>(next_sample) * sample_interval;
-          if (ts > t || ts >= limit) break;
-          const contact::RigidMotion ms = path(ts);
-          c.samples.push_back(c.SampleRow(ts, ms, c.LoadsAt(ms, p.held), p.held.psi));
-        }
-        kept_y = y, kept_t = t, kept_depth = depth, kept_slope = slope;
-        if (flag == CV_ROOT_RETURN) {
-          c.ended = Status::kCompleted;
-          c.completion_time = t;
-          c.completion_row = FinalRow(c, t, m);  // Table 1's instant d, at this state
-          c.detail = fmt::format("within {} m and {} deg of the target",
-                                 sim.completion_distance, sim.completion_angle_deg);
-        }
-        if (flag == CV_TSTOP_RETURN || t >= stop) break;
-      }
-      if (c.ended || t >= limit) break;
-      // The decision at t_i: what the operator holds from now on; the
-      // right-hand side changed, so CVODE restarts from this state.
-      BodyState y = Of(cv.y);
-      NormaliseQuaternion(&y);
-      Of(cv.y) = y;
-      if (const std::optional<Decision> d = Decide(c, t, MotionOf(y))) p.held = *d;
-      if (c.ended) break;
-      harvest();
-      ok(CVodeReInit(cv.mem, t, cv.y), "restart");
-      kept_y = y, kept_t = t, kept_slope_known = false;
-    }
-    harvest();
-    counters->steps_taken = done.steps_taken;
-    counters->steps_attempted = done.steps_attempted;
-    counters->error_test_failures = done.error_test_failures;
-    counters->realizations = done.realizations;
-    counters->jacobian_evaluations = done.jacobian_evaluations;
-    counters->convergence_failures = run_conv_fails;
-    if (c.completion_row)
-      *final_row = c.completion_row;
-    else
-      *final_row = FinalRow(c, t, MotionOf(Of(cv.y)));
-    return t;
-  }
+  CvodeRun run(c, *first, start, sample_interval);
+  return run.Run(final_row, counters);
 }
 
 }  // namespace vahf::sim::internal

@@ -1,4 +1,4 @@
-#include "vahf/sim/decisions.h"
+#include "vahf/sim/internal/decisions.h"
 
 #include <cmath>
 
@@ -7,6 +7,68 @@
 #include "vahf/human/fatigue.h"
 
 namespace vahf::sim::internal {
+
+namespace {
+
+// The outcomes decided at decision i (outcome.h), from the factors f, Psi,
+// and whether the part is in contact: may end the trial.
+void CheckOutcomes(TrialContext& c, std::int64_t i, double time,
+                   const contact::RigidMotion& m, const human::FactorValues& f,
+                   double psi, bool in_contact) {
+  const auto& p = c.params();
+  DecisionFacts facts;
+  facts.time = time;
+  facts.operator_acts = c.model.operator_acts;
+  facts.psi = psi;
+  facts.work = c.work;
+  facts.shoulder_distance = f.shoulder_distance;
+  facts.reach_limit = c.model.reach_limit;
+  facts.in_contact = in_contact;
+  facts.distance = c.model.DistanceToTarget(m);
+  c.progress.Observe(i == 0, facts.time, facts.distance, facts.in_contact,
+                     p.simulation.jam_progress);
+  if (std::optional<Ending> end =
+          CheckOperator(facts, p.fatigue, p.simulation, c.progress))
+    c.End(std::move(*end));
+}
+
+// What the operator holds from decision i: Eq. 5's estimated target and the
+// held orientation, keyed by {seed, trial} and i; the part's own pose once
+// the trial has ended.
+void Draw(TrialContext& c, std::int64_t i, const contact::RigidMotion& m,
+          const Vector3d& centre, const human::FactorValues& f, Decision* d) {
+  const TrialModel& model = c.model;
+  const auto& p = c.params();
+  const Vector3d T = m.pose.translation();
+  if (!c.ended) {
+    d->estimated_target = guidance::DrawEstimatedTarget(
+        p.guidance, c.key, static_cast<std::uint64_t>(i), model.part->target.position, T,
+        centre - model.posture.eye, f.eta, f.lambda_c, d->psi);
+    d->held_orientation =
+        guidance::DrawHeldOrientation(p.guidance, c.key, static_cast<std::uint64_t>(i),
+                                      model.part->target.Rotation(), f.eta);
+  } else {
+    d->estimated_target = T;
+    d->held_orientation = m.pose.linear();
+  }
+}
+
+// The trace row of a decision at `time`.
+void RecordDecision(TrialContext& c, double time, const contact::RigidMotion& m,
+                    const Vector3d& force, const contact::ContactForces& cf,
+                    const human::FactorValues& f, double psi) {
+  TraceRow row = TrialContext::PoseRow(time, m);
+  row.assembly_force = force;
+  row.contact_force = cf.normal_force;
+  row.friction_force = cf.friction_force;
+  row.penetration = cf.max_depth;
+  row.factors = f;
+  row.work = c.work;
+  row.psi = psi;
+  c.trace.push_back(row);
+}
+
+}  // namespace
 
 std::optional<Decision> Decide(TrialContext& c, double time,
                                const contact::RigidMotion& m) {
@@ -42,51 +104,14 @@ std::optional<Decision> Decide(TrialContext& c, double time,
   d.psi = psi;
   const contact::ContactForces cf = c.ContactAt(m);
   const bool in_contact = cf.in_contact() && cf.normal_force.norm() > 0;
-
-  // Outcomes decided at this instant (outcome.h).
-  DecisionFacts facts;
-  facts.time = time;
-  facts.operator_acts = model.operator_acts;
-  facts.psi = psi;
-  facts.work = c.work;
-  facts.shoulder_distance = f.shoulder_distance;
-  facts.reach_limit = model.reach_limit;
-  facts.in_contact = in_contact;
-  facts.distance = model.DistanceToTarget(m);
-  c.progress.Observe(i == 0, facts.time, facts.distance, facts.in_contact,
-                     p.simulation.jam_progress);
-  if (std::optional<Ending> end =
-          CheckOperator(facts, p.fatigue, p.simulation, c.progress))
-    c.End(std::move(*end));
-
-  // Eq. 5 and the held orientation, keyed by {seed, trial} and decision i.
-  if (!c.ended) {
-    d.estimated_target = guidance::DrawEstimatedTarget(
-        p.guidance, c.key, static_cast<std::uint64_t>(i), model.part->target.position, T,
-        centre - model.posture.eye, f.eta, f.lambda_c, psi);
-    d.held_orientation =
-        guidance::DrawHeldOrientation(p.guidance, c.key, static_cast<std::uint64_t>(i),
-                                      model.part->target.Rotation(), f.eta);
-  } else {
-    d.estimated_target = T;
-    d.held_orientation = m.pose.linear();
-  }
+  CheckOutcomes(c, i, time, m, f, psi, in_contact);
+  Draw(c, i, m, centre, f, &d);
 
   Vector3d force, torque;
   model.OperatorLoad(m, d, cf, &force, &torque);
   c.last_force = force.norm();
   c.max_penetration = std::max(c.max_penetration, cf.max_depth);
-  if (c.record_trace) {
-    TraceRow row = TrialContext::PoseRow(time, m);
-    row.assembly_force = force;
-    row.contact_force = cf.normal_force;
-    row.friction_force = cf.friction_force;
-    row.penetration = cf.max_depth;
-    row.factors = f;
-    row.work = c.work;
-    row.psi = psi;
-    c.trace.push_back(row);
-  }
+  if (c.record_trace) RecordDecision(c, time, m, force, cf, f, psi);
   return d;
 }
 

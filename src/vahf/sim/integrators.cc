@@ -1,4 +1,4 @@
-#include "vahf/sim/integrators.h"
+#include "vahf/sim/internal/integrators.h"
 
 #include <Simbody.h>
 

@@ -1,8 +1,8 @@
-#include "vahf/sim/simbody_trial.h"
+#include "vahf/sim/internal/simbody_trial.h"
 
 #include <fmt/format.h>
 
-#include "vahf/sim/decisions.h"
+#include "vahf/sim/internal/decisions.h"
 
 namespace vahf::sim::internal {
 namespace {

@@ -1,4 +1,4 @@
-#include "vahf/sim/step_checks.h"
+#include "vahf/sim/internal/step_checks.h"
 
 #include <fmt/format.h>
 

@@ -1,8 +1,8 @@
 #include "vahf/sim/stepper_registry.h"
 
 #include "vahf/core/error.h"
-#include "vahf/sim/cvode_stepper.h"
-#include "vahf/sim/integrators.h"
+#include "vahf/sim/internal/cvode_stepper.h"
+#include "vahf/sim/internal/integrators.h"
 
 namespace vahf::sim {
 namespace {

@@ -1,16 +1,16 @@
-#include "vahf/sim/stepping.h"
+#include "vahf/sim/internal/stepping.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdint>
 
-#include "vahf/sim/step_checks.h"
+#include "vahf/sim/internal/step_checks.h"
 
 namespace vahf::sim::internal {
 namespace {
 
-// The checks of step_checks.h at an accepted Simbody step, `s` realized
+// The checks of internal/step_checks.h at an accepted Simbody step, `s` realized
 // through Acceleration (so the force element's loads are in its cache).
 bool Accepted(SimbodyTrial& t, StepChecks& checks, const SimTK::Integrator& integ,
               const SimTK::State& s) {

@@ -8,10 +8,10 @@
 
 #include "vahf/core/thread_cpu.h"
 #include "vahf/core/warnings.h"
+#include "vahf/sim/internal/simbody_trial.h"
+#include "vahf/sim/internal/stepping.h"
 #include "vahf/sim/internal/trial_context.h"
-#include "vahf/sim/simbody_trial.h"
 #include "vahf/sim/stepper_registry.h"
-#include "vahf/sim/stepping.h"
 
 namespace vahf::sim {
 namespace {

@@ -7,7 +7,7 @@
 // "assembled", and the parts assembled earlier in the sequence, at their
 // targets; no contact work at all when there is nothing to touch), its
 // visibility meshes, its operator. Each trial builds its Simbody system
-// (simbody_trial.h): the part on a free mobilizer, gravity, and the model's
+// (internal/simbody_trial.h): the part on a free mobilizer, gravity, and the model's
 // contact and operator loads.
 #pragma once
 

@@ -86,6 +86,75 @@ Vector3d LeadingEnd(const scene::Part& part) {
   return Vector3d(0, 0, approach.z() < 0 ? lo : hi);
 }
 
+// The moving mass: the part, and the operator's hand with it when the
+// operator acts; their centre of mass and inertia.
+void SetMass(const scene::Scene& scene, const scene::Part& part, TrialModel* m) {
+  m->part_mass = part.mass;
+  m->hand_mass = m->operator_acts ? scene.params.guidance.hand_mass : 0.0;
+  m->mass = m->part_mass + m->hand_mass;
+  m->part_com = part.mass_properties.centroid;
+  m->bounding_radius = part.mass_properties.bounding_radius;
+  // Parallel-axis sum of the part (principal axes = part axes) and the hand
+  // point mass, about their common centre of mass.
+  m->com = (m->part_mass * m->part_com + m->hand_mass * part.grasp) / m->mass;
+  const auto shift = [](double mass, const Vector3d& d) {
+    return (mass * (d.squaredNorm() * Matrix3d::Identity() - d * d.transpose())).eval();
+  };
+  m->inertia_body =
+      Matrix3d((part.density * part.mass_properties.inertia_per_density).asDiagonal()) +
+      shift(m->part_mass, m->part_com - m->com) +
+      shift(m->hand_mass, part.grasp - m->com);
+}
+
+// The assembly torque's law (docs/design.md decision 3): the inertial servo
+// as the scene sets it, or the wrist's stiffness and damping in its terms.
+void SetTorqueLaw(const guidance::GuidanceParams& guidance, TrialModel* m) {
+  m->torque_params = guidance;
+  m->torque_inertia_body = m->inertia_body;
+  if (guidance.torque_law == "wrist") {
+    const double k = guidance.wrist_stiffness;
+    m->torque_params.torque_frequency = std::sqrt(k);
+    m->torque_params.torque_damping_ratio = guidance.wrist_damping / (2 * std::sqrt(k));
+    m->torque_inertia_body = Matrix3d::Identity();
+  }
+}
+
+// The penetration bound and the contact model of the part against the fixed
+// parts (none when nothing is fixed: no shell, no contact work).
+void SetContact(const scene::Scene& scene, const scene::Part& part,
+                const std::vector<FixedPart>& fixed, TrialModel* m) {
+  const auto& params = scene.params;
+  // The penetration bound: a fraction of the smallest radial clearance
+  // between the part at its target and a fixed part (none: no bound).
+  for (const FixedPart& f : fixed)
+    if (const auto gap = geometry::SmallestRadialClearance(
+            part.shape, part.target.Transform(), f.part->shape, f.pose))
+      if (m->clearance == 0 || *gap < m->clearance) m->clearance = *gap;
+  m->penetration_bound = params.contact.penetration_fraction * m->clearance;
+  if (fixed.empty()) return;
+  contact::ContactSetup setup;
+  setup.moving = {&part.shape, Eigen::Isometry3d::Identity(), part.friction,
+                  part.mass_properties.bounding_radius};
+  for (const FixedPart& f : fixed)
+    setup.fixed.push_back({&f.part->shape, f.pose, f.part->friction,
+                           f.part->mass_properties.bounding_radius});
+  setup.params = params.contact;
+  setup.penetration_bound = m->penetration_bound;
+  // The largest steady load: the operator's Eq. 7 pull at the start plus
+  // the part's weight.
+  const double pull =
+      m->operator_acts
+          ? params.guidance.kappa * (part.initial.position - part.target.position).norm()
+          : 0.0;
+  setup.steady_load = pull + part.mass * scene.gravity.norm();
+  try {
+    m->contact = contact::BuildContact(params.contact.model, setup);
+  } catch (const InputError& e) {  // the contact knows the rule, not the scene
+    throw InputError(scene.file, e.where(), e.value(),
+                     fmt::format("{} (part '{}')", e.rule(), part.name));
+  }
+}
+
 }  // namespace
 
 std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
@@ -107,31 +176,8 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
   m.part = &part;
   m.sequence_position = sequence_position;
   m.operator_acts = params.guidance.mode == "operator";
-  m.part_mass = part.mass;
-  m.hand_mass = m.operator_acts ? params.guidance.hand_mass : 0.0;
-  m.mass = m.part_mass + m.hand_mass;
-  m.part_com = part.mass_properties.centroid;
-  m.bounding_radius = part.mass_properties.bounding_radius;
-  {
-    // Parallel-axis sum of the part (principal axes = part axes) and the hand
-    // point mass, about their common centre of mass.
-    m.com = (m.part_mass * m.part_com + m.hand_mass * part.grasp) / m.mass;
-    const auto shift = [](double mass, const Vector3d& d) {
-      return (mass * (d.squaredNorm() * Matrix3d::Identity() - d * d.transpose())).eval();
-    };
-    m.inertia_body =
-        Matrix3d((part.density * part.mass_properties.inertia_per_density).asDiagonal()) +
-        shift(m.part_mass, m.part_com - m.com) + shift(m.hand_mass, part.grasp - m.com);
-  }
-  m.torque_params = params.guidance;
-  m.torque_inertia_body = m.inertia_body;
-  if (params.guidance.torque_law == "wrist") {
-    const double k = params.guidance.wrist_stiffness;
-    m.torque_params.torque_frequency = std::sqrt(k);
-    m.torque_params.torque_damping_ratio =
-        params.guidance.wrist_damping / (2 * std::sqrt(k));
-    m.torque_inertia_body = Matrix3d::Identity();
-  }
+  SetMass(scene, part, &m);
+  SetTorqueLaw(params.guidance, &m);
   m.compliance_at_leading_end = params.guidance.compliance_centre == "leading_end";
   m.leading_end = LeadingEnd(part);
   m.revolved = std::holds_alternative<geometry::RevolvedProfile>(part.shape);
@@ -142,36 +188,7 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
   m.blend_force = params.guidance.contact_blend * part.mass * scene::kStandardGravity;
 
   const std::vector<FixedPart> fixed = FixedParts(scene, sequence_position);
-  // The penetration bound: a fraction of the smallest radial clearance
-  // between the part at its target and a fixed part (none: no bound).
-  for (const FixedPart& f : fixed)
-    if (const auto gap = geometry::SmallestRadialClearance(
-            part.shape, part.target.Transform(), f.part->shape, f.pose))
-      if (m.clearance == 0 || *gap < m.clearance) m.clearance = *gap;
-  m.penetration_bound = params.contact.penetration_fraction * m.clearance;
-  if (!fixed.empty()) {  // nothing to touch: no shell, no contact work
-    contact::ContactSetup setup;
-    setup.moving = {&part.shape, Eigen::Isometry3d::Identity(), part.friction,
-                    part.mass_properties.bounding_radius};
-    for (const FixedPart& f : fixed)
-      setup.fixed.push_back({&f.part->shape, f.pose, f.part->friction,
-                             f.part->mass_properties.bounding_radius});
-    setup.params = params.contact;
-    setup.penetration_bound = m.penetration_bound;
-    // The largest steady load: the operator's Eq. 7 pull at the start plus
-    // the part's weight.
-    const double pull = m.operator_acts
-                            ? params.guidance.kappa *
-                                  (part.initial.position - part.target.position).norm()
-                            : 0.0;
-    setup.steady_load = pull + part.mass * scene.gravity.norm();
-    try {
-      m.contact = contact::BuildContact(params.contact.model, setup);
-    } catch (const InputError& e) {  // the contact knows the rule, not the scene
-      throw InputError(scene.file, e.where(), e.value(),
-                       fmt::format("{} (part '{}')", e.rule(), part.name));
-    }
-  }
+  SetContact(scene, part, fixed, &m);
   // Eq. 1 by ray casting only when the scene asks for it and something could
   // hide the part; a scene with V given or switched off tessellates nothing.
   if (params.visibility.mode == "raycast" && !fixed.empty())

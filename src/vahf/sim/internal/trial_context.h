@@ -1,8 +1,8 @@
 // What one trial holds while it runs, without Simbody: the shared, read-only
 // model of its part (trial_model.h) and everything the trial mutates, so that
 // trials run concurrently on the runner's threads without sharing state.
-// Internal to src/vahf/sim: the decisions (decisions.h), the Simbody model
-// (simbody_trial.h) and the stepping loop (stepping.h) work on it.
+// The decisions (decisions.h), the Simbody model (simbody_trial.h) and the
+// steppers (stepping.h, cvode_stepper.h) work on it.
 #pragma once
 
 #include <Eigen/Core>

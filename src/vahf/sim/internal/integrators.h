@@ -1,6 +1,7 @@
 // Simbody's integrators, one factory each (their entries in scene/steppers.def):
 // the SimTK::Integrator the Simbody driver (trial.cc) steps between decisions,
-// set from the scene's simulation parameters. Internal to src/vahf/sim.
+// set from the scene's simulation parameters; each is an IntegratorFactory
+// (stepper_registry.h).
 #pragma once
 
 #include <memory>
@@ -13,9 +14,6 @@ class System;
 }  // namespace SimTK
 
 namespace vahf::sim::internal {
-
-using IntegratorFactory = std::unique_ptr<SimTK::Integrator> (*)(
-    const SimTK::System& system, const scene::SimulationParams& settings);
 
 // Explicit and error controlled at relative accuracy settings.accuracy.
 std::unique_ptr<SimTK::Integrator> MakeRungeKuttaMerson(

@@ -6,7 +6,7 @@
 
 #include <Simbody.h>
 
-#include "vahf/sim/simbody_trial.h"
+#include "vahf/sim/internal/simbody_trial.h"
 
 namespace vahf::sim::internal {
 

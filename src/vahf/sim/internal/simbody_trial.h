@@ -2,7 +2,7 @@
 // body on a free mobilizer, gravity, one force element that applies the trial
 // model's contact and operator loads (TrialModel::LoadsAt) with the held
 // decision as a discrete variable, the decision instants as a periodic event
-// and completion as a triggered one. Internal to src/vahf/sim.
+// and completion as a triggered one.
 #pragma once
 
 #include <Simbody.h>
