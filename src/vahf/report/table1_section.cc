@@ -161,6 +161,19 @@ Figure EtaFigure(const std::vector<std::string>& parts, const InstantSamples& sa
   return f;
 }
 
+// What the table shows: the instants, the units, how many cycles it covers.
+std::string Table1Intro(const experiment::ExperimentRun& run, int completed) {
+  return fmt::format(
+      "## Table 1: human factors at the instants of Fig. 9\n\n"
+      "{} of {} cycles completed; each cell is the virtual mean over them, the paper's "
+      "value in parentheses. a: first contact, b: largest tilt in contact, c: "
+      "realigned (tilt below {} deg), d: completion. t is counted from the start of "
+      "the cycle, as in the paper; A is in J (the paper prints kcal, "
+      "docs/human-factors.md).\n\n",
+      completed, run.run.records.size(),
+      run.file->scene.params.simulation.completion_angle_deg);
+}
+
 }  // namespace
 
 Section Table1Section(const experiment::ExperimentRun& run) {
@@ -193,19 +206,7 @@ Section Table1Section(const experiment::ExperimentRun& run) {
   out.summary = {{"completed_cycles", samples.completed},
                  {"cycles", run.run.records.size()},
                  {"claims", claims}};
-  out.markdown =
-      fmt::format(
-          "## Table 1: human factors at the instants of Fig. 9\n\n"
-          "{} of {} cycles completed; each cell is the virtual mean over them, the "
-          "paper's "
-          "value in parentheses. a: first contact, b: largest tilt in contact, c: "
-          "realigned "
-          "(tilt below {} deg), d: completion. t is counted from the start of the cycle, "
-          "as "
-          "in the paper; A is in J (the paper prints kcal, docs/human-factors.md).\n\n",
-          samples.completed, run.run.records.size(),
-          scene.params.simulation.completion_angle_deg) +
-      ToMarkdown(md);
+  out.markdown = Table1Intro(run, samples.completed) + ToMarkdown(md);
   out.plots.push_back({"plots/table1_eta.png",
                        "eta at the instants a-d of each part, virtual and paper",
                        GnuplotScript(EtaFigure(parts, samples, paper))});
