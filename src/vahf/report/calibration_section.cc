@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "vahf/report/figure.h"
+#include "vahf/report/markdown.h"
 #include "vahf/scene/overrides.h"
 #include "vahf/scene/parameter_table.h"
 
@@ -13,6 +15,204 @@ namespace {
 double Sd(double variance) { return std::sqrt(variance); }
 
 std::string Number(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x) : "-"; }
+
+// What every stage adds to: the three tables, the summary's lists and the
+// plot's rows (one per target, numbered across the stages).
+struct CalibrationTables {
+  Table params{{"stage", "parameter", "unit", "scene_value", "start", "lower", "upper",
+                "estimate", "standard_error", "ci_lower", "ci_upper", "at_bound",
+                "profile_lower", "profile_upper", "profile_open_lower",
+                "profile_open_upper"}};
+  Table targets{{"stage", "target", "unit", "lab", "lab_se", "lab_n", "virtual_start",
+                 "virtual_start_se", "virtual_fitted", "virtual_fitted_se", "virtual_n",
+                 "residual"}};
+  Table covariance{{"stage", "row", "column", "covariance"}};
+  nlohmann::json params_json = nlohmann::json::array();
+  nlohmann::json stages_json = nlohmann::json::array();
+  std::vector<DataRow> plot_rows;
+  std::string markdown;
+};
+
+std::string Intro(const scene::ExperimentFile& file, const data::LabDataset& lab,
+                  const std::vector<calibrate::CalibrationResult>& stages,
+                  int evaluations) {
+  const scene::CalibrationDesign& d = file.calibration;
+  return fmt::format(
+      "## Calibration against {}\n\n{}\n\nLab dataset `{}`: {} (provenance: {}). "
+      "Each residual is whitened by the lab's and the virtual statistic's standard "
+      "errors; {} loss (scale {} sd); central differences over {} of each value on "
+      "common random numbers; {} design evaluations in {} stage(s).{}\n",
+      lab.name, file.description, d.lab_path, lab.description,
+      lab.provenance.value("source", ""), d.loss, d.loss_scale, d.relative_step,
+      evaluations, stages.size(),
+      stages.size() > 1
+          ? " Each stage starts from the scene with the earlier stages' estimates; its "
+            "intervals are conditional on them (an earlier estimate's uncertainty is not "
+            "carried into a later stage's interval)."
+          : "");
+}
+
+std::string StageHeading(const calibrate::CalibrationResult& r,
+                         const scene::CalibrationDesign& d) {
+  const std::string solver =
+      r.solver == "golden_section"
+          ? fmt::format(
+                "a bracketed golden-section search (GSL) to {} of the value, "
+                "then Ceres' covariance at the estimate",
+                d.tolerance)
+          : "Ceres' Levenberg-Marquardt";
+  return fmt::format(
+      "\n### {}\n\n{} parameter(s) to {} target(s) by {}; {} design evaluations, {} "
+      "round(s) of re-weighting, {:.0f} s; {}.\n\n",
+      r.stage.empty() ? "Fit" : "Stage: " + r.stage, r.parameters.size(),
+      r.targets.size(), solver, r.evaluations, r.rounds, r.seconds,
+      r.converged ? "converged" : "**the solver did not report convergence**");
+}
+
+std::string ProfileText(const calibrate::FittedParameter& p) {
+  if (!p.has_profile) return "-";
+  return fmt::format("[{}{}, {}{}]", p.profile_open_lower ? "open at " : "",
+                     Number(p.profile.lower), Number(p.profile.upper),
+                     p.profile_open_upper ? ", open" : "");
+}
+
+// The stage's fitted parameters: table rows, summary entries and Markdown.
+void AddParameters(const std::string& stage, const calibrate::CalibrationResult& r,
+                   const scene::CalibrationStage& spec, CalibrationTables* t) {
+  MarkdownTable md{{"parameter", "unit", "the scene's value", "start", "bounds",
+                    "estimate", "standard error", "95 % interval",
+                    "95 % profile interval"}};
+  for (std::size_t i = 0; i < r.parameters.size(); ++i) {
+    const calibrate::FittedParameter& p = r.parameters[i];
+    const scene::FitParameter& ps = spec.parameters[i];
+    // Ceres' covariance ignores the bounds: at a bound the interval is the
+    // curvature's, not a confidence statement (docs/calibration.md).
+    const bool at_bound = p.estimate <= ps.lower || p.estimate >= ps.upper;
+    const std::string unit = scene::FindParam(p.name)->unit;
+    const double nan = std::nan("");
+    t->params.AddRow(
+        {stage, p.name, unit, p.scene_value, p.start, ps.lower, ps.upper, p.estimate,
+         p.standard_error, p.ci.lower, p.ci.upper, std::int64_t{at_bound ? 1 : 0},
+         p.has_profile ? p.profile.lower : nan, p.has_profile ? p.profile.upper : nan,
+         std::int64_t{p.profile_open_lower ? 1 : 0},
+         std::int64_t{p.profile_open_upper ? 1 : 0}});
+    t->params_json.push_back(
+        {{"stage", stage},
+         {"name", p.name},
+         {"unit", unit},
+         {"scene_value", p.scene_value},
+         {"estimate", p.estimate},
+         {"standard_error", p.standard_error},
+         {"ci", {p.ci.lower, p.ci.upper}},
+         {"at_bound", at_bound},
+         {"profile_ci", p.has_profile ? nlohmann::json{p.profile.lower, p.profile.upper}
+                                      : nlohmann::json(nullptr)},
+         {"profile_open", {p.profile_open_lower, p.profile_open_upper}}});
+    md.AddRow({"`" + p.name + "`", unit, Number(p.scene_value), Number(p.start),
+               fmt::format("[{}, {}]", Number(ps.lower), Number(ps.upper)),
+               "**" + Number(p.estimate) + "**", Number(p.standard_error),
+               fmt::format("[{}, {}]{}", Number(p.ci.lower), Number(p.ci.upper),
+                           at_bound ? " (at a bound)" : ""),
+               ProfileText(p)});
+  }
+  t->markdown += ToMarkdown(md);
+}
+
+// The stage's targets, lab beside virtual: table rows, Markdown, plot rows.
+void AddTargets(const std::string& stage, const calibrate::CalibrationResult& r,
+                CalibrationTables* t) {
+  MarkdownTable md{{"target", "lab (se, n)", "virtual at start (se)",
+                    "virtual at the fit (se)", "residual (sd)"}};
+  for (const calibrate::FittedTarget& f : r.targets) {
+    const double lab_sd = Sd(calibrate::LabVariance(f.target.lab, f.fitted));
+    t->targets.AddRow({stage, f.target.label, f.target.unit, f.target.lab.value, lab_sd,
+                       std::int64_t{f.target.lab.n}, f.start.value, Sd(f.start.variance),
+                       f.fitted.value, Sd(f.fitted.variance), std::int64_t{f.fitted.n},
+                       f.residual});
+    md.AddRow(
+        {fmt::format("{} ({})", f.target.label, f.target.unit),
+         fmt::format("{} ({}{}, {})", Number(f.target.lab.value), Number(lab_sd),
+                     f.target.lab.single_draw ? ": one draw" : "", f.target.lab.n),
+         fmt::format("{} ({})", Number(f.start.value), Number(Sd(f.start.variance))),
+         fmt::format("{} ({})", Number(f.fitted.value), Number(Sd(f.fitted.variance))),
+         fmt::format("{:.2f}", f.residual)});
+    // x, label, lab, lab half-width, start, start hw, fit, fit hw (95 %)
+    t->plot_rows.push_back(DataRow()
+                               .Integer(static_cast<std::int64_t>(t->plot_rows.size()))
+                               .Label(f.target.label)
+                               .Number(f.target.lab.value)
+                               .Number(1.96 * lab_sd)
+                               .Number(f.start.value)
+                               .Number(1.96 * Sd(f.start.variance))
+                               .Number(f.fitted.value)
+                               .Number(1.96 * Sd(f.fitted.variance)));
+  }
+  t->markdown += "\n" + ToMarkdown(md);
+}
+
+// What the solver said, the search's steps and Ceres' full report folded.
+std::string SolverText(const calibrate::CalibrationResult& r) {
+  std::string md = fmt::format("\nSolver:\n\n```\n{}```\n", r.ceres_brief);
+  const auto details = [&](const char* summary, const std::string& text) {
+    if (!text.empty())
+      md += fmt::format("\n<details><summary>{}</summary>\n\n```\n{}```\n\n</details>\n",
+                        summary, text);
+  };
+  details("The bracketed search, step by step", r.search_log);
+  details("Ceres' full report (last round)", r.ceres_full);
+  return md;
+}
+
+constexpr const char* kProfileNote =
+    "\nThe profile interval holds the values whose cost (1/2 the sum of the whitened "
+    "squared residuals, on common random numbers) is within chi^2_1(0.95) / 2 = 1.92 "
+    "of the estimate's: it needs no slope, so it holds where the cost is a step "
+    "function and the standard error, from Ceres' slope at the estimate, does not; an "
+    "end that reaches the parameter's bound is open there (docs/calibration.md).\n";
+constexpr const char* kRankDeficientNote =
+    "\nThe covariance is rank deficient (the targets do not move within a "
+    "central-difference step of the estimate, or a parameter they do not "
+    "determine): no standard errors.\n";
+
+void AddStage(const calibrate::CalibrationResult& r, const scene::CalibrationDesign& d,
+              const scene::CalibrationStage& spec, CalibrationTables* t) {
+  const std::string stage = r.stage.empty() ? "1" : r.stage;
+  t->markdown += StageHeading(r, d);
+  AddParameters(stage, r, spec, t);
+  if (r.solver == "golden_section") t->markdown += kProfileNote;
+  if (!r.covariance_ok) t->markdown += kRankDeficientNote;
+  AddTargets(stage, r, t);
+  t->markdown += SolverText(r);
+  for (std::size_t i = 0; i < r.parameters.size(); ++i)
+    for (std::size_t j = 0; j < r.parameters.size(); ++j)
+      t->covariance.AddRow(
+          {stage, r.parameters[i].name, r.parameters[j].name,
+           static_cast<double>(r.covariance(static_cast<Eigen::Index>(i),
+                                            static_cast<Eigen::Index>(j)))});
+  t->stages_json.push_back({{"stage", stage},
+                            {"solver", r.solver},
+                            {"converged", r.converged},
+                            {"covariance_ok", r.covariance_ok},
+                            {"evaluations", r.evaluations},
+                            {"rounds", r.rounds},
+                            {"final_cost", r.final_cost}});
+}
+
+// Each target: the lab's value and the virtual one at the start and at the
+// fit, side by side with their 95 % half-widths.
+Figure TargetsFigure(const std::vector<DataRow>& rows) {
+  Figure f;
+  f.Data("d", rows)
+      .Title("Lab against virtual, before and after the fit")
+      .YLabel("value (the target unit: s for times, 1 for rates)")
+      .CategoryRange(rows.size())
+      .Set("grid y")
+      .Set("key outside bottom center horizontal")
+      .Draw({"$d", "($1-0.15):3:4:xtic(2)", "with yerrorbars pt 7", "lab"})
+      .Draw({"''", "1:5:6", "with yerrorbars pt 6", "virtual at start"})
+      .Draw({"''", "($1+0.15):7:8", "with yerrorbars pt 5", "virtual at the fit"});
+  return f;
+}
 
 }  // namespace
 
@@ -29,189 +229,32 @@ nlohmann::json OverridesJson(const scene::ExperimentFile& file,
 
 Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDataset& lab,
                            const std::vector<calibrate::CalibrationResult>& stages) {
-  Section out;
-  out.kind = "calibrate";
-  const scene::CalibrationDesign& d = file.calibration;
   int evaluations = 0;
   for (const calibrate::CalibrationResult& r : stages) evaluations += r.evaluations;
-
-  Table params({"stage", "parameter", "unit", "scene_value", "start", "lower", "upper",
-                "estimate", "standard_error", "ci_lower", "ci_upper", "at_bound",
-                "profile_lower", "profile_upper", "profile_open_lower",
-                "profile_open_upper"});
-  Table targets({"stage", "target", "unit", "lab", "lab_se", "lab_n", "virtual_start",
-                 "virtual_start_se", "virtual_fitted", "virtual_fitted_se", "virtual_n",
-                 "residual"});
-  Table covariance({"stage", "row", "column", "covariance"});
-  nlohmann::json params_json = nlohmann::json::array();
-  nlohmann::json stages_json = nlohmann::json::array();
-  std::string md = fmt::format(
-      "## Calibration against {}\n\n{}\n\nLab dataset `{}`: {} (provenance: {}). "
-      "Each residual is whitened by the lab's and the virtual statistic's standard "
-      "errors; "
-      "{} loss (scale {} sd); central differences over {} of each value on common random "
-      "numbers; {} design evaluations in {} stage(s).{}\n",
-      lab.name, file.description, file.calibration.lab_path, lab.description,
-      lab.provenance.value("source", ""), d.loss, d.loss_scale, d.relative_step,
-      evaluations, stages.size(),
-      stages.size() > 1
-          ? " Each stage starts from the scene with the earlier stages' estimates; its "
-            "intervals are conditional on them (an earlier estimate's uncertainty is not "
-            "carried into a later stage's interval)."
-          : "");
-  std::string data;
-  std::size_t row = 0;
-  for (std::size_t k = 0; k < stages.size(); ++k) {
-    const calibrate::CalibrationResult& r = stages[k];
-    const scene::CalibrationStage& spec = d.stages[k];
-    const std::string stage = r.stage.empty() ? "1" : r.stage;
-    const std::string solver = r.solver == "golden_section"
-                                   ? fmt::format(
-                                         "a bracketed golden-section search (GSL) to {} "
-                                         "of the value, then Ceres' "
-                                         "covariance at the estimate",
-                                         d.tolerance)
-                                   : "Ceres' Levenberg-Marquardt";
-    md += fmt::format(
-        "\n### {}\n\n{} parameter(s) to {} target(s) by {}; {} design evaluations, {} "
-        "round(s) of re-weighting, {:.0f} s; {}.\n\n"
-        "| parameter | unit | the scene's value | start | bounds | estimate | standard "
-        "error | "
-        "95 % interval | 95 % profile interval |\n| --- | --- | --- | --- | --- | --- | "
-        "--- | --- "
-        "| --- |\n",
-        r.stage.empty() ? "Fit" : "Stage: " + r.stage, r.parameters.size(),
-        r.targets.size(), solver, r.evaluations, r.rounds, r.seconds,
-        r.converged ? "converged" : "**the solver did not report convergence**");
-    for (std::size_t i = 0; i < r.parameters.size(); ++i) {
-      const calibrate::FittedParameter& p = r.parameters[i];
-      const scene::FitParameter& ps = spec.parameters[i];
-      // Ceres' covariance ignores the bounds: at a bound the interval is the
-      // curvature's, not a confidence statement (docs/calibration.md).
-      const bool at_bound = p.estimate <= ps.lower || p.estimate >= ps.upper;
-      const std::string unit = scene::FindParam(p.name)->unit;
-      const double nan = std::nan("");
-      params.AddRow(
-          {stage, p.name, unit, p.scene_value, p.start, ps.lower, ps.upper, p.estimate,
-           p.standard_error, p.ci.lower, p.ci.upper, std::int64_t{at_bound ? 1 : 0},
-           p.has_profile ? p.profile.lower : nan, p.has_profile ? p.profile.upper : nan,
-           std::int64_t{p.profile_open_lower ? 1 : 0},
-           std::int64_t{p.profile_open_upper ? 1 : 0}});
-      params_json.push_back(
-          {{"stage", stage},
-           {"name", p.name},
-           {"unit", unit},
-           {"scene_value", p.scene_value},
-           {"estimate", p.estimate},
-           {"standard_error", p.standard_error},
-           {"ci", {p.ci.lower, p.ci.upper}},
-           {"at_bound", at_bound},
-           {"profile_ci", p.has_profile ? nlohmann::json{p.profile.lower, p.profile.upper}
-                                        : nlohmann::json(nullptr)},
-           {"profile_open", {p.profile_open_lower, p.profile_open_upper}}});
-      const std::string profile =
-          p.has_profile
-              ? fmt::format("[{}{}, {}{}]", p.profile_open_lower ? "open at " : "",
-                            Number(p.profile.lower), Number(p.profile.upper),
-                            p.profile_open_upper ? ", open" : "")
-              : "-";
-      md += fmt::format(
-          "| `{}` | {} | {} | {} | [{}, {}] | **{}** | {} | [{}, {}]{} | {} |\n", p.name,
-          unit, Number(p.scene_value), Number(p.start), Number(ps.lower),
-          Number(ps.upper), Number(p.estimate), Number(p.standard_error),
-          Number(p.ci.lower), Number(p.ci.upper), at_bound ? " (at a bound)" : "",
-          profile);
-    }
-    if (r.solver == "golden_section")
-      md +=
-          "\nThe profile interval holds the values whose cost (1/2 the sum of the "
-          "whitened "
-          "squared residuals, on common random numbers) is within chi^2_1(0.95) / 2 = "
-          "1.92 "
-          "of the estimate's: it needs no slope, so it holds where the cost is a step "
-          "function and the standard error, from Ceres' slope at the estimate, does not; "
-          "an "
-          "end that reaches the parameter's bound is open there (docs/calibration.md).\n";
-    if (!r.covariance_ok)
-      md +=
-          "\nThe covariance is rank deficient (the targets do not move within a "
-          "central-difference step of the estimate, or a parameter they do not "
-          "determine): no standard errors.\n";
-
-    md +=
-        "\n| target | lab (se, n) | virtual at start (se) | virtual at the fit (se) | "
-        "residual (sd) |\n| --- | --- | --- | --- | --- |\n";
-    for (const calibrate::FittedTarget& t : r.targets) {
-      const double lab_var = calibrate::LabVariance(t.target.lab, t.fitted);
-      targets.AddRow({stage, t.target.label, t.target.unit, t.target.lab.value,
-                      Sd(lab_var), std::int64_t{t.target.lab.n}, t.start.value,
-                      Sd(t.start.variance), t.fitted.value, Sd(t.fitted.variance),
-                      std::int64_t{t.fitted.n}, t.residual});
-      md +=
-          fmt::format("| {} ({}) | {} ({}{}, {}) | {} ({}) | {} ({}) | {:.2f} |\n",
-                      t.target.label, t.target.unit, Number(t.target.lab.value),
-                      Number(Sd(lab_var)), t.target.lab.single_draw ? ": one draw" : "",
-                      t.target.lab.n, Number(t.start.value), Number(Sd(t.start.variance)),
-                      Number(t.fitted.value), Number(Sd(t.fitted.variance)), t.residual);
-      // x, label, lab, lab half-width, start, start hw, fit, fit hw (95 %)
-      data += fmt::format("{} \"{}\" {} {} {} {} {} {}\n", row++, t.target.label,
-                          t.target.lab.value, 1.96 * Sd(lab_var), t.start.value,
-                          1.96 * Sd(t.start.variance), t.fitted.value,
-                          1.96 * Sd(t.fitted.variance));
-    }
-    md += fmt::format("\nSolver:\n\n```\n{}```\n", r.ceres_brief);
-    if (!r.search_log.empty())
-      md += fmt::format(
-          "\n<details><summary>The bracketed search, step by step</summary>"
-          "\n\n```\n{}```\n\n</details>\n",
-          r.search_log);
-    if (!r.ceres_full.empty())
-      md += fmt::format(
-          "\n<details><summary>Ceres' full report (last round)</summary>"
-          "\n\n```\n{}```\n\n</details>\n",
-          r.ceres_full);
-    for (std::size_t i = 0; i < r.parameters.size(); ++i)
-      for (std::size_t j = 0; j < r.parameters.size(); ++j)
-        covariance.AddRow(
-            {stage, r.parameters[i].name, r.parameters[j].name,
-             static_cast<double>(r.covariance(static_cast<Eigen::Index>(i),
-                                              static_cast<Eigen::Index>(j)))});
-    stages_json.push_back({{"stage", stage},
-                           {"solver", r.solver},
-                           {"converged", r.converged},
-                           {"covariance_ok", r.covariance_ok},
-                           {"evaluations", r.evaluations},
-                           {"rounds", r.rounds},
-                           {"final_cost", r.final_cost}});
-  }
-  md += fmt::format(
+  CalibrationTables t;
+  t.markdown = Intro(file, lab, stages, evaluations);
+  for (std::size_t k = 0; k < stages.size(); ++k)
+    AddStage(stages[k], file.calibration, file.calibration.stages[k], &t);
+  t.markdown += fmt::format(
       "\nThe fitted values are in `{}`, a parameter-override file: "
       "`vahf run EXPERIMENT --overrides {}` runs any experiment with them.\n\n",
       kOverridesFile, kOverridesFile);
-
-  out.tables.emplace_back("calibrate_parameters.csv", std::move(params));
-  out.tables.emplace_back("calibrate_targets.csv", std::move(targets));
-  out.tables.emplace_back("calibrate_covariance.csv", std::move(covariance));
+  Section out;
+  out.kind = "calibrate";
+  out.tables.emplace_back("calibrate_parameters.csv", std::move(t.params));
+  out.tables.emplace_back("calibrate_targets.csv", std::move(t.targets));
+  out.tables.emplace_back("calibrate_covariance.csv", std::move(t.covariance));
   out.files.emplace_back(kOverridesFile, OverridesJson(file, stages).dump(1) + "\n");
-  out.summary = {{"parameters", params_json},
-                 {"stages", stages_json},
+  out.summary = {{"parameters", t.params_json},
+                 {"stages", t.stages_json},
                  {"evaluations", evaluations},
                  {"claims", nlohmann::json::array()}};
-  out.markdown = md;
+  out.markdown = t.markdown;
   out.plots.push_back(
       {"plots/calibrate_targets.png",
-       "Each target: the lab's value and the virtual one at the start and at the fit "
-       "(95 % intervals)",
-       "$d << EOD\n" + data +
-           "EOD\nset title 'Lab against virtual, before and after the fit'\n"
-           "set ylabel 'value (the target unit: s for times, 1 for rates)'\n"
-           "set xrange [-0.5:" +
-           std::to_string(row) +
-           "-0.5]\n"
-           "set grid y\nset key outside bottom center horizontal\n"
-           "plot $d using ($1-0.15):3:4:xtic(2) with yerrorbars pt 7 title 'lab', "
-           "'' using 1:5:6 with yerrorbars pt 6 title 'virtual at start', "
-           "'' using ($1+0.15):7:8 with yerrorbars pt 5 title 'virtual at the fit'\n"});
+       "Each target: the lab's value and the virtual one at the start and "
+       "at the fit (95 % intervals)",
+       GnuplotScript(TargetsFigure(t.plot_rows))});
   return out;
 }
 

@@ -6,7 +6,9 @@
 #include <utility>
 
 #include "vahf/report/cost.h"
+#include "vahf/report/figure.h"
 #include "vahf/report/health.h"
+#include "vahf/report/markdown.h"
 
 namespace vahf::report {
 namespace {
@@ -69,61 +71,70 @@ std::string Quoted(const std::string& s, bool lines = false) {
   return out + "\"";
 }
 
+// Columns of one side of a plot row: value, its interval, 1 when it has one
+// (0: a point, set in *point; -1: no value).
+DataRow& AddSide(DataRow& row, double v, const stats::Interval& ci, bool* point) {
+  if (!std::isfinite(v)) return row.Integer(0).Integer(0).Integer(0).Integer(-1);
+  if (!Finite(ci)) {
+    *point = true;
+    return row.Number(v).Number(v).Number(v).Integer(0);
+  }
+  return row.Number(v).Number(ci.lower).Number(ci.upper).Integer(1);
+}
+
+// The tic of a row: its label without the quantity the plot names, a line
+// each ("all / segment 4 / real", "block / male P5").
+std::string Tic(const compare::QuantityComparison& q) {
+  const std::string prefix = q.target.spec.quantity + " of ";
+  std::string tic = q.target.label;
+  if (tic.rfind(prefix, 0) == 0) tic.erase(0, prefix.size());
+  if (const std::size_t op = tic.find(", operator "); op != std::string::npos)
+    tic.erase(op + 2, 9);  // "operator "
+  return Quoted(tic, true);
+}
+
 // Lab beside virtual for the rows of one unit, each with its 95 % interval;
 // a value without an interval as a point of its own style.
 Plot UnitPlot(const std::vector<const compare::QuantityComparison*>& rows,
               const std::string& unit) {
   const UnitText text = TextOf(unit);
-  std::string data, tics;
+  std::vector<DataRow> data;
+  std::string tics;
   bool lab_point = false, virt_point = false;
-  // Columns: x, lab value, its interval, 1 when it has one; the same for
-  // the virtual side (0: a point; -1: no value).
-  const auto side = [](double v, const stats::Interval& ci, bool* point) {
-    if (!std::isfinite(v)) return std::string("0 0 0 -1");
-    if (!Finite(ci)) {
-      *point = true;
-      return fmt::format("{} {} {} 0", v, v, v);
-    }
-    return fmt::format("{} {} {} 1", v, ci.lower, ci.upper);
-  };
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const compare::QuantityComparison& q = *rows[i];
-    data += fmt::format("{} {} {}\n", i, side(q.target.lab.value, q.lab_ci, &lab_point),
-                        side(q.virtual_stat.value, q.virtual_ci, &virt_point));
-    // The plot names the quantity; a tic the rest of the label, a line each
-    // ("all / segment 4 / real", "block / male P5").
-    const std::string prefix = q.target.spec.quantity + " of ";
-    std::string tic = q.target.label;
-    if (tic.rfind(prefix, 0) == 0) tic.erase(0, prefix.size());
-    if (const std::size_t op = tic.find(", operator "); op != std::string::npos)
-      tic.erase(op + 2, 9);  // "operator "
-    tics += fmt::format("{}{} {}", i ? ", " : "", Quoted(tic, true), i);
+    DataRow row = DataRow().Integer(static_cast<std::int64_t>(i));
+    AddSide(row, q.target.lab.value, q.lab_ci, &lab_point);
+    AddSide(row, q.virtual_stat.value, q.virtual_ci, &virt_point);
+    data.push_back(row);
+    tics += fmt::format("{}{} {}", i ? ", " : "", Tic(q), i);
   }
-  std::string plot =
-      "plot $d using ($1-0.12):($5==1?$2:1/0):3:4 with yerrorbars pt 7 lc 1 "
-      "title 'lab (95 %)', '' using ($1+0.12):($9==1?$6:1/0):7:8 with yerrorbars pt 5 lc "
-      "2 "
-      "title 'virtual (95 %)'";
+  Figure f;
+  f.Data("d", data)
+      .Set("title " + Quoted(std::string("Virtual against the lab: ") + text.heading))
+      .Set("ylabel " + Quoted(text.axis));
+  if (unit == "s")
+    f.Set("yrange [0:*]").Set("offsets 0, 0, graph 0.08, 0");
+  else
+    f.Set("yrange [0:1.05]");
+  f.CategoryRange(rows.size())
+      .Set("xtics (" + tics + ")")
+      .Set("grid y")
+      .Set("key outside top center horizontal")
+      .Set("bmargin 5")
+      .Draw({"$d", "($1-0.12):($5==1?$2:1/0):3:4", "with yerrorbars pt 7 lc 1",
+             "lab (95 %)"})
+      .Draw({"''", "($1+0.12):($9==1?$6:1/0):7:8", "with yerrorbars pt 5 lc 2",
+             "virtual (95 %)"});
   if (lab_point)
-    plot +=
-        ", '' using ($1-0.12):($5==0?$2:1/0) with points pt 6 ps 1.5 lc 1 "
-        "title 'lab, no interval'";
+    f.Draw({"''", "($1-0.12):($5==0?$2:1/0)", "with points pt 6 ps 1.5 lc 1",
+            "lab, no interval"});
   if (virt_point)
-    plot +=
-        ", '' using ($1+0.12):($9==0?$6:1/0) with points pt 4 ps 1.5 lc 2 "
-        "title 'virtual, no interval'";
+    f.Draw({"''", "($1+0.12):($9==0?$6:1/0)", "with points pt 4 ps 1.5 lc 2",
+            "virtual, no interval"});
   return {text.plot,
           std::string(text.heading) + ": lab and virtual side by side (95 % intervals)",
-          "$d << EOD\n" + data + "EOD\nset title " +
-              Quoted(std::string("Virtual against the lab: ") + text.heading) +
-              "\nset ylabel " + Quoted(text.axis) + "\n" +
-              (unit == "s" ? "set yrange [0:*]\nset offsets 0, 0, graph 0.08, 0\n"
-                           : "set yrange [0:1.05]\n") +
-              "set xrange [-0.5:" + std::to_string(rows.size()) + "-0.5]\nset xtics (" +
-              tics +
-              ")\nset grid y\n"
-              "set key outside top center horizontal\nset bmargin 5\n" +
-              plot + "\n"};
+          GnuplotScript(f)};
 }
 
 // Every cycle the comparison ran as one design, for the cycles table, health
@@ -167,119 +178,151 @@ std::string Designs(const scene::ExperimentFile& file, const compare::Comparison
   return out;
 }
 
-}  // namespace
+// The row of compare_quantities.csv: both sides, the tests and the verdict;
+// the tests' figures NaN when the quantity is untestable.
+std::vector<Table::Cell> QuantityCells(const compare::QuantityComparison& q) {
+  const double nan = std::nan("");
+  const auto tested = [&](double x) { return q.testable ? x : nan; };
+  return {q.target.label,
+          q.target.unit,
+          std::int64_t{q.target.spec.segment},
+          q.target.spec.condition,
+          compare::LabBasis(q.target, q.reported),
+          q.margin,
+          std::int64_t{SideN(q, true)},
+          q.target.lab.value,
+          q.lab_ci.lower,
+          q.lab_ci.upper,
+          std::int64_t{SideN(q, false)},
+          q.virtual_stat.value,
+          q.virtual_ci.lower,
+          q.virtual_ci.upper,
+          tested(q.difference),
+          tested(q.ci95.lower),
+          tested(q.ci95.upper),
+          tested(q.ci90.lower),
+          tested(q.ci90.upper),
+          tested(q.tost_p),
+          Verdict(q),
+          tested(q.area_metric),
+          q.ks ? q.ks->distance : nan,
+          q.ks ? q.ks->p_value : nan,
+          q.ks_unavailable,
+          q.verdict};
+}
 
-Section ComparisonSection(const scene::ExperimentFile& file, const data::LabDataset& lab,
-                          const compare::ComparisonResult& r, int trials) {
-  Section out;
-  out.kind = "compare";
-  Table t({"quantity",
-           "unit",
-           "segment",
-           "condition",
-           "lab_basis",
-           "margin",
-           "lab_n",
-           "lab_value",
-           "lab_ci_lower",
-           "lab_ci_upper",
-           "virtual_n",
-           "virtual_value",
-           "virtual_ci_lower",
-           "virtual_ci_upper",
-           "difference",
-           "ci95_lower",
-           "ci95_upper",
-           "ci90_lower",
-           "ci90_upper",
-           "tost_p",
-           "verdict",
-           "area_metric",
-           "ks_distance",
-           "ks_p",
-           "ks_note",
-           "reason"});
-  nlohmann::json quantities = nlohmann::json::array();
-  std::string md = fmt::format(
-      "## Virtual against the lab: {}\n\nLab dataset `{}`: {} (provenance: {}). {}"
-      "\"agree\" means the equivalence test (TOST, 5 %) shows the difference within the "
-      "stated margin; \"not shown to agree\" does not mean shown to differ. Against a "
-      "value "
-      "the lab reports without its trials the test is the normal approximation, the area "
-      "metric is the distance to that value, and there is no KS test.\n\n",
-      lab.name, file.comparison.lab_path, lab.description,
-      lab.provenance.value("source", ""), Designs(file, r, trials));
-  // One table and one plot per unit, in the order units first appear.
-  std::vector<std::pair<std::string, std::vector<const compare::QuantityComparison*>>>
-      units;
-  for (const compare::QuantityComparison& q : r.quantities) {
-    auto it = units.begin();
-    while (it != units.end() && it->first != q.target.unit) ++it;
-    if (it == units.end()) it = units.insert(units.end(), {q.target.unit, {}});
-    it->second.push_back(&q);
-  }
-  for (const auto& [unit, rows] : units) {
-    const std::string u = unit == "s" ? "s" : "rate";
-    md += fmt::format(
-        "### {}\n\n| quantity | lab from | margin ({}) | lab ({}, 95 %) | virtual ({}, "
-        "95 %) | "
-        "difference ({}, 95 %) | area metric ({}) | KS D (p) | verdict |\n"
-        "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n",
-        TextOf(unit).heading, unit, u, u, u, unit);
-    for (const compare::QuantityComparison* p : rows) {
-      const compare::QuantityComparison& q = *p;
-      const std::string basis = compare::LabBasis(q.target, q.reported);
-      const double nan = std::nan("");
-      const double lab_value = q.target.lab.value, virt_value = q.virtual_stat.value;
-      const int lab_n = SideN(q, true), virt_n = SideN(q, false);
-      t.AddRow({q.target.label,
-                q.target.unit,
-                std::int64_t{q.target.spec.segment},
-                q.target.spec.condition,
-                basis,
-                q.margin,
-                std::int64_t{lab_n},
-                lab_value,
-                q.lab_ci.lower,
-                q.lab_ci.upper,
-                std::int64_t{virt_n},
-                virt_value,
-                q.virtual_ci.lower,
-                q.virtual_ci.upper,
-                q.testable ? q.difference : nan,
-                q.testable ? q.ci95.lower : nan,
-                q.testable ? q.ci95.upper : nan,
-                q.testable ? q.ci90.lower : nan,
-                q.testable ? q.ci90.upper : nan,
-                q.testable ? q.tost_p : nan,
-                Verdict(q),
-                q.testable ? q.area_metric : nan,
-                q.ks ? q.ks->distance : nan,
-                q.ks ? q.ks->p_value : nan,
-                q.ks_unavailable,
-                q.verdict});
-      quantities.push_back({{"quantity", q.target.label},
-                            {"unit", q.target.unit},
-                            {"lab_basis", basis},
-                            {"lab_value", lab_value},
-                            {"virtual_value", virt_value},
-                            {"verdict", Verdict(q)},
-                            {"reason", q.verdict},
-                            {"difference", q.testable ? q.difference : nan},
-                            {"tost_p", q.testable ? q.tost_p : nan}});
-      md += fmt::format(
-          "| {} | {} | +-{} | {} | {} | {} | {} | {} | {} |\n", q.target.label, basis,
-          N(q.margin), Side(lab_value, q.lab_ci, lab_n),
-          Side(virt_value, q.virtual_ci, virt_n),
+nlohmann::json QuantityJson(const compare::QuantityComparison& q) {
+  const double nan = std::nan("");
+  return {{"quantity", q.target.label},
+          {"unit", q.target.unit},
+          {"lab_basis", compare::LabBasis(q.target, q.reported)},
+          {"lab_value", q.target.lab.value},
+          {"virtual_value", q.virtual_stat.value},
+          {"verdict", Verdict(q)},
+          {"reason", q.verdict},
+          {"difference", q.testable ? q.difference : nan},
+          {"tost_p", q.testable ? q.tost_p : nan}};
+}
+
+std::vector<std::string> QuantityMarkdown(const compare::QuantityComparison& q) {
+  return {q.target.label,
+          compare::LabBasis(q.target, q.reported),
+          "+-" + N(q.margin),
+          Side(q.target.lab.value, q.lab_ci, SideN(q, true)),
+          Side(q.virtual_stat.value, q.virtual_ci, SideN(q, false)),
           q.testable ? fmt::format("{} [{}, {}]", N(q.difference), N(q.ci95.lower),
                                    N(q.ci95.upper))
                      : "-",
           q.testable ? N(q.area_metric) : "-",
           q.ks ? fmt::format("{:.3f} ({:.3g})", q.ks->distance, q.ks->p_value)
                : "n/a: " + q.ks_unavailable,
-          q.verdict);
+          q.verdict};
+}
+
+// The quantities grouped by unit, the units in the order they first appear.
+std::vector<std::pair<std::string, std::vector<const compare::QuantityComparison*>>>
+ByUnit(const std::vector<compare::QuantityComparison>& quantities) {
+  std::vector<std::pair<std::string, std::vector<const compare::QuantityComparison*>>>
+      units;
+  for (const compare::QuantityComparison& q : quantities) {
+    auto it = units.begin();
+    while (it != units.end() && it->first != q.target.unit) ++it;
+    if (it == units.end()) it = units.insert(units.end(), {q.target.unit, {}});
+    it->second.push_back(&q);
+  }
+  return units;
+}
+
+// compare_quantities.csv: a row per quantity (QuantityCells).
+Table QuantitiesTable() {
+  return Table({"quantity",
+                "unit",
+                "segment",
+                "condition",
+                "lab_basis",
+                "margin",
+                "lab_n",
+                "lab_value",
+                "lab_ci_lower",
+                "lab_ci_upper",
+                "virtual_n",
+                "virtual_value",
+                "virtual_ci_lower",
+                "virtual_ci_upper",
+                "difference",
+                "ci95_lower",
+                "ci95_upper",
+                "ci90_lower",
+                "ci90_upper",
+                "tost_p",
+                "verdict",
+                "area_metric",
+                "ks_distance",
+                "ks_p",
+                "ks_note",
+                "reason"});
+}
+
+std::string CompareIntro(const scene::ExperimentFile& file, const data::LabDataset& lab,
+                         const compare::ComparisonResult& r, int trials) {
+  return fmt::format(
+      "## Virtual against the lab: {}\n\nLab dataset `{}`: {} (provenance: {}). {}"
+      "\"agree\" means the equivalence test (TOST, 5 %) shows the difference within the "
+      "stated margin; \"not shown to agree\" does not mean shown to differ. Against a "
+      "value the lab reports without its trials the test is the normal approximation, "
+      "the area metric is the distance to that value, and there is no KS test.\n\n",
+      lab.name, file.comparison.lab_path, lab.description,
+      lab.provenance.value("source", ""), Designs(file, r, trials));
+}
+
+// The Markdown table of one unit's quantities (QuantityMarkdown).
+MarkdownTable UnitTable(const std::string& unit) {
+  const std::string u = unit == "s" ? "s" : "rate";
+  return MarkdownTable({"quantity", "lab from", fmt::format("margin ({})", unit),
+                        fmt::format("lab ({}, 95 %)", u),
+                        fmt::format("virtual ({}, 95 %)", u),
+                        fmt::format("difference ({}, 95 %)", u),
+                        fmt::format("area metric ({})", unit), "KS D (p)", "verdict"});
+}
+
+}  // namespace
+
+Section ComparisonSection(const scene::ExperimentFile& file, const data::LabDataset& lab,
+                          const compare::ComparisonResult& r, int trials) {
+  Section out;
+  out.kind = "compare";
+  Table t = QuantitiesTable();
+  nlohmann::json quantities = nlohmann::json::array();
+  std::string md = CompareIntro(file, lab, r, trials);
+  // One table and one plot per unit.
+  for (const auto& [unit, rows] : ByUnit(r.quantities)) {
+    MarkdownTable table = UnitTable(unit);
+    for (const compare::QuantityComparison* q : rows) {
+      t.AddRow(QuantityCells(*q));
+      quantities.push_back(QuantityJson(*q));
+      table.AddRow(QuantityMarkdown(*q));
     }
-    md += "\n";
+    md += fmt::format("### {}\n\n", TextOf(unit).heading) + ToMarkdown(table) + "\n";
     out.plots.push_back(UnitPlot(rows, unit));
   }
   const experiment::DesignRun cycles = AllCycles(r);

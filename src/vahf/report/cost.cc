@@ -5,6 +5,7 @@
 #include <variant>
 #include <vector>
 
+#include "vahf/report/markdown.h"
 #include "vahf/stats/distribution.h"
 
 namespace vahf::report {
@@ -57,23 +58,21 @@ nlohmann::json CostJson(const Table& cost) {
 }
 
 std::string CostMarkdown(const Table& cost) {
-  std::string md =
-      "\n### Cost per trial\n\nMeasured on this machine (outside the results digest): "
-      "the "
-      "CPU seconds of each part's trials (the trial's thread, so independent of the "
-      "thread "
-      "count), and the real-time factor, simulated over CPU seconds.\n\n"
-      "| part | trials | CPU p50 (s) | CPU p99 (s) | CPU max (s) | CPU total (s) | "
-      "simulated mean (s) | real-time factor p50 |\n"
-      "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+  MarkdownTable md({"part", "trials", "CPU p50 (s)", "CPU p99 (s)", "CPU max (s)",
+                    "CPU total (s)", "simulated mean (s)", "real-time factor p50"});
   for (std::size_t r = 0; r < cost.rows(); ++r) {
-    const auto number = [&](std::size_t c) { return std::get<double>(cost.at(r, c)); };
-    md += fmt::format(
-        "| {} | {} | {:.3f} | {:.3f} | {:.3f} | {:.1f} | {:.3f} | {:.2f} |\n",
-        std::get<std::string>(cost.at(r, 0)), std::get<std::int64_t>(cost.at(r, 1)),
-        number(2), number(3), number(4), number(5), number(6), number(7));
+    const auto number = [&](std::size_t c, int digits) {
+      return fmt::format("{:.{}f}", std::get<double>(cost.at(r, c)), digits);
+    };
+    md.AddRow({std::get<std::string>(cost.at(r, 0)),
+               std::to_string(std::get<std::int64_t>(cost.at(r, 1))), number(2, 3),
+               number(3, 3), number(4, 3), number(5, 1), number(6, 3), number(7, 2)});
   }
-  return md;
+  return "\n### Cost per trial\n\nMeasured on this machine (outside the results "
+         "digest): the CPU seconds of each part's trials (the trial's thread, so "
+         "independent of the thread count), and the real-time factor, simulated over CPU "
+         "seconds.\n\n" +
+         ToMarkdown(md);
 }
 
 }  // namespace vahf::report

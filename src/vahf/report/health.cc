@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "vahf/report/markdown.h"
+
 namespace vahf::report {
 namespace {
 
@@ -74,14 +76,8 @@ nlohmann::json HealthJson(const experiment::DesignRun& run) {
 }
 
 std::string HealthMarkdown(const experiment::DesignRun& run) {
-  std::string md =
-      "\n### Numerical health\n\nPer condition: cycles ended by a numerical failure "
-      "(left out of success rates), the part trial that came nearest its penetration "
-      "bound (a tenth of its part's smallest radial clearance): its part, its deepest "
-      "contact and its bound, and the warnings of every accepted step (counts; the "
-      "first occurrence is in summary.json).\n\n"
-      "| condition | cycles | numerical failures | nearest its bound | deepest contact "
-      "(um) | bound (um) | warnings |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+  MarkdownTable md({"condition", "cycles", "numerical failures", "nearest its bound",
+                    "deepest contact (um)", "bound (um)", "warnings"});
   const std::vector<ConditionHealth> health = Collect(run);
   for (std::size_t c = 0; c < health.size(); ++c) {
     const ConditionHealth& h = health[c];
@@ -92,13 +88,18 @@ std::string HealthMarkdown(const experiment::DesignRun& run) {
       warnings += fmt::format("{}{} {}", warnings.empty() ? "" : ", ",
                               WarningName(static_cast<WarningKind>(k)), e.count);
     }
-    md += fmt::format("| {} | {} | {} | {} | {:.3g} | {} | {} |\n",
-                      run.conditions[c].name, h.cycles, h.numerical_failures,
-                      h.part.empty() ? "-" : h.part, h.max_penetration * 1e6,
-                      h.bound > 0 ? fmt::format("{:.3g}", h.bound * 1e6) : "-",
-                      warnings.empty() ? "none" : warnings);
+    md.AddRow({run.conditions[c].name, fmt::format("{}", h.cycles),
+               fmt::format("{}", h.numerical_failures), h.part.empty() ? "-" : h.part,
+               fmt::format("{:.3g}", h.max_penetration * 1e6),
+               h.bound > 0 ? fmt::format("{:.3g}", h.bound * 1e6) : "-",
+               warnings.empty() ? "none" : warnings});
   }
-  return md;
+  return "\n### Numerical health\n\nPer condition: cycles ended by a numerical failure "
+         "(left out of success rates), the part trial that came nearest its penetration "
+         "bound (a tenth of its part's smallest radial clearance): its part, its deepest "
+         "contact and its bound, and the warnings of every accepted step (counts; the "
+         "first occurrence is in summary.json).\n\n" +
+         ToMarkdown(md);
 }
 
 }  // namespace vahf::report

@@ -16,6 +16,8 @@
 #include <string>
 #include <string_view>
 
+#include "vahf/report/figure.h"
+
 extern char** environ;  // POSIX: the environment, passed on to gnuplot
 
 namespace vahf::report {
@@ -24,18 +26,6 @@ namespace {
 std::string FirstLine(const std::string& script) {
   const std::string line = script.substr(0, script.find('\n'));
   return line.size() > 80 ? line.substr(0, 77) + "..." : line;
-}
-
-// A gnuplot string literal: single quotes take everything literally but a
-// single quote; otherwise double quotes with backslash escapes.
-std::string Quoted(const std::string& text) {
-  if (text.find('\'') == std::string::npos) return "'" + text + "'";
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + '"';
 }
 
 bool SetsTerminal(const std::string& script) {
@@ -103,7 +93,8 @@ void RenderPlot(const std::string& gnuplot_script, const std::string& png_path) 
   std::string script;
   if (!SetsTerminal(gnuplot_script))
     script += "set terminal pngcairo size 800,500 noenhanced\n";
-  script += "set output " + Quoted(png_path) + "\n" + gnuplot_script + "\nset output\n";
+  script +=
+      "set output " + GnuplotString(png_path) + "\n" + gnuplot_script + "\nset output\n";
 
   // gnuplot's stdout and stderr go to an anonymous file, read once it exited:
   // a pipe could fill and block it while this side still writes the script.

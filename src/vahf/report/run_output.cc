@@ -6,6 +6,7 @@
 
 #include "vahf/core/error.h"
 #include "vahf/report/manifest.h"
+#include "vahf/report/markdown.h"
 #include "vahf/report/output_directory.h"
 #include "vahf/report/plot.h"
 #include "vahf/report/section.h"
@@ -65,18 +66,18 @@ std::string ClaimsMarkdown(const std::vector<Section>& sections) {
   bool any = false;
   for (const Section& s : sections) any = any || !s.summary.at("claims").empty();
   if (!any) return "";
-  std::string md =
-      "## The paper's claims\n\nEach claim is tested on the run: yes, no, or untestable "
-      "(the run cannot test it; the evidence says why).\n\n"
-      "| claim | reproduced | test | evidence |\n"
-      "| --- | --- | --- | --- |\n";
+  MarkdownTable table{{"claim", "reproduced", "test", "evidence"}};
   for (const Section& s : sections)
     for (const auto& c : s.summary.at("claims"))
-      md += fmt::format("| {} | {} | {} | {} |\n", c.at("claim").get<std::string>(),
-                        c.at("verdict") == "no" ? std::string("**no**")
-                                                : c.at("verdict").get<std::string>(),
-                        c.at("test").get<std::string>(),
-                        c.at("evidence").get<std::string>());
+      table.AddRow({c.at("claim").get<std::string>(),
+                    c.at("verdict") == "no" ? std::string("**no**")
+                                            : c.at("verdict").get<std::string>(),
+                    c.at("test").get<std::string>(),
+                    c.at("evidence").get<std::string>()});
+  const std::string md =
+      "## The paper's claims\n\nEach claim is tested on the run: yes, no, or untestable "
+      "(the run cannot test it; the evidence says why).\n\n" +
+      ToMarkdown(table);
   return md + "\n";
 }
 
@@ -110,61 +111,110 @@ RunOutput WriteRunOutput(const experiment::ExperimentRun& run,
   return WriteSections(h, sections, out, info);
 }
 
-RunOutput WriteSections(const RunHeader& h, const std::vector<Section>& sections,
-                        OutputDirectory& out, const RunInfo& info) {
-  RunOutput result;
-  const scene::ExperimentFile& file = *h.file;
-  std::map<std::string, std::string> results;  // name -> bytes, for the digest
-  nlohmann::json summary = {{"experiment", file.name},
-                            {"kind", file.kind},
+namespace {
+
+// The result files (the tables, the other files, summary.json), written and
+// digested; returns the digest and names them in `names`.
+std::string WriteResults(const RunHeader& h, const std::vector<Section>& sections,
+                         OutputDirectory& out, std::vector<std::string>* names,
+                         std::map<std::string, std::string>* results) {
+  nlohmann::json summary = {{"experiment", h.file->name},
+                            {"kind", h.file->kind},
                             {"seed", h.seed},
                             {"trials", h.trials}};
   for (const Section& s : sections) {
-    for (const auto& [name, table] : s.tables) results[name] = table.ToCsv();
-    for (const auto& [name, bytes] : s.files) results[name] = bytes;
+    for (const auto& [name, table] : s.tables) (*results)[name] = table.ToCsv();
+    for (const auto& [name, bytes] : s.files) (*results)[name] = bytes;
     summary["sections"][s.kind] = s.summary;
   }
-  results["summary.json"] = summary.dump(1) + "\n";
-  std::vector<std::string> result_files;
-  for (const auto& [name, bytes] : results) {
+  (*results)["summary.json"] = summary.dump(1) + "\n";
+  for (const auto& [name, bytes] : *results) {
     out.Write(name, bytes);
-    result_files.push_back(name);
+    names->push_back(name);
   }
-  const std::string digest = ResultsDigest(results);
-  // Measured files: written, never digested.
-  std::vector<std::string> measured_files;
+  return ResultsDigest(*results);
+}
+
+// The measured files (tables and measured.json), written, never digested.
+std::vector<std::string> WriteMeasured(const std::vector<Section>& sections,
+                                       const std::map<std::string, std::string>& results,
+                                       OutputDirectory& out) {
+  std::vector<std::string> names;
   nlohmann::json measured;
   for (const Section& s : sections) {
     for (const auto& [name, table] : s.measured_tables) {
       VAHF_CHECK(!results.count(name), "a measured file is named as a result file");
       out.Write(name, table.ToCsv());
-      measured_files.push_back(name);
+      names.push_back(name);
     }
     if (!s.measured.is_null()) measured["sections"][s.kind] = s.measured;
   }
   if (!measured.is_null()) {
     out.Write("measured.json", measured.dump(1) + "\n");
-    measured_files.push_back("measured.json");
+    names.push_back("measured.json");
   }
+  return names;
+}
 
-  // Manifest: the experiment file, the first scene, and every file read.
-  ManifestFields m;
-  m.experiment = DescribeInputFile(file.file);
-  m.scene = DescribeInputFile(h.first->scene_path);
-  m.seed = h.seed;
-  m.trials = h.trials;
-  m.threads = info.threads;
-  m.parameters = h.first->scene.params;
-  m.result_files = result_files;
-  m.results_digest = digest;
-  nlohmann::json manifest = ManifestJson(m);
+// The manifest: the experiment file, the first scene, and every file read.
+nlohmann::json Manifest(const RunHeader& h, const RunInfo& info, ManifestFields* m,
+                        const std::vector<std::string>& measured_files) {
+  m->experiment = DescribeInputFile(h.file->file);
+  m->scene = DescribeInputFile(h.first->scene_path);
+  m->seed = h.seed;
+  m->trials = h.trials;
+  m->threads = info.threads;
+  m->parameters = h.first->scene.params;
+  nlohmann::json manifest = ManifestJson(*m);
   for (const std::string& p : h.inputs) {
     const InputFile f = DescribeInputFile(p);
     manifest["inputs"].push_back({{"path", f.path}, {"sha256", f.sha256}});
   }
   if (!measured_files.empty()) manifest["measured_files"] = measured_files;
   if (!h.experiments.is_null()) manifest["experiments"] = h.experiments;
-  out.Write(OutputDirectory::kMarkerFile, manifest.dump(1) + "\n");
+  return manifest;
+}
+
+// A section in report.md: its Markdown, each plot rendered (or why it is
+// missing, also added to `failed`), and the files it wrote.
+std::string SectionMarkdown(const Section& s, OutputDirectory& out,
+                            std::vector<std::string>* failed) {
+  std::string md = s.markdown + "\n";
+  for (const Plot& p : s.plots) {
+    try {
+      RenderPlot(p.script, out.Path(p.file));
+      md += fmt::format("![{}]({})\n\n*{}*\n\n", p.title, p.file, p.title);
+    } catch (const PlotError& e) {
+      failed->push_back(p.file + ": " + e.what());
+      md += fmt::format("**Figure missing:** {} (`{}`) could not be rendered: {}\n\n",
+                        p.title, p.file, e.what());
+    }
+  }
+  md += "Tables: ";
+  std::size_t k = 0;
+  for (const auto& [name, table] : s.tables)
+    md += fmt::format("{}`{}`", k++ ? ", " : "", name);
+  for (const auto& [name, bytes] : s.files)
+    md += fmt::format("{}`{}`", k++ ? ", " : "", name);
+  for (const auto& [name, table] : s.measured_tables)
+    md += fmt::format(", `{}` (measured, outside the digest)", name);
+  if (!s.measured.is_null()) md += ", `measured.json` (measured, outside the digest)";
+  return md + ".\n\n";
+}
+
+}  // namespace
+
+RunOutput WriteSections(const RunHeader& h, const std::vector<Section>& sections,
+                        OutputDirectory& out, const RunInfo& info) {
+  RunOutput result;
+  const scene::ExperimentFile& file = *h.file;
+  std::map<std::string, std::string> results;  // name -> bytes, for the digest
+  ManifestFields m;
+  const std::string digest = WriteResults(h, sections, out, &m.result_files, &results);
+  m.results_digest = digest;
+  const std::vector<std::string> measured_files = WriteMeasured(sections, results, out);
+  out.Write(OutputDirectory::kMarkerFile,
+            Manifest(h, info, &m, measured_files).dump(1) + "\n");
 
   // Report: what ran, the claims, then each section with its plots.
   std::string md = fmt::format(
@@ -179,29 +229,7 @@ RunOutput WriteSections(const RunHeader& h, const std::vector<Section>& sections
       h.integration, info.threads, info.wall_seconds, digest, m.build.version,
       m.build.git_describe, m.build.compiler_id, m.build.compiler_version);
   md += ClaimsMarkdown(sections);
-  for (const Section& s : sections) {
-    md += s.markdown + "\n";
-    for (const Plot& p : s.plots) {
-      try {
-        RenderPlot(p.script, out.Path(p.file));
-        md += fmt::format("![{}]({})\n\n*{}*\n\n", p.title, p.file, p.title);
-      } catch (const PlotError& e) {
-        result.failed_plots.push_back(p.file + ": " + e.what());
-        md += fmt::format("**Figure missing:** {} (`{}`) could not be rendered: {}\n\n",
-                          p.title, p.file, e.what());
-      }
-    }
-    md += "Tables: ";
-    std::size_t k = 0;
-    for (const auto& [name, table] : s.tables)
-      md += fmt::format("{}`{}`", k++ ? ", " : "", name);
-    for (const auto& [name, bytes] : s.files)
-      md += fmt::format("{}`{}`", k++ ? ", " : "", name);
-    for (const auto& [name, table] : s.measured_tables)
-      md += fmt::format(", `{}` (measured, outside the digest)", name);
-    if (!s.measured.is_null()) md += ", `measured.json` (measured, outside the digest)";
-    md += ".\n\n";
-  }
+  for (const Section& s : sections) md += SectionMarkdown(s, out, &result.failed_plots);
   out.Write("report.md", md);
   out.Commit();
   result.results_digest = digest;

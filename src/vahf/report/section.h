@@ -2,6 +2,8 @@
 // tables, its part of summary.json (statistics and the paper's claims, each
 // with its verdict: yes, no or untestable), a Markdown section of report.md and its
 // plots. The analysis of each kind lives in its own file; this header declares them.
+// A section describes its CSV tables as Table (table.h), its report.md tables as
+// MarkdownTable (markdown.h) and its plots as Figure (figure.h); each has one writer.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -21,7 +23,7 @@ namespace vahf::report {
 struct Plot {
   std::string file;    // relative to the run directory: "plots/NAME.png"
   std::string title;   // the caption in report.md
-  std::string script;  // gnuplot, with inline data (plot.h)
+  std::string script;  // gnuplot, with inline data: GnuplotScript (figure.h)
 };
 
 struct Section {

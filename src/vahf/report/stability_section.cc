@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <map>
 
+#include "vahf/report/markdown.h"
+
 namespace vahf::report {
 namespace {
 
@@ -88,95 +90,160 @@ std::vector<std::string> FailedCases(
   return out;
 }
 
-Section StabilitySection(const scene::ExperimentFile& file,
-                         const std::vector<experiment::StabilityTrial>& trials) {
-  const scene::StabilityDesign& d = file.stability;
-  Section s;
-  s.kind = "stability";
+namespace {
 
-  Table table({"case",           "integrator",         "seed_index",
+// A trial's row of stability_trials.csv.
+std::vector<Table::Cell> TrialCells(const Cell& cell, const experiment::StabilityTrial& t,
+                                    std::int64_t max_steps) {
+  const sim::TrialResult& r = t.result;
+  return {cell.c->name,
+          cell.integrator,
+          std::int64_t{t.seed_index},
+          std::string(sim::StatusName(r.status)),
+          fmt::format("{}", fmt::join(cell.c->expect, " ")),
+          std::string(t.failures.empty() ? "yes" : "no"),
+          fmt::format("{}", fmt::join(t.failures, "; ")),
+          r.end_time,
+          r.completion_time,
+          r.work,
+          r.counters.steps_taken,
+          r.counters.steps_attempted,
+          max_steps,
+          r.counters.realizations,
+          CompactWarnings(r.warnings),
+          r.warnings.total(),
+          r.max_penetration,
+          r.penetration_bound,
+          r.clearance,
+          r.stiffness,
+          r.detail};
+}
+
+nlohmann::json TrialJson(const experiment::StabilityTrial& t, std::int64_t max_steps) {
+  const sim::TrialResult& r = t.result;
+  return {{"seed_index", t.seed_index},
+          {"status", sim::StatusName(r.status)},
+          {"pass", t.failures.empty()},
+          {"failures", t.failures},
+          {"detail", r.detail},
+          {"end_time_s", r.end_time},
+          {"steps_taken", r.counters.steps_taken},
+          {"steps_attempted", r.counters.steps_attempted},
+          {"max_steps", max_steps},
+          {"warnings", WarningCounts(r.warnings)},
+          {"max_penetration_m", r.max_penetration},
+          {"penetration_bound_m", r.penetration_bound}};
+}
+
+// Simulated over CPU seconds (0 when no CPU time was measured).
+double RealTimeFactor(const sim::TrialResult& r) {
+  return r.cpu_seconds > 0 ? r.end_time / r.cpu_seconds : 0.0;
+}
+
+nlohmann::json CaseJson(const scene::StabilityCase& c) {
+  return {{"case", c.name},
+          {"pointer", c.pointer},
+          {"scene", c.scene_path},
+          {"position", c.position},
+          {"expect", c.expect},
+          {"passed", true},
+          {"integrators", nlohmann::json::array()}};
+}
+
+// The trials table, the measured cost table and their JSON: summary.json's
+// cases (each integrator's trials) and measured.json's per trial cost.
+struct TrialRecords {
+  Table table{{"case",           "integrator",         "seed_index",
                "status",         "expected",           "pass",
                "failures",       "end_time_s",         "completion_time_s",
                "work_j",         "steps_taken",        "steps_attempted",
                "max_steps",      "realizations",       "warnings",
                "warnings_total", "max_penetration_m",  "penetration_bound_m",
-               "clearance_m",    "stiffness_pa_per_m", "detail"});
-  Table cost({"case", "integrator", "seed_index", "simulated_s", "cpu_s", "wall_s",
-              "real_time_factor"});
+               "clearance_m",    "stiffness_pa_per_m", "detail"}};
+  Table cost{{"case", "integrator", "seed_index", "simulated_s", "cpu_s", "wall_s",
+              "real_time_factor"}};
   nlohmann::json cases = nlohmann::json::array();
   nlohmann::json measured = nlohmann::json::array();
-  for (const Cell& cell : Cells(d, trials)) {
+};
+
+TrialRecords RecordTrials(const std::vector<Cell>& cells) {
+  TrialRecords out;
+  for (const Cell& cell : cells) {
     const scene::StabilityCase& c = *cell.c;
-    if (cases.empty() || cases.back()["case"] != c.name)
-      cases.push_back({{"case", c.name},
-                       {"pointer", c.pointer},
-                       {"scene", c.scene_path},
-                       {"position", c.position},
-                       {"expect", c.expect},
-                       {"passed", true},
-                       {"integrators", nlohmann::json::array()}});
+    if (out.cases.empty() || out.cases.back()["case"] != c.name)
+      out.cases.push_back(CaseJson(c));
     nlohmann::json cell_trials = nlohmann::json::array();
     for (const experiment::StabilityTrial* t : cell.trials) {
       const sim::TrialResult& r = t->result;
       const std::int64_t max_steps =
           c.scenes[t->integrator_index].params.simulation.max_steps;
-      const bool pass = t->failures.empty();
-      table.AddRow({c.name,
-                    cell.integrator,
-                    std::int64_t{t->seed_index},
-                    std::string(sim::StatusName(r.status)),
-                    fmt::format("{}", fmt::join(c.expect, " ")),
-                    std::string(pass ? "yes" : "no"),
-                    fmt::format("{}", fmt::join(t->failures, "; ")),
-                    r.end_time,
-                    r.completion_time,
-                    r.work,
-                    r.counters.steps_taken,
-                    r.counters.steps_attempted,
-                    max_steps,
-                    r.counters.realizations,
-                    CompactWarnings(r.warnings),
-                    r.warnings.total(),
-                    r.max_penetration,
-                    r.penetration_bound,
-                    r.clearance,
-                    r.stiffness,
-                    r.detail});
-      const double rtf = r.cpu_seconds > 0 ? r.end_time / r.cpu_seconds : 0.0;
-      cost.AddRow({c.name, cell.integrator, std::int64_t{t->seed_index}, r.end_time,
-                   r.cpu_seconds, r.wall_seconds, rtf});
-      cell_trials.push_back({{"seed_index", t->seed_index},
-                             {"status", sim::StatusName(r.status)},
-                             {"pass", pass},
-                             {"failures", t->failures},
-                             {"detail", r.detail},
-                             {"end_time_s", r.end_time},
-                             {"steps_taken", r.counters.steps_taken},
-                             {"steps_attempted", r.counters.steps_attempted},
-                             {"max_steps", max_steps},
-                             {"warnings", WarningCounts(r.warnings)},
-                             {"max_penetration_m", r.max_penetration},
-                             {"penetration_bound_m", r.penetration_bound}});
-      measured.push_back({{"case", c.name},
-                          {"integrator", cell.integrator},
-                          {"seed_index", t->seed_index},
-                          {"cpu_s", r.cpu_seconds},
-                          {"wall_s", r.wall_seconds},
-                          {"real_time_factor", rtf}});
-      if (!pass) cases.back()["passed"] = false;
+      out.table.AddRow(TrialCells(cell, *t, max_steps));
+      out.cost.AddRow({c.name, cell.integrator, std::int64_t{t->seed_index}, r.end_time,
+                       r.cpu_seconds, r.wall_seconds, RealTimeFactor(r)});
+      cell_trials.push_back(TrialJson(*t, max_steps));
+      out.measured.push_back({{"case", c.name},
+                              {"integrator", cell.integrator},
+                              {"seed_index", t->seed_index},
+                              {"cpu_s", r.cpu_seconds},
+                              {"wall_s", r.wall_seconds},
+                              {"real_time_factor", RealTimeFactor(r)}});
+      if (!t->failures.empty()) out.cases.back()["passed"] = false;
     }
-    cases.back()["integrators"].push_back(
+    out.cases.back()["integrators"].push_back(
         {{"integrator", cell.integrator}, {"trials", cell_trials}});
   }
-  const std::vector<std::string> failed = FailedCases(d, trials);
-  s.tables.emplace_back("stability_trials.csv", table);
-  s.measured_tables.emplace_back("stability_cost.csv", cost);
-  s.summary = {{"claims", nlohmann::json::array()},
-               {"cases", cases},
-               {"failed_cases", failed},
-               {"passed", failed.empty()}};
-  s.measured = {{"trials", measured}};
+  return out;
+}
 
+// "pass", or "**FAIL**: " and each distinct failure of the cell's trials.
+std::string CellVerdict(const Cell& cell) {
+  std::vector<std::string> why;
+  for (const auto* t : cell.trials)
+    for (const std::string& f : t->failures)
+      if (std::find(why.begin(), why.end(), f) == why.end()) why.push_back(f);
+  return why.empty() ? "pass" : fmt::format("**FAIL**: {}", fmt::join(why, "; "));
+}
+
+// A case under one integrator over its seeds: the warnings summed, the
+// deepest contact, bound and step count the largest, CPU and simulated time
+// summed.
+std::vector<std::string> CellMarkdown(const Cell& cell) {
+  Warnings w;
+  double depth = 0, bound = 0, cpu = 0, simulated = 0;
+  std::int64_t steps = 0;
+  for (const auto* t : cell.trials) {
+    const sim::TrialResult& r = t->result;
+    w.Add(r.warnings);
+    depth = std::max(depth, r.max_penetration);
+    bound = std::max(bound, r.penetration_bound);
+    steps = std::max(steps, r.counters.steps_taken);
+    cpu += r.cpu_seconds;
+    simulated += r.end_time;
+  }
+  return {cell.c->name,
+          cell.integrator,
+          Statuses(cell),
+          fmt::format("{}", fmt::join(cell.c->expect, ", ")),
+          CellVerdict(cell),
+          CompactWarnings(w),
+          fmt::format("{} / {}", Um(depth), bound > 0 ? Um(bound) : std::string("-")),
+          std::to_string(steps),
+          fmt::format("{:.3f}", cpu),
+          cpu > 0 ? fmt::format("{:.3g}", simulated / cpu) : std::string("-")};
+}
+
+constexpr const char* kLegend =
+    "\nWarnings (counts over accepted steps): pen = penetration_bound (contact deeper "
+    "than the bound), retry = integrator_retry, floor = step_size_floor, nonfinite = "
+    "non_finite_state, fail = integrator_failure. Steps: accepted steps (the largest "
+    "over seeds). CPU and the real-time factor (simulated over CPU seconds, the trial's "
+    "thread) are measured on this machine, outside the results digest "
+    "(stability_cost.csv, measured.json); over several seeds CPU is their sum.\n\n"
+    "Why each trial ended:\n\n";
+
+std::string StabilityMarkdown(const scene::StabilityDesign& d,
+                              const std::vector<experiment::StabilityTrial>& trials,
+                              const std::vector<std::string>& failed) {
   std::string md = fmt::format(
       "## Stability: stiff and extreme cases across integrators\n\n"
       "{} case(s), {} trial(s). A trial passes when its status is one of the classes its "
@@ -187,48 +254,11 @@ Section StabilitySection(const scene::ExperimentFile& file,
       failed.empty()
           ? std::string("Every case passes.")
           : fmt::format("{} case(s) fail: {}.", failed.size(), fmt::join(failed, ", ")));
-  md +=
-      "| case | integrator | status | expected | verdict | warnings | deepest contact / "
-      "bound (um) | steps | CPU (s) | real-time factor |\n"
-      "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
-  for (const Cell& cell : Cells(d, trials)) {
-    Warnings w;
-    double depth = 0, bound = 0, cpu = 0, simulated = 0;
-    std::int64_t steps = 0;
-    bool pass = true;
-    for (const auto* t : cell.trials) {
-      const sim::TrialResult& r = t->result;
-      w.Add(r.warnings);
-      depth = std::max(depth, r.max_penetration);
-      bound = std::max(bound, r.penetration_bound);
-      steps = std::max(steps, r.counters.steps_taken);
-      cpu += r.cpu_seconds;
-      simulated += r.end_time;
-      pass = pass && t->failures.empty();
-    }
-    std::string verdict = "pass";
-    if (!pass) {
-      std::vector<std::string> why;
-      for (const auto* t : cell.trials)
-        for (const std::string& f : t->failures)
-          if (std::find(why.begin(), why.end(), f) == why.end()) why.push_back(f);
-      verdict = fmt::format("**FAIL**: {}", fmt::join(why, "; "));
-    }
-    md += fmt::format(
-        "| {} | {} | {} | {} | {} | {} | {} / {} | {} | {:.3f} | {} |\n", cell.c->name,
-        cell.integrator, Statuses(cell), fmt::join(cell.c->expect, ", "), verdict,
-        CompactWarnings(w), Um(depth), bound > 0 ? Um(bound) : std::string("-"), steps,
-        cpu, cpu > 0 ? fmt::format("{:.3g}", simulated / cpu) : std::string("-"));
-  }
-  md +=
-      "\nWarnings (counts over accepted steps): pen = penetration_bound (contact deeper "
-      "than the bound), retry = integrator_retry, floor = step_size_floor, nonfinite = "
-      "non_finite_state, fail = integrator_failure. Steps: accepted steps (the largest "
-      "over "
-      "seeds). CPU and the real-time factor (simulated over CPU seconds, the trial's "
-      "thread) are measured on this machine, outside the results digest "
-      "(stability_cost.csv, measured.json); over several seeds CPU is their sum.\n\n"
-      "Why each trial ended:\n\n";
+  MarkdownTable table{{"case", "integrator", "status", "expected", "verdict", "warnings",
+                       "deepest contact / bound (um)", "steps", "CPU (s)",
+                       "real-time factor"}};
+  for (const Cell& cell : Cells(d, trials)) table.AddRow(CellMarkdown(cell));
+  md += ToMarkdown(table) + kLegend;
   for (const experiment::StabilityTrial& t : trials) {
     const scene::StabilityCase& c = d.cases[t.case_index];
     md +=
@@ -236,7 +266,26 @@ Section StabilitySection(const scene::ExperimentFile& file,
                     c.seeds > 1 ? fmt::format(", seed {}", t.seed_index) : std::string(),
                     sim::StatusName(t.result.status), t.result.detail);
   }
-  s.markdown = md;
+  return md;
+}
+
+}  // namespace
+
+Section StabilitySection(const scene::ExperimentFile& file,
+                         const std::vector<experiment::StabilityTrial>& trials) {
+  const scene::StabilityDesign& d = file.stability;
+  TrialRecords records = RecordTrials(Cells(d, trials));
+  const std::vector<std::string> failed = FailedCases(d, trials);
+  Section s;
+  s.kind = "stability";
+  s.tables.emplace_back("stability_trials.csv", std::move(records.table));
+  s.measured_tables.emplace_back("stability_cost.csv", std::move(records.cost));
+  s.summary = {{"claims", nlohmann::json::array()},
+               {"cases", records.cases},
+               {"failed_cases", failed},
+               {"passed", failed.empty()}};
+  s.measured = {{"trials", records.measured}};
+  s.markdown = StabilityMarkdown(d, trials, failed);
   return s;
 }
 
