@@ -61,7 +61,7 @@ scene::Scene BlockOnFloor() {
 // orientation 0.2 rad from the block's.
 Decision Aiming(const TrialModel& model) {
   Decision d;
-  d.estimated_target = model.part->target.position + Vector3d(0.003, -0.002, -0.005);
+  d.estimated_target = model.target.position + Vector3d(0.003, -0.002, -0.005);
   d.held_orientation =
       Eigen::AngleAxisd(0.2, Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
   d.psi = 0.9;
@@ -89,8 +89,7 @@ Eigen::VectorXd Stacked(const Loads& l) {
 Eigen::MatrixXd StateDifferences(const TrialModel& model, const Decision& d,
                                  const BodyState& y, const std::array<double, 4>& h) {
   const auto f = [&](const BodyState& x) -> BodyState {
-    return Derivative(model, x, model.LoadsAt(MotionOf(x), d, nullptr),
-                      model.scene->gravity);
+    return Derivative(model, x, model.LoadsAt(MotionOf(x), d, nullptr), model.gravity);
   };
   Eigen::MatrixXd out(kBodyStateSize, kBodyStateSize);
   for (int j = 0; j < kBodyStateSize; ++j) {
@@ -106,7 +105,7 @@ Eigen::MatrixXd StateDifferences(const TrialModel& model, const Decision& d,
 BodyJacobian Analytic(const TrialModel& model, const Decision& d, const BodyState& y) {
   LoadJacobian dl;
   const Loads loads = model.LoadsAt(MotionOf(y), d, nullptr, &dl);
-  return DerivativeJacobian(model, y, loads, dl, model.scene->gravity);
+  return DerivativeJacobian(model, y, loads, dl, model.gravity);
 }
 
 void ExpectJacobianWithAFlatContact(const scene::Scene& s) {
@@ -292,7 +291,7 @@ void ComparePegStates(const std::string& file, const std::string& model_name,
     m.velocity = row.velocity;
     m.angular_velocity = row.angular_velocity;
     Decision d = Aiming(*model);
-    d.held_orientation = model->part->target.Rotation();
+    d.held_orientation = model->target.Rotation();
     d.psi = row.psi;
     const BodyState y = StateOf(m);
     const Eigen::MatrixXd analytic = Analytic(*model, d, y);

@@ -16,7 +16,7 @@ namespace {
 // it tips (guidance/torque_law; Psi = 1): stiffness, damping, and the
 // natural frequency and damping ratio they give the moving body.
 std::string DescribeHand(const sim::TrialModel& m) {
-  const auto& g = m.scene->params.guidance;
+  const auto& g = m.params.guidance;
   const double w = m.torque_params.torque_frequency;
   const double i_law = m.torque_inertia_body(0, 0);
   const double k = i_law * w * w,
@@ -36,7 +36,7 @@ std::string DescribeHand(const sim::TrialModel& m) {
 std::string DescribeSceneModels(const scene::Scene& scene) {
   std::string out = scene::DescribeScene(scene);
   for (const auto& m : sim::BuildSequenceModels(scene)) {
-    out += fmt::format("  trial model '{}': ", m->part->name);
+    out += fmt::format("  trial model '{}': ", m->part_name);
     if (!m->contact.model)
       out += "nothing to touch";
     else

@@ -45,7 +45,7 @@ int Rhs(realtype, N_Vector y, N_Vector ydot, void* data) {
   const contact::RigidMotion m = MotionOf(state);
   if (!IsFinite(m)) return 1;  // recoverable: CVODE retries with a smaller step
   const Loads loads = p.c->LoadsAt(m, p.held);
-  Of(ydot) = Derivative(p.c->model, state, loads, p.c->model.scene->gravity);
+  Of(ydot) = Derivative(p.c->model, state, loads, p.c->model.gravity);
   return 0;
 }
 
@@ -61,7 +61,7 @@ int Jacobian(realtype, N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, 
   LoadJacobian dloads;
   const Loads loads = p.c->model.LoadsAt(m, p.held, &p.c->contact_counters, &dloads);
   const BodyJacobian jacobian =
-      DerivativeJacobian(p.c->model, state, loads, dloads, p.c->model.scene->gravity);
+      DerivativeJacobian(p.c->model, state, loads, dloads, p.c->model.gravity);
   for (int j = 0; j < kBodyStateSize; ++j)
     for (int i = 0; i < kBodyStateSize; ++i) SM_ELEMENT_D(J, i, j) = jacobian(i, j);
   return 0;
@@ -448,7 +448,7 @@ class CvodeRun {
 double IntegrateWithCvode(TrialContext& c, double sample_interval,
                           std::optional<TraceRow>* final_row, TrialCounters* counters) {
   contact::RigidMotion start;
-  start.pose = c.model.part->initial.Transform();
+  start.pose = c.model.initial.Transform();
   const std::optional<Decision> first = Decide(c, 0.0, start);
   if (c.ended || !first) {  // ended at the first decision
     *final_row = FinalRow(c, 0.0, start);

@@ -42,11 +42,10 @@ void Draw(TrialContext& c, std::int64_t i, const contact::RigidMotion& m,
   const Vector3d T = m.pose.translation();
   if (!c.ended) {
     d->estimated_target = guidance::DrawEstimatedTarget(
-        p.guidance, c.key, static_cast<std::uint64_t>(i), model.part->target.position, T,
+        p.guidance, c.key, static_cast<std::uint64_t>(i), model.target.position, T,
         centre - model.posture.eye, f.eta, f.lambda_c, d->psi);
-    d->held_orientation =
-        guidance::DrawHeldOrientation(p.guidance, c.key, static_cast<std::uint64_t>(i),
-                                      model.part->target.Rotation(), f.eta);
+    d->held_orientation = guidance::DrawHeldOrientation(
+        p.guidance, c.key, static_cast<std::uint64_t>(i), model.target.Rotation(), f.eta);
   } else {
     d->estimated_target = T;
     d->held_orientation = m.pose.linear();
@@ -79,8 +78,7 @@ std::optional<Decision> Decide(TrialContext& c, double time,
   c.last_decision = i;
   const Vector3d T = m.pose.translation();
   if (std::optional<Ending> bad =
-          CheckState(m, model.part->mass_properties.bounding_radius, p.simulation,
-                     "decision", i, time)) {
+          CheckState(m, model.bounding_radius, p.simulation, "decision", i, time)) {
     c.End(std::move(*bad));
     return std::nullopt;
   }

@@ -108,8 +108,7 @@ class SimbodyTrial::CompletionTrigger : public SimTK::TriggeredEventHandler {
 
 SimbodyTrial::SimbodyTrial(TrialContext& c) : c_(c), matter_(system_), forces_(system_) {
   const TrialModel& model = c.model;
-  const scene::Scene& scene = *model.scene;
-  SimTK::Force::UniformGravity gravity(forces_, matter_, ToSimTK(scene.gravity));
+  SimTK::Force::UniformGravity gravity(forces_, matter_, ToSimTK(model.gravity));
   const Matrix3d& i = model.inertia_body;
   const SimTK::Inertia inertia_com(SimTK::Vec3(i(0, 0), i(1, 1), i(2, 2)),
                                    SimTK::Vec3(i(0, 1), i(0, 2), i(1, 2)));
@@ -121,11 +120,11 @@ SimbodyTrial::SimbodyTrial(TrialContext& c) : c_(c), matter_(system_), forces_(s
   body_ = mobod.getMobilizedBodyIndex();
   SimTK::Force::Custom loads(forces_, new LoadsElement(this));
   system_.addEventHandler(
-      new DecisionHandler(this, scene.params.simulation.decision_interval));
+      new DecisionHandler(this, model.params.simulation.decision_interval));
   system_.addEventHandler(new CompletionTrigger(this));
 
   initial_ = system_.realizeTopology();
-  const scene::Pose& start = model.part->initial;
+  const scene::Pose& start = model.initial;
   mobod.setQToFitTransform(
       initial_, SimTK::Transform(ToSimTK(start.Rotation()), ToSimTK(start.position)));
   Decide(initial_);

@@ -9,9 +9,9 @@ namespace vahf::sim::internal {
 bool StepChecks::Accepted(double t, const contact::RigidMotion& m, double depth, double h,
                           std::int64_t retries,
                           const std::function<std::string()>& retry_detail) {
-  if (std::optional<Ending> bad = CheckState(
-          m, c_.model.part->mass_properties.bounding_radius, c_.params().simulation,
-          "a step after decision", c_.last_decision, t)) {
+  if (std::optional<Ending> bad =
+          CheckState(m, c_.model.bounding_radius, c_.params().simulation,
+                     "a step after decision", c_.last_decision, t)) {
     if (!IsFinite(m)) c_.warnings.Note(WarningKind::kNonFiniteState, t, bad->detail);
     c_.End(std::move(*bad));
     return false;

@@ -78,7 +78,7 @@ double RunStepper(const StepperEntry& stepper, TrialContext& c, double sample_in
 
 TrialResult RunTrial(const TrialModel& model, rng::StreamKey key,
                      const TrialOptions& options) {
-  const auto& params = model.scene->params;
+  const auto& params = model.params;
   TrialContext c(model, key);
   c.work = options.initial_work;
   c.record_trace = options.record_trace;
@@ -100,7 +100,7 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key,
   result.detail = c.detail;
   result.end_time = result.status == Status::kCompleted ? c.completion_time : end_time;
   result.completion_time = c.completion_time;
-  result.part = model.part->name;
+  result.part = model.part_name;
   result.integrator = params.simulation.integrator;
   result.accuracy = params.simulation.accuracy;
   result.key = key;

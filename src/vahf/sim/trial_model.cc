@@ -155,6 +155,14 @@ void SetContact(const scene::Scene& scene, const scene::Part& part,
   }
 }
 
+// visibility/mode, one of the parameter table's three names.
+TrialModel::Visibility VisibilityModeOf(const visibility::VisibilityParams& v) {
+  if (v.mode == "raycast") return TrialModel::Visibility::kRaycast;
+  if (v.mode == "constant") return TrialModel::Visibility::kConstant;
+  VAHF_CHECK(v.mode == "off", "visibility mode '" + v.mode + "' is none of the table's");
+  return TrialModel::Visibility::kOff;
+}
+
 }  // namespace
 
 std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
@@ -172,8 +180,13 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
       params.sight.Build(), params.reach.Build(scene.op.arm_length, scene.op.height),
       params.glance.Build()});
   TrialModel& m = *out;
-  m.scene = &scene;
-  m.part = &part;
+  m.params = params;
+  m.gravity = scene.gravity;
+  m.part_name = part.name;
+  m.initial = part.initial;
+  m.target = part.target;
+  m.grasp = part.grasp;
+  m.visibility_mode = VisibilityModeOf(params.visibility);
   m.sequence_position = sequence_position;
   m.operator_acts = params.guidance.mode == "operator";
   SetMass(scene, part, &m);
@@ -191,7 +204,7 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
   SetContact(scene, part, fixed, &m);
   // Eq. 1 by ray casting only when the scene asks for it and something could
   // hide the part; a scene with V given or switched off tessellates nothing.
-  if (params.visibility.mode == "raycast" && !fixed.empty())
+  if (m.visibility_mode == TrialModel::Visibility::kRaycast && !fixed.empty())
     m.visibility = MeshesFor(scene, part, fixed);
   return out;
 }
@@ -216,28 +229,28 @@ void TrialModel::OperatorLoad(const contact::RigidMotion& m, const Decision& d,
   *torque = Vector3d::Zero();
   if (!operator_acts) return;
   const Matrix3d& R = m.pose.linear();
-  const Vector3d r_grasp = R * part->grasp;
+  const Vector3d r_grasp = R * grasp;
   // Where the push acts: the grasp; with the compliance centre at the
   // leading end, r_c = r_grasp + w R (leading end - grasp), passing to the
   // leading end as the contact blend w rises. It damps that point's velocity.
   Vector3d r_c = r_grasp;
   if (compliance_at_leading_end)
     r_c += guidance::ContactBlend(cf.normal_force.norm(), blend_force) *
-           (R * (leading_end - part->grasp));
+           (R * (leading_end - grasp));
   const Vector3d v_c = m.velocity + m.angular_velocity.cross(r_c);
-  const auto& g = scene->params.guidance;
+  const auto& g = params.guidance;
   // The arm always carries its own weight (at the grasp); the part's, as
   // guidance says.
   const guidance::FeltContact felt{cf.normal_force, cf.friction_force.norm()};
   const Vector3d push = guidance::ImpedanceForce(
       g, d.psi, mass, m.pose.translation(), d.estimated_target, v_c, felt, blend_force,
-      part_mass * scene->gravity, scene->params.simulation.completion_distance);
-  *force = push - hand_mass * scene->gravity;
+      part_mass * gravity, params.simulation.completion_distance);
+  *force = push - hand_mass * gravity;
   const Matrix3d inertia_world = R * torque_inertia_body * R.transpose();
   const Vector3d turn = guidance::AssemblyTorque(torque_params, d.psi, inertia_world, R,
                                                  d.held_orientation, m.angular_velocity);
   if (compliance_at_leading_end)
-    *torque = r_c.cross(push) - r_grasp.cross(hand_mass * scene->gravity) + turn;
+    *torque = r_c.cross(push) - r_grasp.cross(hand_mass * gravity) + turn;
   else
     *torque = r_grasp.cross(*force) + turn;
 }
@@ -262,14 +275,15 @@ Loads TrialModel::LoadsAt(const contact::RigidMotion& m, const Decision& d,
 }
 
 double TrialModel::DistanceToTarget(const contact::RigidMotion& m) const {
-  return (m.pose.translation() - part->target.position).norm();
+  return (m.pose.translation() - target.position).norm();
 }
 
 double TrialModel::AngleToTargetDeg(const contact::RigidMotion& m) const {
-  const Matrix3d target = part->target.Rotation();
+  const Matrix3d assembled = target.Rotation();
   if (revolved)  // a solid of revolution is assembled whatever its spin
-    return human::AngleDeg(m.pose.linear().col(2), target.col(2));
-  return Eigen::AngleAxisd(target.transpose() * m.pose.linear()).angle() * 180.0 / M_PI;
+    return human::AngleDeg(m.pose.linear().col(2), assembled.col(2));
+  return Eigen::AngleAxisd(assembled.transpose() * m.pose.linear()).angle() * 180.0 /
+         M_PI;
 }
 
 }  // namespace vahf::sim

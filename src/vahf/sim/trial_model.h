@@ -61,8 +61,16 @@ struct TrialModel {
   explicit TrialModel(human::FactorCurves factor_curves)
       : curves(std::move(factor_curves)) {}
 
-  const scene::Scene* scene = nullptr;  // outlives the model
-  const scene::Part* part = nullptr;
+  // What a trial reads of its scene, copied in when the model is built: the
+  // model holds no pointer into its input, and its modes are resolved once.
+  scene::Parameters params;
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // m/s^2, world
+  std::string part_name;
+  scene::Pose initial;  // the part's pose at the start of its trial, world
+  scene::Pose target;   // and where it is assembled
+  Eigen::Vector3d grasp = Eigen::Vector3d::Zero();  // where the hand holds it, part frame
+  enum class Visibility { kOff, kConstant, kRaycast };  // visibility/mode
+  Visibility visibility_mode = Visibility::kOff;
   int sequence_position = 0;
   bool operator_acts = true;  // guidance mode "operator"
   // The moving body: the part, plus the operator's hand and forearm as a point

@@ -24,8 +24,8 @@ LoadJacobian TrialModel::LoadJacobianAt(const contact::RigidMotion& m, const Dec
   out.bottomRows<3>() = cj.torque;
   if (!operator_acts) return out;
   const Matrix3d R = m.pose.linear();
-  const Vector3d r_grasp = R * part->grasp;
-  const auto& g = scene->params.guidance;
+  const Vector3d r_grasp = R * grasp;
+  const auto& g = params.guidance;
   const contact::ContactForces& cf = loads.contact;
   // The push's point r_c (OperatorLoad): the grasp, or r_grasp + w u with
   // u = R (leading end - grasp) and w the contact blend, whose derivative
@@ -35,7 +35,7 @@ LoadJacobian TrialModel::LoadJacobianAt(const contact::RigidMotion& m, const Dec
   Vector3d u = Vector3d::Zero();
   if (compliance_at_leading_end) {
     const double fn = cf.normal_force.norm();
-    u = R * (leading_end - part->grasp);
+    u = R * (leading_end - grasp);
     r_c += guidance::ContactBlend(fn, blend_force) * u;
     if (fn > 0)
       dw = guidance::ContactBlendSlope(fn, blend_force) *
@@ -46,8 +46,8 @@ LoadJacobian TrialModel::LoadJacobianAt(const contact::RigidMotion& m, const Dec
   const double friction = cf.friction_force.norm();
   const guidance::ImpedancePartials p = guidance::ImpedanceForceJacobian(
       g, d.psi, mass, m.pose.translation(), d.estimated_target, v_c,
-      {cf.normal_force, friction}, blend_force, part_mass * scene->gravity,
-      scene->params.simulation.completion_distance);
+      {cf.normal_force, friction}, blend_force, part_mass * gravity,
+      params.simulation.completion_distance);
   // dr_c = dtheta x r_c + u dw (u turns with the part: dtheta x (w u) is in
   // the first term); dv_c = dv + dw_ x r_c + w_ x dr_c.
   Block dv_c = Block::Zero(), dr_c = Block::Zero();
@@ -66,7 +66,7 @@ LoadJacobian TrialModel::LoadJacobianAt(const contact::RigidMotion& m, const Dec
   if (!compliance_at_leading_end) {
     torque += -CrossMatrix(loads.assembly_force) * dr_c;
   } else {
-    const Vector3d hand_weight = hand_mass * scene->gravity;
+    const Vector3d hand_weight = hand_mass * gravity;
     Block dr_grasp = Block::Zero();
     dr_grasp.block<3, 3>(0, 3) = -CrossMatrix(r_grasp);
     torque += -CrossMatrix(loads.assembly_force + hand_weight) * dr_c +

@@ -86,7 +86,7 @@ struct TrialContext {
     detail = std::move(e.detail);
   }
 
-  const scene::Parameters& params() const { return model.scene->params; }
+  const scene::Parameters& params() const { return model.params; }
 
   contact::ContactForces ContactAt(const contact::RigidMotion& m) {
     const PhaseTimer timer(Timing(&PhaseSeconds::contact));
@@ -102,10 +102,9 @@ struct TrialContext {
   // its centre of mass at `centre`, moving along `motion` (non-zero).
   human::FactorValues FactorsAt(const contact::RigidMotion& m, const Vector3d& centre,
                                 const Vector3d& motion) {
-    const auto& v = params().visibility;
     double V = 1.0;  // "off", and "raycast" with nothing that could hide the part
-    if (v.mode == "constant") {
-      V = v.value;
+    if (model.visibility_mode == TrialModel::Visibility::kConstant) {
+      V = params().visibility.value;
     } else if (caster) {
       const visibility::VisibilityResult seen =
           caster->Compute(model.posture.eye, m.pose);
@@ -120,7 +119,7 @@ struct TrialContext {
   // previous decision or no travel, the way from T to the target.
   Vector3d MotionDirection(const Vector3d& centre, const Vector3d& T, bool first) const {
     Vector3d motion = first ? Vector3d::Zero() : Vector3d(centre - last_centre);
-    if (motion.norm() < kStillDistance) motion = model.part->target.position - T;
+    if (motion.norm() < kStillDistance) motion = model.target.position - T;
     if (motion.norm() < 1e-12) motion = -Vector3d::UnitZ();
     return motion;
   }
