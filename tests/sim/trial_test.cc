@@ -443,9 +443,10 @@ WhitneyRun RunWhitney(const WhitneyCase& w, const WhitneyContact& c) {
   doc["parameters"]["simulation"]["jam_time"] = 0.25;
   doc["parameters"]["simulation"]["decision_interval"] = 0.05;
   scene::Scene s = Parse(doc);  // standard gravity: the bound rule reads the weight
-  const std::shared_ptr<const TrialModel> model = BuildTrialModel(s, 0);
-  if (!c.weight) s.gravity.setZero();  // the trial reads the model's scene
-  WhitneyRun run = Measure(RunTrial(*model, {1, 0}));
+  // Weightless after the build: the model holds its own copy of gravity.
+  TrialModel model = *BuildTrialModel(s, 0);
+  if (!c.weight) model.gravity.setZero();
+  WhitneyRun run = Measure(RunTrial(model, {1, 0}));
   Print("no operator", c, w, run);
   return run;
 }
