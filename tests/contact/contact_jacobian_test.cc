@@ -53,8 +53,7 @@ Obstacle Floor() { return MakeObstacle(Box{{1.0, 1.0, 0.2}}, At({0, 0, -0.1}), f
 Obstacle Pedestal() { return MakeObstacle(kPedestal, At({0, 0, -0.005}), true); }
 
 enum Sample { kShell = 1, kMovingRim = 2 };
-PenaltyContact Model(std::vector<Obstacle> obstacles, int samples,
-                     const ContactParams& p) {
+PenaltyContact Model(std::vector<Obstacle> obstacles, int samples, const PenaltyLaw& p) {
   return PenaltyContact(
       samples & kShell ? MakePointShell(kPart, 1e-3) : std::vector<ShellPoint>{},
       SignedDistance(kPart), geometry::ComputeMassProperties(kPart).bounding_radius, 0.5,
@@ -112,14 +111,14 @@ Compared Compare(const PenaltyContact& model, const RigidMotion& m) {
 }
 
 TEST(ContactJacobian, FaceContactSliding) {
-  const PenaltyContact model = Model({Floor()}, kShell, ContactParams());
+  const PenaltyContact model = Model({Floor()}, kShell, PenaltyLaw());
   const Compared c = Compare(model, Pressed(true));
   ASSERT_GT(c.forces.points_in_contact, 300);
   EXPECT_TRUE(vahf::testing::BlocksAgree(c.analytic, c.differences, 1e-5));
 }
 
 TEST(ContactJacobian, FaceContactBelowTheTransitionSpeed) {
-  const PenaltyContact model = Model({Floor()}, kShell, ContactParams());
+  const PenaltyContact model = Model({Floor()}, kShell, PenaltyLaw());
   const Compared c = Compare(model, Pressed(false));
   ASSERT_GT(c.forces.points_in_contact, 300);
   EXPECT_TRUE(vahf::testing::BlocksAgree(c.analytic, c.differences, 1e-5));
@@ -127,7 +126,7 @@ TEST(ContactJacobian, FaceContactBelowTheTransitionSpeed) {
 
 TEST(ContactJacobian, FaceContactInTheBarrierAndOnItsTangent) {
   for (double barrier : {50e-6, 30e-6}) {  // every point within it; some past b (1 - eps)
-    ContactParams p;
+    PenaltyLaw p;
     p.barrier_depth = barrier;
     const PenaltyContact model = Model({Floor()}, kShell, p);
     for (bool sliding : {true, false}) {
@@ -139,7 +138,7 @@ TEST(ContactJacobian, FaceContactInTheBarrierAndOnItsTangent) {
 }
 
 TEST(ContactJacobian, MovingRimsInAFlatFloor) {
-  ContactParams p;
+  PenaltyLaw p;
   p.barrier_depth = 50e-6;
   const PenaltyContact model = Model({Floor()}, kMovingRim, p);
   for (bool sliding : {true, false}) {
@@ -152,7 +151,7 @@ TEST(ContactJacobian, MovingRimsInAFlatFloor) {
 
 TEST(ContactJacobian, FixedRimsInTheMovingFlatFace) {
   for (double barrier : {0.0, 50e-6}) {
-    ContactParams p;
+    PenaltyLaw p;
     p.barrier_depth = barrier;
     const PenaltyContact model = Model({Pedestal()}, 0, p);
     for (bool sliding : {true, false}) {
@@ -165,7 +164,7 @@ TEST(ContactJacobian, FixedRimsInTheMovingFlatFace) {
 }
 
 TEST(ContactJacobian, EverySampleKindAtOnce) {
-  ContactParams p;
+  PenaltyLaw p;
   p.barrier_depth = 50e-6;
   const PenaltyContact model = Model({Pedestal()}, kShell | kMovingRim, p);
   const Compared c = Compare(model, Pressed(true));
@@ -179,7 +178,7 @@ TEST(ContactJacobian, EverySampleKindAtOnce) {
 // point slides along it, which the Jacobian leaves out.
 TEST(ContactJacobian, CurvedRimContactIsCloseButNotExact) {
   using namespace testing;
-  ContactParams p;
+  PenaltyLaw p;
   p.line_stiffness = 1e7;
   const Obstacle bore = MakeObstacle(ChamferedBore(), At({0, 0, 0}), true);
   const Shape peg = ChamferedPeg();
@@ -202,7 +201,7 @@ TEST(ContactJacobian, CurvedRimContactIsCloseButNotExact) {
 // ---------------------------------------------------------------- the law's slopes
 
 TEST(ContactJacobian, LawSlopesAgreeWithDifferencesAndChangeNoBit) {
-  ContactParams p;
+  PenaltyLaw p;
   p.dissipation = 0.5;
   struct Point {
     double barrier, depth, rate;

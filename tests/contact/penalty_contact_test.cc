@@ -63,7 +63,7 @@ Obstacle Floor() {
 }
 
 PenaltyContact Model(const Shape& part, double spacing, std::vector<Obstacle> obstacles,
-                     const ContactParams& params = ContactParams()) {
+                     const PenaltyLaw& params = PenaltyLaw()) {
   return PenaltyContact(MakePointShell(part, spacing), SignedDistance(part),
                         BoundingRadius(part), kMuPart, std::move(obstacles), params);
 }
@@ -71,7 +71,7 @@ PenaltyContact Model(const Shape& part, double spacing, std::vector<Obstacle> ob
 // ---------------------------------------------------------------- pressure law
 
 TEST(ContactPressure, ZeroWithoutPenetration) {
-  const ContactParams p;
+  const PenaltyLaw p;
   EXPECT_EQ(Pressure(p, 0.0, 0.0), 0.0);
   EXPECT_EQ(Pressure(p, -1e-6, 0.0), 0.0);
   EXPECT_EQ(Pressure(p, -1e-3, 10.0), 0.0);
@@ -79,7 +79,7 @@ TEST(ContactPressure, ZeroWithoutPenetration) {
 }
 
 TEST(ContactPressure, QuadraticOnsetIsC1AtZero) {
-  const ContactParams p;
+  const PenaltyLaw p;
   const double k = p.stiffness, x0 = p.onset_depth;
   for (double x : {1e-9, 1e-8, 1e-7, 5e-7, 0.999e-6})
     EXPECT_NEAR(Pressure(p, x, 0.0), k * x * x / (2 * x0), 1e-12 * k * x0) << x;
@@ -95,7 +95,7 @@ TEST(ContactPressure, QuadraticOnsetIsC1AtZero) {
 }
 
 TEST(ContactPressure, ContinuousWithSlopeKAtTheOnsetDepthAndLinearBeyond) {
-  const ContactParams p;
+  const PenaltyLaw p;
   const double k = p.stiffness, x0 = p.onset_depth;
   EXPECT_NEAR(Pressure(p, x0, 0.0), k * x0 / 2, 1e-9 * k * x0);
   const double h = 1e-12;
@@ -114,7 +114,7 @@ TEST(ContactPressure, ContinuousWithSlopeKAtTheOnsetDepthAndLinearBeyond) {
 }
 
 TEST(ContactPressure, HuntCrossleyFactorClampedAtZero) {
-  ContactParams p;
+  PenaltyLaw p;
   p.dissipation = 0.5;
   for (double x : {5e-7, 2e-5}) {
     const double elastic = Pressure(p, x, 0.0);
@@ -131,7 +131,7 @@ TEST(ContactPressure, HuntCrossleyFactorClampedAtZero) {
 // (1 - x/b)^2 up to b (1 - eps), then along its tangent; stiffer without
 // bound as x nears b, continuous and C1 where it leaves the barrier.
 TEST(ContactPressure, BarrierHardensTowardItsDepthAndLeavesAlongTheTangent) {
-  ContactParams plain, barrier;
+  PenaltyLaw plain, barrier;
   plain.dissipation = barrier.dissipation = 0.0;
   const double b = 5e-6;
   barrier.barrier_depth = b;
@@ -171,7 +171,7 @@ TEST(ContactModelFlat, NormalForceIsPressureTimesArea) {
   RigidMotion m;
   m.pose = FlatPose(kDepth);
   const ContactForces f = model.Evaluate(m);
-  const double n = Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  const double n = Pressure(PenaltyLaw(), kDepth, 0.0) * kBottomArea;
   EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
   EXPECT_NEAR(f.normal_force.x(), 0.0, 1e-12 * n);
   EXPECT_NEAR(f.normal_force.y(), 0.0, 1e-12 * n);
@@ -184,7 +184,7 @@ TEST(ContactModelFlat, NormalForceIsPressureTimesArea) {
 }
 
 TEST(ContactModelFlat, ForceDoesNotDependOnShellSpacing) {
-  const double n = Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  const double n = Pressure(PenaltyLaw(), kDepth, 0.0) * kBottomArea;
   for (double s : {4e-3, 3e-3, 7e-4}) {
     RigidMotion m;
     m.pose = FlatPose(kDepth);
@@ -198,7 +198,7 @@ TEST(ContactModelFlat, HuntCrossleyDampingFromTheApproachSpeed) {
   RigidMotion m;
   m.pose = FlatPose(kDepth);
   m.velocity = {0, 0, -0.2};  // pressing in at 0.2 m/s: factor 1 + 0.5 * 0.2
-  const double n = Pressure(ContactParams(), kDepth, 0.0) * kBottomArea;
+  const double n = Pressure(PenaltyLaw(), kDepth, 0.0) * kBottomArea;
   EXPECT_NEAR(model.Evaluate(m).normal_force.z() / n, 1.1, 1e-9);
   m.velocity = {0, 0, 3.0};  // separating faster than 1/c: no force at all
   const ContactForces f = model.Evaluate(m);
@@ -209,7 +209,7 @@ TEST(ContactModelFlat, HuntCrossleyDampingFromTheApproachSpeed) {
 
 TEST(ContactModelFlat, SlidingFrictionIsMuTimesNormalAgainstTheSlip) {
   const PenaltyContact model = Model(Box{kPartSize}, 1e-3, {Floor()});
-  const ContactParams params;
+  const PenaltyLaw params;
   ASSERT_GT(0.05, 10 * params.friction_transition_speed);
   for (double angle : {0.0, 0.8, -2.4}) {
     RigidMotion m;
@@ -230,7 +230,7 @@ TEST(ContactModelFlat, SlidingFrictionIsMuTimesNormalAgainstTheSlip) {
 
 TEST(ContactModelFlat, FrictionIsLinearInSlipBelowTheTransitionSpeed) {
   const PenaltyContact model = Model(Box{kPartSize}, 1e-3, {Floor()});
-  const ContactParams params;
+  const PenaltyLaw params;
   const double vs = params.friction_transition_speed;
   const double n = Pressure(params, kDepth, 0.0) * kBottomArea;
   const Eigen::Vector3d dir(0.6, -0.8, 0);
@@ -278,7 +278,7 @@ Eigen::Isometry3d PegPose(const TiltedContact& c) {
 // adds the integral over phi of R Q(D) / cos(theta), where
 // Q(x) = int_0^x p(u) du = k x^3 / (6 x0) below x0, k x0^2 / 6 + k (x^2 - x0 x) / 2
 // beyond (the pressure law integrated once).
-double ContinuumPegForce(const ContactParams& params, const TiltedContact& c) {
+double ContinuumPegForce(const PenaltyLaw& params, const TiltedContact& c) {
   const double kTilt = c.tilt, kPegDepth = c.depth;
   const double k = params.stiffness, x0 = params.onset_depth, r = kPegRadius;
   const double a = kPegDepth / std::sin(kTilt);
@@ -310,7 +310,7 @@ double ContinuumPegForce(const ContactParams& params, const TiltedContact& c) {
 // Normal force at shell spacings 1, 0.5 and 0.25 mm, printed against the
 // continuum value; returns the three forces.
 std::vector<double> RefinementSeries(const TiltedContact& c, double* continuum) {
-  const ContactParams params;
+  const PenaltyLaw params;
   *continuum = ContinuumPegForce(params, c);
   std::vector<double> forces;
   for (double s : {1e-3, 0.5e-3, 0.25e-3}) {
@@ -419,7 +419,7 @@ TEST(ContactModelBroadPhase, ContactAtTheEdgeOfTheBoundingSpheresIsKept) {
   const ContactForces f = model.Evaluate(m, &counters);
   EXPECT_EQ(counters.pairs_skipped, 0u);
   EXPECT_EQ(f.points_in_contact, 10 * 10);
-  const double n = Pressure(ContactParams(), kDepth, 0.0) * 0.01 * 0.01;
+  const double n = Pressure(PenaltyLaw(), kDepth, 0.0) * 0.01 * 0.01;
   EXPECT_NEAR(f.normal_force.z() / n, 1.0, 1e-9);
 }
 
@@ -442,7 +442,7 @@ TEST(ContactModelBroadPhase, ShellTreeCullsWithoutLosingAContactPoint) {
   const std::vector<ShellPoint> shell = MakePointShell(peg, 0.5e-3);
   const Obstacle floor = Floor();
   const PenaltyContact model(shell, SignedDistance(peg), BoundingRadius(peg), kMuPart,
-                             {floor}, ContactParams());
+                             {floor}, PenaltyLaw());
   RigidMotion m;
   m.pose = PegPose({0.5 * M_PI / 180, 50e-6});  // a 5.7 mm wide patch
   ContactCounters counters;
@@ -454,7 +454,7 @@ TEST(ContactModelBroadPhase, ShellTreeCullsWithoutLosingAContactPoint) {
   for (const ShellPoint& p : shell) {
     const Distance d = floor.field.At(to_floor * p.position);
     if (!(d.distance < 0)) continue;
-    brute += Pressure(ContactParams(), -d.distance, 0.0) * p.area *
+    brute += Pressure(PenaltyLaw(), -d.distance, 0.0) * p.area *
              (floor.pose.linear() * d.normal);
     ++touching;
   }
@@ -481,9 +481,9 @@ TEST(ContactModelFrame, OriginOffsetFromTheCentroidDoesNotMatter) {
   // (and frame B's would be the peg's shifted off its axis, which no profile
   // describes); ContactModelFrame.RimContact... below shifts along the axis.
   const PenaltyContact a(shell_a, SignedDistance(peg), radius_a, kMuPart, {Floor()},
-                         ContactParams());
+                         PenaltyLaw());
   const PenaltyContact b(shell_b, SignedDistance(peg), radius_a + g.norm(), kMuPart,
-                         {Floor()}, ContactParams());
+                         {Floor()}, PenaltyLaw());
 
   RigidMotion ma;
   ma.pose = PegPose({2.0 * M_PI / 180, 20e-6});
@@ -516,7 +516,7 @@ const Eigen::Vector3d kBoreAt(0.1, -0.2, 0.9);
 
 Obstacle BoreWithRims() {
   Obstacle bore = MakeObstacle(testing::ChamferedBore(), Translation(kBoreAt), kMuFloor);
-  bore.rim = MakeRims(testing::ChamferedBore(), ContactParams().rim_spacing);
+  bore.rim = MakeRims(testing::ChamferedBore(), kRimSpacing.default_value);
   return bore;
 }
 
@@ -534,7 +534,7 @@ TEST(ContactModelBroadPhase, RimBlocksCullWithoutChangingABit) {
   const Shape peg = testing::ChamferedPeg();
   const SignedDistance peg_field(peg);
   const Obstacle bore = BoreWithRims();
-  const ContactParams params;
+  const PenaltyLaw params;
   const PenaltyContact model = Model(peg, 1e-3, {bore}, params);
   const RigidMotion m = TiltedPegMoving();
   ContactCounters c;
@@ -599,8 +599,8 @@ TEST(ContactModelBroadPhase, APegInsideItsBoreIsClearedWithoutPointQueries) {
   // (sector_bound.h) clear it all.
   const Shape peg = testing::ChamferedPeg();
   const PenaltyContact model(MakePointShell(peg, 1e-3), SignedDistance(peg),
-                             BoundingRadius(peg), kMuPart, {BoreWithRims()},
-                             ContactParams(), MakeRims(peg, 0.5e-3));
+                             BoundingRadius(peg), kMuPart, {BoreWithRims()}, PenaltyLaw(),
+                             MakeRims(peg, 0.5e-3));
   RigidMotion m;
   m.pose.linear() =
       Eigen::AngleAxisd(0.01 * M_PI / 180, Eigen::Vector3d::UnitX()).toRotationMatrix();
@@ -632,7 +632,7 @@ TEST(ContactModelBroadPhase, APegAgainstItsBoreWallIsQueriedOnlyNearTheWall) {
   for (const ShellPoint& p : model.shell()) {
     const Distance d = bore.field.At(to_bore * p.position);
     if (!(d.distance < 0)) continue;
-    brute += Pressure(ContactParams(), -d.distance, 0.0) * p.area * d.normal;
+    brute += Pressure(PenaltyLaw(), -d.distance, 0.0) * p.area * d.normal;
     ++touching;
   }
   ASSERT_GT(touching, 100);
@@ -686,7 +686,7 @@ TEST(ContactModelFrame, RimContactWithTheOriginMovedAlongTheAxis) {
   const double radius_a = BoundingRadius(peg_a);
   const PenaltyContact a = Model(peg_a, 1e-3, {BoreWithRims()});
   const PenaltyContact b(shell_b, SignedDistance(peg_b), radius_a + g, kMuPart,
-                         {BoreWithRims()}, ContactParams());
+                         {BoreWithRims()}, PenaltyLaw());
 
   const RigidMotion ma = TiltedPegMoving();
   RigidMotion mb = ma;

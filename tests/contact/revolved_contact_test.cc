@@ -48,8 +48,8 @@ double Radius(const Shape& s) {
 // the bound.
 constexpr double kLoad = 2.0;  // N
 constexpr double kBound = 5e-6;
-ContactParams RuleParams() {
-  ContactParams p;
+PenaltyLaw RuleParams() {
+  PenaltyLaw p;
   p.barrier_depth = kBound;
   p.line_stiffness = kLoad / (2e-3 * 0.25 * kBound);
   p.stiffness = p.line_stiffness / 2e-3;
@@ -57,7 +57,7 @@ ContactParams RuleParams() {
 }
 
 RevolvedContact Exact(const Shape& moving, const Shape& fixed,
-                      const Eigen::Isometry3d& at, const ContactParams& p) {
+                      const Eigen::Isometry3d& at, const PenaltyLaw& p) {
   return RevolvedContact(
       RevolvedContact::Make(ProfileOf(moving), Eigen::Isometry3d::Identity(), 0.15,
                             Radius(moving)),
@@ -66,8 +66,7 @@ RevolvedContact Exact(const Shape& moving, const Shape& fixed,
 
 // The general path with rims both ways at `spacing` and no face points.
 PenaltyContact Sampled(const Shape& moving, const Shape& fixed,
-                       const Eigen::Isometry3d& at, const ContactParams& p,
-                       double spacing) {
+                       const Eigen::Isometry3d& at, const PenaltyLaw& p, double spacing) {
   return PenaltyContact({}, SignedDistance(moving), Radius(moving), 0.15,
                         {Obstacle{SignedDistance(fixed), at, 0.15, Radius(fixed),
                                   MakeRims(fixed, spacing)}},
@@ -97,7 +96,7 @@ TEST(RevolvedContact, TiltedCircleInACylinderMatchesTheClosedForm) {
   const Shape bore = testing::Revolved(
       {{0, -0.05}, {0.03, -0.05}, {0.03, 0.0}, {Rb, 0.0}, {Rb, -0.04}, {0, -0.04}});
   const RevolvedContact model =
-      Exact(Disc(rho), bore, Eigen::Isometry3d::Identity(), ContactParams());
+      Exact(Disc(rho), bore, Eigen::Isometry3d::Identity(), PenaltyLaw());
   for (double deg : {0.0, 0.5, 2.0, 5.0, 10.0}) {
     for (double e : {52e-6, 60e-6, 80e-6}) {
       const double theta = deg * M_PI / 180, C = std::cos(theta), S = std::sin(theta);
@@ -128,7 +127,7 @@ TEST(RevolvedContact, TiltedCircleOnTheChamferMatchesTheClosedForm) {
   const Shape bore = testing::ChamferedBore();
   const double rho = 0.0105;
   const RevolvedContact model =
-      Exact(Disc(rho), bore, Eigen::Isometry3d::Identity(), ContactParams());
+      Exact(Disc(rho), bore, Eigen::Isometry3d::Identity(), PenaltyLaw());
   for (double deg : {0.0, 0.5, 2.0, 5.0}) {
     for (double d : {0.5e-6, 2e-6, 10e-6}) {
       const double theta = deg * M_PI / 180, C = std::cos(theta), S = std::sin(theta);
@@ -151,7 +150,7 @@ TEST(RevolvedContact, TiltedCircleOnTheChamferMatchesTheClosedForm) {
 TEST(RevolvedContact, CirclePressedUniformlyIntoTheConeCarriesTheLineLaw) {
   const Shape bore = testing::ChamferedBore();
   const double rho = 0.0105;
-  const ContactParams p = RuleParams();
+  const PenaltyLaw p = RuleParams();
   const RevolvedContact model = Exact(Disc(rho), bore, Eigen::Isometry3d::Identity(), p);
   for (double d : {0.4e-6, 1.25e-6, 4e-6}) {
     RigidMotion m;
@@ -244,7 +243,7 @@ Agreement Compare(const ContactModel& exact, const ContactModel& sampled, int po
 // integrate it closely.
 TEST(RevolvedContact, AgreesWithTheRefinedGeneralPathOverRandomPoses) {
   const Shape peg = testing::ChamferedPeg(), bore = testing::ChamferedBore();
-  const ContactParams p = RuleParams();
+  const PenaltyLaw p = RuleParams();
   const RevolvedContact exact = Exact(peg, bore, Eigen::Isometry3d::Identity(), p);
   const double arm = Radius(peg);
   double coarsest = 0, finest = 0;
@@ -432,7 +431,7 @@ std::vector<Eigen::Isometry3d> CornerPoses() {
 
 TEST(RevolvedContact, FindsTheArcsWhereARimPassesACorner) {
   const Shape peg = testing::ChamferedPeg(), bore = testing::ChamferedBore();
-  const ContactParams p = RuleParams();
+  const PenaltyLaw p = RuleParams();
   Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
   at.translation() = Vector3d(0, 0, 0.95);
   const RevolvedContact exact = Exact(peg, bore, at, p);
@@ -539,12 +538,12 @@ TEST(RevolvedContact, FindsEachArcsDeepestPointInFewQueries) {
 // height turns the whole load by 90 deg, which no integrator steps across
 // (measured in a trial: 1 kN of the rod's wedged load turning within
 // 4e-12 m, its steps falling to 10 ns). The load's direction blends across
-// the axis (ContactParams::edge_blend): on it, the bisector; 1e-11 m either
+// the axis (PenaltyLaw::edge_blend, kEdgeBlend): on it, the bisector; 1e-11 m either
 // way, the same load within 1e-4 of it (the depth's own change: 1e-5).
 TEST(RevolvedContact, LoadTurnsContinuouslyAcrossACornersMedialAxis) {
   constexpr double kPost = 0.01, kTop = 0.02, d = 2e-6;
   const Shape post = testing::Revolved({{0, 0}, {kPost, 0}, {kPost, kTop}, {0, kTop}});
-  const auto axial_load = [&](const ContactParams& p, double dz) {
+  const auto axial_load = [&](const PenaltyLaw& p, double dz) {
     const RevolvedContact model =
         Exact(Disc(kPost - d), post, Eigen::Isometry3d::Identity(), p);
     RigidMotion m;
@@ -553,7 +552,7 @@ TEST(RevolvedContact, LoadTurnsContinuouslyAcrossACornersMedialAxis) {
     EXPECT_NEAR(f.max_depth, d, 1e-10);
     return f.normal_force;
   };
-  const ContactParams blended = RuleParams();
+  const PenaltyLaw blended = RuleParams();
   const Vector3d on = axial_load(blended, 0);
   // The bisector's axial part, 1 / sqrt(2) of 2 pi rho LineLoad(d).
   const double line = 2 * M_PI * (kPost - d) * LineLoad(blended, d, 0.0);
@@ -562,7 +561,7 @@ TEST(RevolvedContact, LoadTurnsContinuouslyAcrossACornersMedialAxis) {
   for (double dz : {-1e-11, 1e-11})
     EXPECT_LT((axial_load(blended, dz) - on).norm(), 1e-4 * line) << dz;
   // The sharp corner: the same rounding turns the load by 90 deg.
-  ContactParams sharp = RuleParams();
+  PenaltyLaw sharp = RuleParams();
   sharp.edge_blend = 0;
   const double below = axial_load(sharp, -1e-11).z(),
                above = axial_load(sharp, 1e-11).z();

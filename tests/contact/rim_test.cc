@@ -215,9 +215,10 @@ Obstacle WithRims(const Shape& shape, const Eigen::Isometry3d& pose, double rim_
 }
 
 PenaltyContact Model(const Shape& part, std::vector<Obstacle> obstacles,
-                     const ContactParams& params = ContactParams()) {
-  return PenaltyContact(MakePointShell(part, params.shell_spacing), SignedDistance(part),
-                        BoundingRadius(part), kMuPart, std::move(obstacles), params);
+                     const PenaltyLaw& params = PenaltyLaw()) {
+  return PenaltyContact(MakePointShell(part, ContactParams().shell_spacing),
+                        SignedDistance(part), BoundingRadius(part), kMuPart,
+                        std::move(obstacles), params);
 }
 
 // The C1 onset shape of both laws: x^2 / (2 x0), then x - x0 / 2; and its slope.
@@ -251,7 +252,7 @@ Eigen::Isometry3d CylinderPose(double offset) {
 // (Rb cos phi - e, Rb sin phi, 0) / rho, and the rim pushes against it, so
 //   F = -int_0^{2 pi} k_l e(R - rho) (Rb cos phi - e, Rb sin phi, 0) / rho Rb dphi
 // (midpoint rule, 2e6 steps; the y part vanishes by symmetry).
-Eigen::Vector3d MouthRimForce(const ContactParams& p, double e) {
+Eigen::Vector3d MouthRimForce(const PenaltyLaw& p, double e) {
   const int n = 2000000;
   Eigen::Vector3d f = Eigen::Vector3d::Zero();
   for (int i = 0; i < n; ++i) {
@@ -267,14 +268,13 @@ Eigen::Vector3d MouthRimForce(const ContactParams& p, double e) {
 TEST(RimContact, BoreMouthInAnOffsetCylinderAgainstTheClosedForm) {
   // e = 80 um > c = 50 um: the mouth rim is up to 30 um deep over +-0.89 rad.
   const double e = 80e-6;
-  ContactParams params;
+  PenaltyLaw params;
   const Eigen::Vector3d expected = MouthRimForce(params, e);
   std::printf("cylinder offset %.0f um in a %.0f um clearance: rim force %.6g N\n",
               e * 1e6, kClearance * 1e6, expected.x());
   RigidMotion m;
   m.pose = CylinderPose(e);
   for (double s : {1e-3, 0.5e-3, 0.25e-3, 0.1e-3}) {
-    params.rim_spacing = s;
     Obstacle bore = WithRims(PlainBore(), Translation(kBoreAt), s);
     Obstacle bare = bore;
     bare.rim.clear();
@@ -377,7 +377,7 @@ TEST(RimContact, TiltedPegSeesTheBoreEdgeTheShellMisses) {
 void SweepAcrossOnset(const Shape& part, const Obstacle& obstacle,
                       const Eigen::Isometry3d& start, const Eigen::Vector3d& direction,
                       int steps, double rho_min, double max_shell_area) {
-  const ContactParams params;
+  const PenaltyLaw params;
   const PenaltyContact model = Model(part, {obstacle}, params);
   double max_rim_length = 0;
   for (const RimPoint& q : obstacle.rim)

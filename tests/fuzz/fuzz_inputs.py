@@ -102,24 +102,26 @@ KINDS = ["table1", "assembly_time", "human_factors_groups", "fatigue", "precisio
          "calibrate", "compare", "stability", "", "Table1"]
 
 
-def stepper_names():
-    """The steppers' names as `vahf params` lists them in simulation/integrator's rule
-    (docs/parameters.md, its output): the registry's, src/vahf/scene/steppers.def."""
+def registry_names(param):
+    """The names `vahf params` lists in the rule of PARAM, a registry's choice
+    (docs/parameters.md, its output): simulation/integrator's are the steppers'
+    (src/vahf/scene/steppers.def), contact/model's the contact models'
+    (src/vahf/contact/contact_registry.cc)."""
     with open(os.path.join(REPO, "docs", "parameters.md"), encoding="utf-8") as f:
-        m = re.search(r"^\| `simulation/integrator` \| [^|]* \| ([^|]*) \|", f.read(), re.M)
+        m = re.search(r"^\| `%s` \| [^|]* \| ([^|]*) \|" % re.escape(param), f.read(), re.M)
     if not m:
-        sys.exit("fuzz_inputs.py: docs/parameters.md has no simulation/integrator row")
+        sys.exit("fuzz_inputs.py: docs/parameters.md has no %s row" % param)
     return [name.strip() for name in m.group(1).split(",")]
 
 
-INTEGRATORS = stepper_names()
+INTEGRATORS = registry_names("simulation/integrator")
 ENUMS = {
     "role": ["base", "assembling", "assembled", "fixed", ""],
     "sex": ["male", "female", "unspecified", "other", ""],
     "type": ["revolution", "box", "sphere", ""],
     "integrator": INTEGRATORS + ["Euler", ""],
     "mode": ["operator", "none", "raycast", "constant", "off", "on"],
-    "model": ["shell", "resolving", "sampled", "revolved", "rigid"],
+    "model": registry_names("contact/model") + ["revolved", "rigid"],
     "solver": ["levenberg_marquardt", "golden_section", "newton"],
     "quantity": ["assembly_time", "success_rate", "eta", "lambda_c", "V", "f", "r", "g", "x"],
     "by": ["operator", "all", "part"],

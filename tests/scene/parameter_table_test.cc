@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "vahf/contact/contact_registry.h"
 #include "vahf/core/error.h"
 #include "vahf/scene/json_reader.h"
 
@@ -56,6 +57,27 @@ TEST(ParameterTable, WellFormed) {
     }
   }
   EXPECT_GE(names.size(), 30u);
+}
+
+// Every key a contact model declares is a contact/ row with its declaration's
+// unit, rule, bounds and meaning, whose default is the declaration's and which
+// reads into ContactParams::values.
+TEST(ParameterTable, ContactModelKeysAreRowsOfTheirDeclarations) {
+  ASSERT_FALSE(contact::ContactModelParams().empty());
+  for (const core::ParamDecl* d : contact::ContactModelParams()) {
+    const ParamSpec* s = FindParam(std::string("contact/") + d->key);
+    ASSERT_NE(s, nullptr) << d->key;
+    EXPECT_STREQ(s->unit, d->unit) << d->key;
+    EXPECT_EQ(s->rule, d->rule) << d->key;
+    EXPECT_EQ(s->lo, d->lo) << d->key;
+    EXPECT_EQ(s->hi, d->hi) << d->key;
+    EXPECT_STREQ(s->meaning, d->meaning) << d->key;
+    Parameters p;
+    EXPECT_EQ(s->real(p), d->default_value) << d->key;
+    ReadParamValue(*s, JsonNode(nlohmann::json(d->hi), "f.json", ""), &p);
+    EXPECT_EQ(p.contact.values.Get(*d), d->hi) << d->key;
+    EXPECT_EQ(Parameters().contact.values.Get(*d), d->default_value) << d->key;
+  }
 }
 
 TEST(ParameterTable, AccessorsReachDistinctFields) {

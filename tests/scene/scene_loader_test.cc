@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "support/test_files.h"
+#include "vahf/contact/contact_registry.h"
 #include "vahf/core/error.h"
 #include "vahf/human/factor_curves.h"
 #include "vahf/kinds/kind.h"
@@ -663,6 +664,30 @@ TEST_P(MalformedSceneTest, ThrowsInputErrorAtItsPointer) {
   json doc = ValidScene();
   c.mutate(doc);
   ExpectError(doc, c.where, c.rule, c.value);
+}
+
+// The rims' size bound holds for exactly the models whose entry says they
+// build rims: a rim spacing too fine for the bore refuses those and no other.
+TEST(ParseSceneTest, RimsAreBoundedForTheModelsThatBuildThem) {
+  int with_rims = 0, without = 0;
+  for (const contact::ContactModelEntry& e : contact::ContactModels()) {
+    json doc = ValidScene();
+    doc["parameters"]["contact"]["model"] = e.name;
+    doc["parameters"]["contact"]["rim_spacing"] = 1e-5;
+    doc["parts"][1]["geometry"] = {{"type", "box"}, {"size", {10.0, 10.0, 10.0}}};
+    doc["parts"][1]["mass"] = 1e4;
+    doc["parts"][1].erase("density");
+    doc["parameters"]["contact"]["shell_spacing"] = 1.0;
+    if (e.uses_rims) {
+      ++with_rims;
+      ExpectError(doc, "/parameters/contact", "its rims at contact/rim_spacing");
+    } else {
+      ++without;
+      EXPECT_NO_THROW(ParseScene(doc, kFile)) << e.name;
+    }
+  }
+  EXPECT_GE(with_rims, 1);
+  EXPECT_GE(without, 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scene, MalformedSceneTest, ::testing::ValuesIn(kBadCases),

@@ -1,12 +1,20 @@
-// Parameters of the penalty contact between the moving part and the static
-// parts (docs/design.md decision 7). The force law itself lands with the physics.
+// The contact's parameters (docs/design.md decision 7). `ContactParams` holds
+// what a scene sets for every model: the shared law, the shell, the
+// penetration bound, the model's name, the oil, and `values` for the keys a
+// model declares itself (ContactModelEntry::params, contact_registry.h).
+// `PenaltyLaw` is the law the penalty family evaluates (point_load.h,
+// penalty_contact.h, revolved_contact.h), filled by its builders.
 #pragma once
 
 #include <string>
 
+#include "vahf/core/param_decl.h"
+
 namespace vahf::contact {
 
-struct ContactParams {
+// The law every model may read: normal stiffness and onset, dissipation,
+// friction's regularisation.
+struct ContactLaw {
   // Normal pressure per metre of penetration, Pa/m. Each shell point carries an
   // area, so the total stiffness of a face is stiffness * its area whatever the
   // shell density. 1e10 Pa/m keeps a 1 kg part resting on 1 cm^2 within
@@ -18,39 +26,19 @@ struct ContactParams {
   // Hunt-Crossley dissipation, s/m: pressure scales by (1 + dissipation * rate
   // of penetration). K. H. Hunt and F. R. E. Crossley, J. Appl. Mech. 42 (1975).
   double dissipation = 0.5;
-  // The depth difference over which a load's direction blends across a
-  // sharp edge's medial axis, m (SignedDistance::LoadNormal); 0: none. The
-  // profiles' corners are sharp, a machined edge is not (ISO 13715 states an
-  // edge's undefined shape in tenths of a millimetre); where a rim meets a
-  // solid near a corner, its deepest point lies on the medial axis, and a
-  // load along the nearest face's normal turns by the corner's angle within
-  // rounding of it (measured: 1 kN of a rod's wedged load turning by 45 deg
-  // within 4e-12 m, the integrator's steps falling to 10 ns). 1 um of depth
-  // difference turns it over about a micrometre of travel, far below the
-  // fits' 28-34 um clearances; used by the exact rim arcs (revolved_contact.h).
-  double edge_blend = 1e-6;
   // Slip speed below which Coulomb friction is regularised linearly, m/s.
   double friction_transition_speed = 1e-3;
-  // Spacing of the point shell on the moving part's surface, m.
-  double shell_spacing = 1e-3;
-  // Line load per metre of penetration per metre of a static part's convex
-  // edge (rim.h), N/m per m = Pa. The default is the face law's stiffness over
-  // a strip one shell spacing wide, 1e10 Pa/m * 1e-3 m: an edge pressed into
-  // the moving part is about as stiff as the 1 mm patches of shell along it
-  // would be if they saw it. Like the face law it is a numerical penalty, far
-  // softer than steel: the load per unit length per unit approach of an elastic
-  // line contact is of the order of the contact modulus, up to a logarithm of
-  // the contact width (K. L. Johnson, Contact Mechanics, Cambridge University
-  // Press 1985, two-dimensional contact of cylinders), and steel on steel has
-  // E* = E / (2 (1 - nu^2)) = 1.15e11 Pa for E = 210 GPa, nu = 0.3.
+};
+
+// The law the penalty family evaluates: the shared law (the scene's, or the
+// bound rule's stiffness) and what its builders add.
+struct PenaltyLaw : ContactLaw {
+  // The depth difference over which a load's direction blends across a
+  // sharp edge's medial axis, m (kEdgeBlend, revolved_contact.h); 0: none.
+  double edge_blend = 1e-6;
+  // Line load per metre of penetration per metre of edge, Pa (kLineStiffness,
+  // rim.h, or the bound rule's).
   double line_stiffness = 1e7;
-  // Spacing of the samples along the static parts' convex edges, m.
-  double rim_spacing = 0.5e-3;
-  // The penetration bound as a fraction of the scene's smallest radial
-  // clearance: a contact deeper than this at an accepted step is a warning
-  // (penetration_bound). 0.1: a penalty contact that resolves a fit must keep
-  // its overlap an order of magnitude below the gap it resolves.
-  double penetration_fraction = 0.1;
   // Depth of the normal law's hardening barrier, m (contact_model.h); 0: none.
   // Not a scene parameter: with model "resolving" or "sampled" a trial sets it
   // just inside the penetration bound b (penetration_fraction times the
@@ -58,6 +46,16 @@ struct ContactParams {
   // contact cannot pass the bound it is checked against; otherwise, and in a
   // scene without a radial fit, no barrier.
   double barrier_depth = 0.0;
+};
+
+struct ContactParams : ContactLaw {
+  // Spacing of the point shell on the moving part's surface, m.
+  double shell_spacing = 1e-3;
+  // The penetration bound as a fraction of the scene's smallest radial
+  // clearance: a contact deeper than this at an accepted step is a warning
+  // (penetration_bound). 0.1: a penalty contact that resolves a fit must keep
+  // its overlap an order of magnitude below the gap it resolves.
+  double penetration_fraction = 0.1;
   // The contact model a trial builds (docs/physics.md, Contact):
   //   "shell" (the default): the moving part's point shell against the static
   //     parts' exact signed distances, stiffness as written, no rims, no
@@ -82,11 +80,8 @@ struct ContactParams {
   //     (penalty_contact.h). The general path, and the reference the exact
   //     rim arcs are checked against.
   std::string model = "shell";
-  // l of the rule, m: 2 mm of edge, a short arc of a rim in line contact.
-  double rule_contact_length = 2e-3;
-  // q of the rule: the steady load sinks a quarter of the bound, leaving the
-  // barrier's hardening to impacts.
-  double rule_depth_fraction = 0.25;
+  // The values of the keys the models declare (contact_registry.h).
+  core::ParamValues values;
   // Oiled fits (squeeze_film.h, docs/physics.md "Oiled fits"). The oil's
   // dynamic viscosity, Pa s; 0 (the default): dry. When it is above 0 every
   // contact of the part is lubricated: each thin annular gap between a

@@ -1,7 +1,8 @@
 // The contact models a scene can name (parameter contact/model), each built
 // once per moving part and its fixed parts (docs/design.md decision 7). A new
 // contact model is one entry of the table in contact_registry.cc: a name, a
-// one-line description for the parameter table, and a builder.
+// one-line description for the parameter table, a builder, the parameters it
+// declares beyond ContactParams' shared ones, and whether it builds rims.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -12,6 +13,7 @@
 
 #include "vahf/contact/contact_model.h"
 #include "vahf/contact/contact_params.h"
+#include "vahf/core/param_decl.h"
 #include "vahf/geometry/shape.h"
 
 namespace vahf::contact {
@@ -27,14 +29,15 @@ struct ContactBody {
 };
 
 // What a builder gets: the moving part, the fixed parts it can touch (at
-// least one), the scene's contact parameters and the two figures a stiffness
-// rule may use.
+// least one), the scene's contact parameters (its declared keys' values in
+// params.values) and the figures a stiffness rule may use.
 struct ContactSetup {
   ContactBody moving;
   std::vector<ContactBody> fixed;
   ContactParams params;
   double penetration_bound = 0;  // m; 0: the scene has no radial fit to bound
   double steady_load = 0;        // N: the largest steady load on the part
+  double clearance = 0;          // m: the smallest radial clearance; 0: no fit
 };
 
 // A built model and the stiffnesses it chose (what a trial records).
@@ -50,11 +53,23 @@ struct ContactModelEntry {
   const char* name;
   const char* description;  // one line, for vahf params
   BuiltContact (*build)(const ContactSetup& setup);
+  // The keys it reads from ContactParams::values, each declared once beside
+  // the code that reads it; the parameter table lists every entry's keys
+  // under contact/, and a scene may set them whatever its model.
+  std::vector<const core::ParamDecl*> params = {};
+  // Whether it samples the parts' convex edges (rim.h): the scene loader
+  // bounds the rims' size (rim_spacing) only for such a model.
+  bool uses_rims = false;
 };
 
 // Every contact model, in the order vahf params lists them.
 const std::vector<ContactModelEntry>& ContactModels();
 std::vector<std::string> ContactModelNames();
+// The model `name` (one of ContactModelNames: the parameter table checked it).
+const ContactModelEntry& FindContactModel(const std::string& name);
+// Every entry's declared parameter once, in the order of the entries and of
+// their lists. A key is declared by one object, however many entries read it.
+const std::vector<const core::ParamDecl*>& ContactModelParams();
 
 // The model `name` (one of ContactModelNames: the parameter table checked it).
 BuiltContact BuildContact(const std::string& name, const ContactSetup& setup);

@@ -61,8 +61,7 @@ std::optional<Hit> MovingPointInside(const Obstacle& o,
 
 PenaltyContact::PenaltyContact(std::vector<ShellPoint> shell, SignedDistance moving_field,
                                double moving_bounding_radius, double moving_friction,
-                               std::vector<Obstacle> obstacles,
-                               const ContactParams& params,
+                               std::vector<Obstacle> obstacles, const PenaltyLaw& params,
                                std::vector<RimPoint> moving_rim)
     : shell_(std::move(shell)),
       moving_field_(std::move(moving_field)),

@@ -45,7 +45,7 @@ class PenaltyContact final : public ContactModel {
   // spacing inside them.
   PenaltyContact(std::vector<ShellPoint> shell, SignedDistance moving_field,
                  double moving_bounding_radius, double moving_friction,
-                 std::vector<Obstacle> obstacles, const ContactParams& params,
+                 std::vector<Obstacle> obstacles, const PenaltyLaw& params,
                  std::vector<RimPoint> moving_rim = {});
 
   const std::vector<ShellPoint>& shell() const { return shell_; }
@@ -120,7 +120,7 @@ class PenaltyContact final : public ContactModel {
   std::vector<RimSet> rim_sets_;  // one per obstacle
   std::vector<RimPoint> moving_rim_;
   RimSet moving_rim_set_;
-  ContactParams params_;
+  PenaltyLaw params_;
 };
 
 }  // namespace vahf::contact

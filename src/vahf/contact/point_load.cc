@@ -33,23 +33,20 @@ double NormalLaw(double k, double x0, double c, double b, double depth, double d
   return elastic * std::max(0.0, factor);
 }
 
-double Pressure(const ContactParams& p, double depth, double depth_rate,
-                LawSlopes* slopes) {
+double Pressure(const PenaltyLaw& p, double depth, double depth_rate, LawSlopes* slopes) {
   return NormalLaw(p.stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth,
                    depth_rate, slopes);
 }
 
-double LineLoad(const ContactParams& p, double depth, double depth_rate,
-                LawSlopes* slopes) {
+double LineLoad(const PenaltyLaw& p, double depth, double depth_rate, LawSlopes* slopes) {
   return NormalLaw(p.line_stiffness, p.onset_depth, p.dissipation, p.barrier_depth, depth,
                    depth_rate, slopes);
 }
 
 double PairFriction(double a, double b) { return a + b > 0 ? 2 * a * b / (a + b) : 0.0; }
 
-bool AddPointLoad(const ContactParams& params, const PointLoad& p,
-                  const Eigen::Vector3d& w, ContactForces* out,
-                  ContactJacobian* jacobian) {
+bool AddPointLoad(const PenaltyLaw& params, const PointLoad& p, const Eigen::Vector3d& w,
+                  ContactForces* out, ContactJacobian* jacobian) {
   LawSlopes slopes;
   LawSlopes* const asked = jacobian ? &slopes : nullptr;
   const double depth_rate = -p.v.dot(p.u);

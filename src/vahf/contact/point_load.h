@@ -53,9 +53,9 @@ inline constexpr double kBarrierMargin = 0.02;
 double NormalLaw(double k, double x0, double c, double b, double depth, double depth_rate,
                  LawSlopes* slopes = nullptr);
 // The face law (stiffness), Pa, and the edge law (line_stiffness), N/m.
-double Pressure(const ContactParams& params, double depth, double depth_rate,
+double Pressure(const PenaltyLaw& params, double depth, double depth_rate,
                 LawSlopes* slopes = nullptr);
-double LineLoad(const ContactParams& params, double depth, double depth_rate,
+double LineLoad(const PenaltyLaw& params, double depth, double depth_rate,
                 LawSlopes* slopes = nullptr);
 
 // The Coulomb coefficient of a pair: 2 a b / (a + b).
@@ -79,8 +79,7 @@ struct PointLoad {
 // origin to `out` and, with `jacobian`, their derivative (contact_jacobian.h;
 // w the part's angular velocity). False, nothing added, when the normal force
 // is not positive.
-bool AddPointLoad(const ContactParams& params, const PointLoad& p,
-                  const Eigen::Vector3d& w, ContactForces* out,
-                  ContactJacobian* jacobian);
+bool AddPointLoad(const PenaltyLaw& params, const PointLoad& p, const Eigen::Vector3d& w,
+                  ContactForces* out, ContactJacobian* jacobian);
 
 }  // namespace vahf::contact

@@ -26,7 +26,7 @@ RevolvedContact::Solid RevolvedContact::Make(const geometry::RevolvedProfile& pr
 }
 
 RevolvedContact::RevolvedContact(Solid moving, std::vector<Solid> fixed,
-                                 const ContactParams& params)
+                                 const PenaltyLaw& params)
     : moving_(std::move(moving)), fixed_(std::move(fixed)), params_(params) {}
 
 ContactForces RevolvedContact::DoEvaluate(const RigidMotion& m, ContactCounters& counters,

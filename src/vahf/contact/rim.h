@@ -11,6 +11,7 @@
 #include <cmath>
 #include <vector>
 
+#include "vahf/core/param_decl.h"
 #include "vahf/geometry/shape.h"
 
 namespace vahf::contact {
@@ -35,6 +36,35 @@ struct RimCircle {
 };
 // The convex edges of a profile, in its vertex order.
 std::vector<RimCircle> RimCircles(const geometry::RevolvedProfile& profile);
+
+// Spacing of the samples along the static parts' convex edges, m.
+inline constexpr core::ParamDecl kRimSpacing{
+    "rim_spacing",
+    "m",
+    core::ParamRule::kClosed,
+    1e-5,
+    1,
+    0.5e-3,
+    "sample spacing along the parts' convex edges (rims; at most 1e6 samples)"};
+
+// Line load per metre of penetration per metre of a static part's convex
+// edge, N/m per m = Pa. The default is the face law's stiffness over
+// a strip one shell spacing wide, 1e10 Pa/m * 1e-3 m: an edge pressed into
+// the moving part is about as stiff as the 1 mm patches of shell along it
+// would be if they saw it. Like the face law it is a numerical penalty, far
+// softer than steel: the load per unit length per unit approach of an elastic
+// line contact is of the order of the contact modulus, up to a logarithm of
+// the contact width (K. L. Johnson, Contact Mechanics, Cambridge University
+// Press 1985, two-dimensional contact of cylinders), and steel on steel has
+// E* = E / (2 (1 - nu^2)) = 1.15e11 Pa for E = 210 GPa, nu = 0.3.
+inline constexpr core::ParamDecl kLineStiffness{
+    "line_stiffness",
+    "Pa",
+    core::ParamRule::kClosed,
+    1,
+    1e13,
+    1e7,
+    "line load per metre of penetration per metre of a static part's convex edge"};
 
 // For a solid of revolution: each profile vertex off the axis (r > 0) whose
 // interior angle is below 179 deg gives a circle of n = ceil(2 pi r / spacing)

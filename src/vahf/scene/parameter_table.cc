@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <cstdint>
+#include <string_view>
 #include <utility>
 
 #include "vahf/contact/contact_registry.h"
+#include "vahf/core/error.h"
 #include "vahf/scene/stepper_catalogue.h"
 
 namespace vahf::scene {
@@ -217,6 +219,35 @@ std::vector<ParamSpec> VisionError() {
   return rows;
 }
 
+// The row of a key a contact model declares (contact_registry.h), read into
+// ContactParams::values.
+ParamSpec ModelRow(const core::ParamDecl* d) {
+  return {"contact",  d->key,
+          d->unit,    d->rule,
+          d->lo,      d->hi,
+          d->meaning, [d](Parameters& p) -> double& { return p.contact.values.Upd(*d); }};
+}
+
+// The declared keys that keep the places they had among the shared rows
+// before the models declared them; a model's other keys follow the contact
+// model's rows.
+constexpr const char* kPlacedModelKeys[] = {"edge_blend", "line_stiffness", "rim_spacing",
+                                            "rule_contact_length", "rule_depth_fraction"};
+
+bool Placed(const char* key) {
+  for (const char* placed : kPlacedModelKeys)
+    if (std::string_view(placed) == key) return true;
+  return false;
+}
+
+ParamSpec ModelRow(const char* key) {
+  VAHF_CHECK(Placed(key), std::string("contact parameter ") + key + " is not placed");
+  for (const core::ParamDecl* d : contact::ContactModelParams())
+    if (std::string_view(d->key) == key) return ModelRow(d);
+  VAHF_CHECK(false, std::string("no contact model declares ") + key);
+  return {};
+}
+
 // The contact's normal law, dissipation and friction (docs/design.md decision 7).
 std::vector<ParamSpec> ContactLaw() {
   using R = ParamRule;
@@ -226,10 +257,7 @@ std::vector<ParamSpec> ContactLaw() {
       {"contact", "onset_depth", "m", R::kClosed, 1e-9, 1e-2,
        "depth of the C1 quadratic onset of the normal law",
        VAHF_REAL(contact.onset_depth)},
-      {"contact", "edge_blend", "m", R::kClosed, 0, 1e-3,
-       "depth difference over which a load's direction blends across a sharp edge's "
-       "medial axis (resolving, revolved pairs)",
-       VAHF_REAL(contact.edge_blend)},
+      ModelRow("edge_blend"),
       {"contact", "dissipation", "s/m", R::kClosed, 0, 1e3, "Hunt-Crossley dissipation",
        VAHF_REAL(contact.dissipation)},
       {"contact", "friction_transition_speed", "m/s", R::kClosed, 1e-6, 1,
@@ -240,7 +268,8 @@ std::vector<ParamSpec> ContactLaw() {
 }
 
 // The contact model, its shell and rims, the penetration bound and the
-// steady-load rule of the resolving models.
+// steady-load rule of the resolving models; then any other key a model
+// declares.
 std::vector<ParamSpec> ContactModelAndShells() {
   using R = ParamRule;
   std::vector<ParamSpec> rows = {
@@ -248,25 +277,19 @@ std::vector<ParamSpec> ContactModelAndShells() {
        "point spacing of the moving part's contact shell (at most 1e6 points: see scene "
        "rules)",
        VAHF_REAL(contact.shell_spacing)},
-      {"contact", "line_stiffness", "Pa", R::kClosed, 1, 1e13,
-       "line load per metre of penetration per metre of a static part's convex edge",
-       VAHF_REAL(contact.line_stiffness)},
-      {"contact", "rim_spacing", "m", R::kClosed, 1e-5, 1,
-       "sample spacing along the parts' convex edges (rims; at most 1e6 samples)",
-       VAHF_REAL(contact.rim_spacing)},
+      ModelRow("line_stiffness"),
+      ModelRow("rim_spacing"),
       {"contact", "penetration_fraction", "1", R::kOpenBelow, 0, 10,
        "penetration bound as a fraction of the smallest radial clearance (a warning past "
        "it)",
        VAHF_REAL(contact.penetration_fraction)},
       {"contact", "model", "-", R::kChoice, 0, 0, ContactModelHelp().c_str(), nullptr,
        nullptr, VAHF_TEXT(contact.model), contact::ContactModelNames()},
-      {"contact", "rule_contact_length", "m", R::kClosed, 1e-4, 10,
-       "edge length that carries the largest steady load (resolving, sampled)",
-       VAHF_REAL(contact.rule_contact_length)},
-      {"contact", "rule_depth_fraction", "1", R::kOpenBelow, 0, 1,
-       "share of the bound the largest steady load may sink (resolving, sampled)",
-       VAHF_REAL(contact.rule_depth_fraction)},
+      ModelRow("rule_contact_length"),
+      ModelRow("rule_depth_fraction"),
   };
+  for (const core::ParamDecl* d : contact::ContactModelParams())
+    if (!Placed(d->key)) rows.push_back(ModelRow(d));
   return rows;
 }
 

@@ -4,23 +4,18 @@
 // output, checked by a test.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "vahf/core/param_decl.h"
 #include "vahf/scene/json_reader.h"
 #include "vahf/scene/parameters.h"
 
 namespace vahf::scene {
 
-// Every number has finite bounds [lo, hi]: a value the code cannot honour
-// (one that overflows its arithmetic or stalls its integration) is refused
-// when the file is read, not met in the middle of a run.
-enum class ParamRule {
-  kClosed,     // lo <= x <= hi
-  kOpenBelow,  // lo < x <= hi (lo is usually 0: "positive")
-  kCount,      // an integer, lo <= n <= hi
-  kChoice,     // one of `choices` (lo, hi unused)
-};
+// Every number has finite bounds (core/param_decl.h).
+using ParamRule = core::ParamRule;
 
 struct ParamSpec {
   const char* group;
@@ -29,8 +24,9 @@ struct ParamSpec {
   ParamRule rule;
   double lo, hi;
   const char* meaning;
-  // Exactly one accessor is set, by the kind of value.
-  double& (*real)(Parameters&) = nullptr;
+  // Exactly one accessor is set, by the kind of value. A real one may carry
+  // its declaration (a contact model's key in ContactParams::values).
+  std::function<double&(Parameters&)> real = nullptr;
   int& (*count)(Parameters&) = nullptr;
   std::string& (*text)(Parameters&) = nullptr;
   std::vector<std::string> choices = {};

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <map>
 
+#include "vahf/contact/contact_registry.h"
 #include "vahf/contact/point_shell.h"
 #include "vahf/contact/rim.h"
 #include "vahf/core/error.h"
@@ -297,6 +298,7 @@ std::string DescribeScene(const Scene& s) {
 
 std::string SizeViolation(const Scene& scene) {
   const contact::ContactParams& c = scene.params.contact;
+  const double rim_spacing = c.values.Get(contact::kRimSpacing);
   // "part 'rod': its contact shell at contact/shell_spacing 1e-5 m would ..."
   const auto over = [](const Part& part, const char* what, const char* key,
                        double spacing, double n, double max) {
@@ -312,9 +314,9 @@ std::string SizeViolation(const Scene& scene) {
       v = over(part, "contact shell", "shell_spacing", c.shell_spacing,
                contact::PointShellSizeBound(part.shape, c.shell_spacing),
                contact::kMaxShellPoints);
-    if (v.empty() && c.model != "shell")
-      v = over(part, "rims", "rim_spacing", c.rim_spacing,
-               contact::RimSizeBound(part.shape, c.rim_spacing), contact::kMaxRimPoints);
+    if (v.empty() && contact::FindContactModel(c.model).uses_rims)
+      v = over(part, "rims", "rim_spacing", rim_spacing,
+               contact::RimSizeBound(part.shape, rim_spacing), contact::kMaxRimPoints);
     if (!v.empty()) return v;
   }
   return "";
@@ -323,11 +325,11 @@ std::string SizeViolation(const Scene& scene) {
 void RequireCountableSizes(const Scene& scene) {
   const std::string size = SizeViolation(scene);
   if (!size.empty())
-    throw InputError(
-        scene.file, "/parameters/contact",
-        fmt::format("shell_spacing {} m, rim_spacing {} m",
-                    scene.params.contact.shell_spacing, scene.params.contact.rim_spacing),
-        size);
+    throw InputError(scene.file, "/parameters/contact",
+                     fmt::format("shell_spacing {} m, rim_spacing {} m",
+                                 scene.params.contact.shell_spacing,
+                                 scene.params.contact.values.Get(contact::kRimSpacing)),
+                     size);
 }
 
 std::string ParameterViolation(const Scene& scene) {

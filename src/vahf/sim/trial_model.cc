@@ -140,6 +140,7 @@ void SetContact(const scene::Scene& scene, const scene::Part& part,
                            f.part->mass_properties.bounding_radius});
   setup.params = params.contact;
   setup.penetration_bound = m->penetration_bound;
+  setup.clearance = m->clearance;
   // The largest steady load: the operator's Eq. 7 pull at the start plus
   // the part's weight.
   const double pull =
