@@ -69,7 +69,7 @@ int RunStability(const scene::ExperimentFile& file, const RunContext& context) {
   if (failed.empty()) return status;
   std::fprintf(stderr, "vahf: error: stability: %zu case(s) failed (results kept): %s\n",
                failed.size(), fmt::format("{}", fmt::join(failed, ", ")).c_str());
-  return 1;
+  return kExitComputationFailure;  // a failed case: the suite's computation failed
 }
 
 }  // namespace vahf::kinds
