@@ -23,9 +23,7 @@ long_functions() {
     sort -rn
 }
 
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-failures=0
+source "$(dirname "$0")/check_of_a_check.sh"
 
 tree="$(long_functions "$root")"
 if [ -n "$tree" ]; then
@@ -57,5 +55,4 @@ if [ "$copy" != "$((limit + 1)) src/past_limit.cc:1 past_limit" ]; then
   echo "$copy" >&2
   failures=$((failures + 1))
 fi
-[ "$failures" -eq 0 ] && echo "PASS: no function under src/ is over $limit lines"
-exit $((failures > 0))
+verdict "no function under src/ is over $limit lines"

@@ -10,9 +10,7 @@
 # Usage: public_headers_test.sh REPO_ROOT
 set -uo pipefail
 root="$1"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-failures=0
+source "$(dirname "$0")/check_of_a_check.sh"
 fail() {
   echo "FAIL: $*" >&2
   failures=$((failures + 1))
@@ -76,6 +74,4 @@ for added in '#include "vahf/sim/internal/trial_context.h"' '#include <Simbody.h
     fail "the check accepts a public header with $added"
   fi
 done
-[ "$failures" -eq 0 ] &&
-  echo "PASS: no public header includes an internal or a private dependency's header"
-exit $((failures > 0))
+verdict "no public header includes an internal or a private dependency's header"
