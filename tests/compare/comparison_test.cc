@@ -194,7 +194,7 @@ TEST(CompareReported, ARateAgainstAReportedRateWithItsCount) {
   row.n = 10;
   row.line = 2;
   lab.summaries = {row};
-  scene::ComparisonDesign design;
+  ComparisonDesign design;
   design.quantities = {{"success_rate", "peg", false, "/quantities/0", 0.3, 1, "real"}};
   const std::vector<LabQuantity> side = LabSide(lab, design, "e.json");
   ASSERT_EQ(side.size(), 1u);
@@ -241,7 +241,8 @@ TEST(LabSide, ReadsWhatThePaperReports) {
   const data::LabDataset lab = data::LoadLabDataset(Path("data/paper/dataset.json"));
   const scene::ExperimentFile file =
       kinds::LoadExperiment(Path("experiments/compare_paper.json"));
-  const std::vector<LabQuantity> side = LabSide(lab, file.comparison, file.file);
+  const std::vector<LabQuantity> side =
+      LabSide(lab, file.Input<ComparisonDesign>(), file.file);
   ASSERT_EQ(side.size(), 6u);
   for (const LabQuantity& q : side) EXPECT_TRUE(q.reported) << q.target.label;
   // Table 1's 9.2 s: one run without a spread.
@@ -269,7 +270,7 @@ TEST(LabSide, ReadsWhatThePaperReports) {
 
 TEST(LabSide, SeveralConditionsAndNoneNamedIsAnInputError) {
   const data::LabDataset lab = data::LoadLabDataset(Path("data/paper/dataset.json"));
-  scene::ComparisonDesign design;
+  ComparisonDesign design;
   design.quantities = {Spec("success_rate", 4, "", "/quantities/3")};
   try {
     LabSide(lab, design, "e.json");
@@ -285,7 +286,7 @@ TEST(LabSide, SeveralConditionsAndNoneNamedIsAnInputError) {
 
 TEST(LabSide, NeitherTrialsNorAReportIsAnInputError) {
   const data::LabDataset lab = data::LoadLabDataset(Path("data/paper/dataset.json"));
-  scene::ComparisonDesign design;
+  ComparisonDesign design;
   design.quantities = {Spec("success_rate", 2, "real")};  // Fig. 16 only: not in the file
   try {
     LabSide(lab, design, "e.json");
@@ -326,7 +327,7 @@ TEST(Compare, RunsEachDesignOnlyWhenAQuantityNeedsIt) {
   segment.successes = 19;
   lab.segments = {segment};
   lab.segments_file = "segments.csv";
-  scene::ComparisonDesign design;
+  ComparisonDesign design;
   design.fatigue = {60, 4, 2};
   const scene::FitTarget time = {
       "assembly_time", "block", false, "/quantities/0", 0.03, 0, ""};

@@ -22,11 +22,36 @@
 #include <vector>
 
 #include "support/test_files.h"
+#include "vahf/calibrate/calibration_input.h"
+#include "vahf/compare/comparison_input.h"
 #include "vahf/core/error.h"
+#include "vahf/experiment/assembly_time_input.h"
+#include "vahf/experiment/fatigue_input.h"
+#include "vahf/experiment/groups_input.h"
+#include "vahf/experiment/precision_input.h"
+#include "vahf/experiment/stability_input.h"
+#include "vahf/experiment/table1_input.h"
 #include "vahf/kinds/kind.h"
+#include "vahf/kinds/paper_input.h"
 #include "vahf/scene/scene_loader.h"
 
 namespace vahf::scene {
+
+using calibrate::CalibrationDesign;
+using calibrate::CalibrationStage;
+using compare::ComparisonDesign;
+using experiment::AssemblyTimeInput;
+using experiment::ConditionEntry;
+using experiment::DescribePrecision;
+using experiment::FatigueInput;
+using experiment::GroupsInput;
+using experiment::PrecisionDesign;
+using experiment::PrecisionScene;
+using experiment::PrecisionSetting;
+using experiment::SettingLabel;
+using experiment::StabilityDesign;
+using experiment::Table1Input;
+using kinds::PaperInput;
 
 using kinds::LoadExperiment;
 using kinds::ParseExperiment;
@@ -213,9 +238,9 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
     if (e.kind == "paper") {
       EXPECT_TRUE(e.scene_path.empty()) << name;
     } else if (e.kind == "precision") {  // its first scene
-      EXPECT_EQ(e.scene_path, e.precision.scenes.at(0).path) << name;
+      EXPECT_EQ(e.scene_path, e.Input<PrecisionDesign>().scenes.at(0).path) << name;
     } else if (e.kind == "stability") {  // its first case's
-      EXPECT_EQ(e.scene_path, e.stability.cases.at(0).scene_path) << name;
+      EXPECT_EQ(e.scene_path, e.Input<StabilityDesign>().cases.at(0).scene_path) << name;
       EXPECT_EQ(e.scene.name, "peg_in_hole_shell") << name;
     } else {
       EXPECT_TRUE(std::filesystem::equivalent(e.scene_path, CylinderScene())) << name;
@@ -227,20 +252,19 @@ TEST(ShippedExperimentsTest, EveryFileLoadsWithItsKind) {
 
 TEST(ShippedExperimentsTest, Table1ReadsThePaperTable) {
   const ExperimentFile e = LoadExperiment(SourcePath("experiments/table1.json"));
-  EXPECT_TRUE(std::filesystem::equivalent(e.paper_table_path,
+  EXPECT_TRUE(std::filesystem::equivalent(e.Input<Table1Input>().paper_table_path,
                                           SourcePath("reference/paper/table1.json")))
-      << e.paper_table_path;
-  EXPECT_TRUE(e.operators.empty());
-  EXPECT_TRUE(e.conditions.empty());
-  EXPECT_TRUE(e.instants_s.empty());
-  EXPECT_TRUE(e.experiments.empty());
+      << e.Input<Table1Input>().paper_table_path;
+  // The manifest lists the table among the run's inputs.
+  EXPECT_THAT(e.input->InputFiles(),
+              ElementsAre(e.Input<Table1Input>().paper_table_path));
 }
 
 TEST(ShippedExperimentsTest, AssemblyTimeHasSixOperators) {
   const ExperimentFile e = LoadExperiment(SourcePath("experiments/assembly_time.json"));
-  ASSERT_EQ(e.operators.size(), 6u);
+  ASSERT_EQ(e.Input<AssemblyTimeInput>().operators.size(), 6u);
   std::vector<std::string> names, sexes;
-  for (const OperatorEntry& o : e.operators) {
+  for (const OperatorEntry& o : e.Input<AssemblyTimeInput>().operators) {
     names.push_back(o.name);
     sexes.push_back(o.sex);
     EXPECT_THAT(o.source, HasSubstr("GB/T 10000-1988")) << o.name;
@@ -248,55 +272,61 @@ TEST(ShippedExperimentsTest, AssemblyTimeHasSixOperators) {
   EXPECT_THAT(names, ElementsAre("male P5", "male P50", "male P95", "female P5",
                                  "female P50", "female P95"));
   EXPECT_THAT(sexes, ElementsAre("male", "male", "male", "female", "female", "female"));
-  EXPECT_TRUE(e.paper_table_path.empty());
-  EXPECT_TRUE(e.conditions.empty());
+  EXPECT_TRUE(e.input->InputFiles().empty());  // the scene only
 }
 
 TEST(ShippedExperimentsTest, HumanFactorsGroupsHasThreeConditions) {
   const ExperimentFile e =
       LoadExperiment(SourcePath("experiments/human_factors_groups.json"));
-  ASSERT_EQ(e.conditions.size(), 3u);
-  EXPECT_EQ(e.conditions[0].name, "general");
-  EXPECT_EQ(e.conditions[1].name, "best");
-  EXPECT_EQ(e.conditions[2].name, "worst");
-  EXPECT_TRUE(std::filesystem::equivalent(e.conditions[0].scene_path, CylinderScene()));
+  ASSERT_EQ(e.Input<GroupsInput>().conditions.size(), 3u);
+  EXPECT_EQ(e.Input<GroupsInput>().conditions[0].name, "general");
+  EXPECT_EQ(e.Input<GroupsInput>().conditions[1].name, "best");
+  EXPECT_EQ(e.Input<GroupsInput>().conditions[2].name, "worst");
+  EXPECT_TRUE(std::filesystem::equivalent(e.Input<GroupsInput>().conditions[0].scene_path,
+                                          CylinderScene()));
   EXPECT_TRUE(std::filesystem::equivalent(
-      e.conditions[1].scene_path,
+      e.Input<GroupsInput>().conditions[1].scene_path,
       SourcePath("experiments/scenes/hydraulic_cylinder_best.json")));
   EXPECT_TRUE(std::filesystem::equivalent(
-      e.conditions[2].scene_path,
+      e.Input<GroupsInput>().conditions[2].scene_path,
       SourcePath("experiments/scenes/hydraulic_cylinder_worst.json")));
-  for (const ConditionEntry& c : e.conditions) {
+  for (const ConditionEntry& c : e.Input<GroupsInput>().conditions) {
     EXPECT_EQ(c.scene.file, c.scene_path);
     EXPECT_EQ(c.scene.sequence.size(), 3u) << c.name;
   }
-  EXPECT_THAT(e.instants_s, ElementsAre(3, 6, 9, 12, 15));
-  EXPECT_DOUBLE_EQ(e.paper_cycle_s, 16.0);
-  EXPECT_TRUE(e.operators.empty());
+  EXPECT_THAT(e.Input<GroupsInput>().instants_s, ElementsAre(3, 6, 9, 12, 15));
+  EXPECT_DOUBLE_EQ(e.Input<GroupsInput>().paper_cycle_s, 16.0);
 }
 
 TEST(ShippedExperimentsTest, FatigueIsOneHourInFourSegments) {
   const ExperimentFile e = LoadExperiment(SourcePath("experiments/fatigue.json"));
-  EXPECT_DOUBLE_EQ(e.fatigue.duration_min, 60.0);
-  EXPECT_EQ(e.fatigue.segments, 4);
-  EXPECT_GT(e.fatigue.pilot_cycles, 0);  // a pilot measures the work rate
+  EXPECT_DOUBLE_EQ(e.Input<FatigueInput>().fatigue.duration_min, 60.0);
+  EXPECT_EQ(e.Input<FatigueInput>().fatigue.segments, 4);
+  EXPECT_GT(e.Input<FatigueInput>().fatigue.pilot_cycles,
+            0);  // a pilot measures the work rate
 }
 
 TEST(ShippedExperimentsTest, PaperListsTheFourExperiments) {
   const ExperimentFile e = LoadExperiment(SourcePath("experiments/paper.json"));
   EXPECT_TRUE(e.scene_path.empty());
   std::vector<std::string> kinds;
-  for (const ExperimentFile& x : e.experiments) kinds.push_back(x.kind);
+  for (const ExperimentFile& x : e.Input<PaperInput>().experiments)
+    kinds.push_back(x.kind);
   EXPECT_THAT(kinds,
               ElementsAre("table1", "assembly_time", "human_factors_groups", "fatigue"));
-  ASSERT_EQ(e.experiments.size(), 4u);
+  ASSERT_EQ(e.Input<PaperInput>().experiments.size(), 4u);
   // Each is loaded whole, from its own file (relative to paper.json's folder).
-  EXPECT_TRUE(std::filesystem::equivalent(e.experiments[1].file,
+  EXPECT_TRUE(std::filesystem::equivalent(e.Input<PaperInput>().experiments[1].file,
                                           SourcePath("experiments/assembly_time.json")));
-  EXPECT_EQ(e.experiments[1].operators.size(), 6u);
-  EXPECT_EQ(e.experiments[2].conditions.size(), 3u);
-  EXPECT_EQ(e.experiments[3].fatigue.segments, 4);
-  EXPECT_FALSE(e.experiments[0].paper_table_path.empty());
+  EXPECT_EQ(
+      e.Input<PaperInput>().experiments[1].Input<AssemblyTimeInput>().operators.size(),
+      6u);
+  EXPECT_EQ(e.Input<PaperInput>().experiments[2].Input<GroupsInput>().conditions.size(),
+            3u);
+  EXPECT_EQ(e.Input<PaperInput>().experiments[3].Input<FatigueInput>().fatigue.segments,
+            4);
+  EXPECT_FALSE(
+      e.Input<PaperInput>().experiments[0].Input<Table1Input>().paper_table_path.empty());
 }
 
 // The operators of assembly_time.json are the 5th, 50th and 95th percentiles
@@ -326,8 +356,8 @@ TEST(ShippedExperimentsTest, AssemblyTimeOperatorsMatchGb10000) {
   ASSERT_EQ(rows.size(), 6u);
 
   const ExperimentFile e = LoadExperiment(SourcePath("experiments/assembly_time.json"));
-  ASSERT_EQ(e.operators.size(), rows.size());
-  for (const OperatorEntry& o : e.operators) {
+  ASSERT_EQ(e.Input<AssemblyTimeInput>().operators.size(), rows.size());
+  for (const OperatorEntry& o : e.Input<AssemblyTimeInput>().operators) {
     ASSERT_TRUE(rows.count(o.name)) << o.name << " is not in the CSV";
     const Row& r = rows.at(o.name);
     EXPECT_EQ(o.sex, r.sex) << o.name;
@@ -345,23 +375,25 @@ TEST(ShippedExperimentsTest, AssemblyTimeOperatorsMatchGb10000) {
 TEST(KindKeysTest, OperatorsLoad) {
   const ExperimentFile e =
       LoadExperiment(WriteJson(TestDir() / "e.json", AssemblyTime()));
-  ASSERT_EQ(e.operators.size(), 2u);
-  EXPECT_EQ(e.operators[0].name, "short");
-  EXPECT_EQ(e.operators[0].sex, "female");
-  EXPECT_DOUBLE_EQ(e.operators[0].height, 1.50);
-  EXPECT_DOUBLE_EQ(e.operators[0].arm_length, 0.62);
-  EXPECT_EQ(e.operators[0].source, "test");
-  EXPECT_EQ(e.operators[1].name, "tall");
-  EXPECT_EQ(e.operators[1].sex, "male");
+  ASSERT_EQ(e.Input<AssemblyTimeInput>().operators.size(), 2u);
+  EXPECT_EQ(e.Input<AssemblyTimeInput>().operators[0].name, "short");
+  EXPECT_EQ(e.Input<AssemblyTimeInput>().operators[0].sex, "female");
+  EXPECT_DOUBLE_EQ(e.Input<AssemblyTimeInput>().operators[0].height, 1.50);
+  EXPECT_DOUBLE_EQ(e.Input<AssemblyTimeInput>().operators[0].arm_length, 0.62);
+  EXPECT_EQ(e.Input<AssemblyTimeInput>().operators[0].source, "test");
+  EXPECT_EQ(e.Input<AssemblyTimeInput>().operators[1].name, "tall");
+  EXPECT_EQ(e.Input<AssemblyTimeInput>().operators[1].sex, "male");
 }
 
 TEST(KindKeysTest, OperatorsAreOptionalAndSourceToo) {
   json doc = Experiment("assembly_time");
-  EXPECT_TRUE(LoadExperiment(WriteJson(TestDir() / "e.json", doc)).operators.empty());
+  EXPECT_TRUE(LoadExperiment(WriteJson(TestDir() / "e.json", doc))
+                  .Input<AssemblyTimeInput>()
+                  .operators.empty());
   doc = AssemblyTime();
   doc["operators"][0].erase("source");
   const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
-  EXPECT_EQ(e.operators[0].source, "");
+  EXPECT_EQ(e.Input<AssemblyTimeInput>().operators[0].source, "");
 }
 
 TEST(KindKeysTest, OperatorsAtTheBoundsLoad) {
@@ -369,19 +401,20 @@ TEST(KindKeysTest, OperatorsAtTheBoundsLoad) {
   doc["operators"] = {Operator("low", "female", 1.0, 0.3),
                       Operator("high", "male", 2.5, 1.1)};
   const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
-  EXPECT_EQ(e.operators.size(), 2u);
+  EXPECT_EQ(e.Input<AssemblyTimeInput>().operators.size(), 2u);
 }
 
 TEST(KindKeysTest, ConditionsInstantsAndCycleLoad) {
   const ExperimentFile e =
       LoadExperiment(WriteJson(TestDir() / "e.json", HumanFactorsGroups()));
-  ASSERT_EQ(e.conditions.size(), 2u);
-  EXPECT_EQ(e.conditions[0].name, "general");
-  EXPECT_EQ(e.conditions[1].name, "again");
-  EXPECT_EQ(e.conditions[1].scene_path, CylinderScene());
-  EXPECT_EQ(e.conditions[1].scene.name, "hydraulic_cylinder");
-  EXPECT_THAT(e.instants_s, ElementsAre(2, 4.5, 8));  // the last one at the cycle's end
-  EXPECT_DOUBLE_EQ(e.paper_cycle_s, 8.0);
+  ASSERT_EQ(e.Input<GroupsInput>().conditions.size(), 2u);
+  EXPECT_EQ(e.Input<GroupsInput>().conditions[0].name, "general");
+  EXPECT_EQ(e.Input<GroupsInput>().conditions[1].name, "again");
+  EXPECT_EQ(e.Input<GroupsInput>().conditions[1].scene_path, CylinderScene());
+  EXPECT_EQ(e.Input<GroupsInput>().conditions[1].scene.name, "hydraulic_cylinder");
+  EXPECT_THAT(e.Input<GroupsInput>().instants_s,
+              ElementsAre(2, 4.5, 8));  // the last one at the cycle's end
+  EXPECT_DOUBLE_EQ(e.Input<GroupsInput>().paper_cycle_s, 8.0);
 }
 
 TEST(KindKeysTest, PaperCycleDefaultsTo16Seconds) {
@@ -389,7 +422,7 @@ TEST(KindKeysTest, PaperCycleDefaultsTo16Seconds) {
   doc.erase("paper_cycle_s");
   doc["instants_s"] = {16};
   const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
-  EXPECT_DOUBLE_EQ(e.paper_cycle_s, 16.0);
+  EXPECT_DOUBLE_EQ(e.Input<GroupsInput>().paper_cycle_s, 16.0);
 }
 
 TEST(KindKeysTest, ConditionScenesAreRelativeToTheExperimentFile) {
@@ -399,29 +432,30 @@ TEST(KindKeysTest, ConditionScenesAreRelativeToTheExperimentFile) {
   json doc = HumanFactorsGroups();
   doc["conditions"][1]["scene"] = "scenes/copy.json";
   const ExperimentFile e = LoadExperiment(WriteJson(dir / "e.json", doc));
-  EXPECT_TRUE(std::filesystem::equivalent(e.conditions[1].scene_path,
+  EXPECT_TRUE(std::filesystem::equivalent(e.Input<GroupsInput>().conditions[1].scene_path,
                                           dir / "scenes" / "copy.json"));
 }
 
 TEST(KindKeysTest, FatigueDesignAndItsDefaults) {
   ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Fatigue()));
-  EXPECT_DOUBLE_EQ(e.fatigue.duration_min, 30.0);
-  EXPECT_EQ(e.fatigue.segments, 3);
-  EXPECT_EQ(e.fatigue.pilot_cycles, 5);
+  EXPECT_DOUBLE_EQ(e.Input<FatigueInput>().fatigue.duration_min, 30.0);
+  EXPECT_EQ(e.Input<FatigueInput>().fatigue.segments, 3);
+  EXPECT_EQ(e.Input<FatigueInput>().fatigue.pilot_cycles, 5);
   json doc = Fatigue();
   doc["fatigue"] = json::object();
   e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
-  EXPECT_DOUBLE_EQ(e.fatigue.duration_min, 60.0);
-  EXPECT_EQ(e.fatigue.segments, 4);
-  EXPECT_EQ(e.fatigue.pilot_cycles, 0);
+  EXPECT_DOUBLE_EQ(e.Input<FatigueInput>().fatigue.duration_min, 60.0);
+  EXPECT_EQ(e.Input<FatigueInput>().fatigue.segments, 4);
+  EXPECT_EQ(e.Input<FatigueInput>().fatigue.pilot_cycles, 0);
   doc.erase("fatigue");
   e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
-  EXPECT_DOUBLE_EQ(e.fatigue.duration_min, 60.0);
+  EXPECT_DOUBLE_EQ(e.Input<FatigueInput>().fatigue.duration_min, 60.0);
 }
 
 TEST(KindKeysTest, PaperTableResolves) {
   const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Table1()));
-  EXPECT_EQ(e.paper_table_path, SourcePath("reference/paper/table1.json"));
+  EXPECT_EQ(e.Input<Table1Input>().paper_table_path,
+            SourcePath("reference/paper/table1.json"));
 }
 
 TEST(KindKeysTest, PaperLoadsItsListedExperiments) {
@@ -434,12 +468,13 @@ TEST(KindKeysTest, PaperLoadsItsListedExperiments) {
   EXPECT_EQ(e.kind, "paper");
   EXPECT_EQ(e.seed, 9u);
   EXPECT_TRUE(e.scene_path.empty());
-  ASSERT_EQ(e.experiments.size(), 2u);
-  EXPECT_EQ(e.experiments[0].kind, "table1");
-  EXPECT_EQ(e.experiments[1].kind, "fatigue");
-  EXPECT_TRUE(
-      std::filesystem::equivalent(e.experiments[1].file, dir / "more" / "f.json"));
-  EXPECT_EQ(e.experiments[1].fatigue.segments, 3);
+  ASSERT_EQ(e.Input<PaperInput>().experiments.size(), 2u);
+  EXPECT_EQ(e.Input<PaperInput>().experiments[0].kind, "table1");
+  EXPECT_EQ(e.Input<PaperInput>().experiments[1].kind, "fatigue");
+  EXPECT_TRUE(std::filesystem::equivalent(e.Input<PaperInput>().experiments[1].file,
+                                          dir / "more" / "f.json"));
+  EXPECT_EQ(e.Input<PaperInput>().experiments[1].Input<FatigueInput>().fatigue.segments,
+            3);
 }
 
 // ---------------------------------------------------------------------------
@@ -535,7 +570,7 @@ TEST(OperatorErrorsTest, ReachCurveIsTheScenes) {
   doc["scene"] = "wide_reach.json";
   doc["operators"][1] = Operator("stubby", "male", 1.0, 0.55);
   const ExperimentFile e = LoadExperiment(WriteJson(dir / "e.json", doc));
-  EXPECT_EQ(e.operators[1].name, "stubby");
+  EXPECT_EQ(e.Input<AssemblyTimeInput>().operators[1].name, "stubby");
   // With the shipped scene's reach (D2 = 0.39 m) the same operator fails.
   doc["scene"] = CylinderScene();
   ExpectError(doc, "/operators/1", "reach breakpoints must increase", "\"stubby\"");
@@ -776,7 +811,7 @@ TEST(PaperErrorsTest, ErrorInAListedExperimentNamesThatFile) {
 
 TEST(PrecisionTest, ScenesReferenceAndSettingsLoad) {
   const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Precision()));
-  const PrecisionDesign& d = e.precision;
+  const PrecisionDesign& d = e.Input<PrecisionDesign>();
   EXPECT_EQ(d.noise_trials, 10);
   EXPECT_EQ(d.reference.label, "reference: RungeKuttaMerson 1e-8");
   EXPECT_EQ(d.reference.pointer, "/reference");
@@ -807,7 +842,7 @@ TEST(PrecisionTest, ScenesReferenceAndSettingsLoad) {
 // hand_mass 1.5 kg, time_limit 10 s and CVODE at 1e-6).
 TEST(PrecisionTest, ASettingKeepsTheScenesOtherParameters) {
   const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Precision()));
-  const PrecisionScene& cylinder = e.precision.scenes[1];
+  const PrecisionScene& cylinder = e.Input<PrecisionDesign>().scenes[1];
   const Parameters& scene = cylinder.scene.params;
   EXPECT_DOUBLE_EQ(scene.contact.shell_spacing, 0.002);
   EXPECT_EQ(scene.simulation.integrator, "CVODE");
@@ -833,19 +868,22 @@ TEST(PrecisionTest, ASettingKeepsTheScenesOtherParameters) {
   EXPECT_DOUBLE_EQ(cylinder.reference.params.simulation.accuracy, 1e-8);
   EXPECT_DOUBLE_EQ(cylinder.reference.params.contact.shell_spacing, 0.002);
   // The peg sets no shell spacing: the default.
-  EXPECT_DOUBLE_EQ(e.precision.scenes[0].settings[1].params.contact.shell_spacing,
-                   Parameters().contact.shell_spacing);
+  EXPECT_DOUBLE_EQ(
+      e.Input<PrecisionDesign>().scenes[0].settings[1].params.contact.shell_spacing,
+      Parameters().contact.shell_spacing);
 }
 
 TEST(PrecisionTest, NoiseTrialsDefault) {
   json doc = Precision();
   doc.erase("noise_trials");
   const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
-  EXPECT_EQ(e.precision.noise_trials, PrecisionDesign::kDefaultNoiseTrials);
+  EXPECT_EQ(e.Input<PrecisionDesign>().noise_trials,
+            PrecisionDesign::kDefaultNoiseTrials);
   // The most cycles per condition of any paper experiment.
   int most = 0;
-  for (const ExperimentFile& x :
-       LoadExperiment(SourcePath("experiments/paper.json")).experiments)
+  for (const ExperimentFile& x : LoadExperiment(SourcePath("experiments/paper.json"))
+                                     .Input<PaperInput>()
+                                     .experiments)
     most = std::max(most, x.trials);
   EXPECT_EQ(PrecisionDesign::kDefaultNoiseTrials, most);
 }
@@ -1008,7 +1046,7 @@ TEST(CalibrateTest, ParametersTargetsLossAndStepsLoad) {
   const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Calibrate()));
   EXPECT_EQ(e.kind, "calibrate");
   EXPECT_EQ(e.scene.name, "steel_block_move");
-  const CalibrationDesign& d = e.calibration;
+  const CalibrationDesign& d = e.Input<CalibrationDesign>();
   EXPECT_TRUE(std::filesystem::equivalent(
       d.lab_path, SourcePath("data/synthetic_block/dataset.json")))
       << d.lab_path;
@@ -1050,33 +1088,34 @@ TEST(CalibrateTest, Defaults) {
   doc["targets"][0]["by"] = "all";
   ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
   const CalibrationDesign defaults;
-  EXPECT_EQ(e.calibration.loss, "huber");
-  EXPECT_DOUBLE_EQ(e.calibration.loss_scale, 3.0);
-  EXPECT_DOUBLE_EQ(e.calibration.relative_step, 0.05);
-  EXPECT_EQ(e.calibration.max_iterations, 30);
-  EXPECT_EQ(e.calibration.loss, defaults.loss);
-  EXPECT_FALSE(e.calibration.stages[0].targets[0].by_operator);
+  EXPECT_EQ(e.Input<CalibrationDesign>().loss, "huber");
+  EXPECT_DOUBLE_EQ(e.Input<CalibrationDesign>().loss_scale, 3.0);
+  EXPECT_DOUBLE_EQ(e.Input<CalibrationDesign>().relative_step, 0.05);
+  EXPECT_EQ(e.Input<CalibrationDesign>().max_iterations, 30);
+  EXPECT_EQ(e.Input<CalibrationDesign>().loss, defaults.loss);
+  EXPECT_FALSE(e.Input<CalibrationDesign>().stages[0].targets[0].by_operator);
   // A loss without a scale keeps the default scale.
   doc["loss"] = {{"kind", "none"}};
   e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
-  EXPECT_EQ(e.calibration.loss, "none");
-  EXPECT_DOUBLE_EQ(e.calibration.loss_scale, 3.0);
+  EXPECT_EQ(e.Input<CalibrationDesign>().loss, "none");
+  EXPECT_DOUBLE_EQ(e.Input<CalibrationDesign>().loss_scale, 3.0);
 }
 
 TEST(CalibrateTest, ShippedExperimentResolvesItsLabRelativeToItself) {
   const ExperimentFile e =
       LoadExperiment(SourcePath("experiments/calibrate_synthetic.json"));
   EXPECT_EQ(e.kind, "calibrate");
-  EXPECT_TRUE(std::filesystem::equivalent(
-      e.calibration.lab_path, SourcePath("data/synthetic_block/dataset.json")))
-      << e.calibration.lab_path;
+  EXPECT_TRUE(
+      std::filesystem::equivalent(e.Input<CalibrationDesign>().lab_path,
+                                  SourcePath("data/synthetic_block/dataset.json")))
+      << e.Input<CalibrationDesign>().lab_path;
   EXPECT_TRUE(std::filesystem::equivalent(
       e.scene_path, SourcePath("experiments/scenes/steel_block_move.json")));
-  ASSERT_EQ(e.calibration.stages[0].parameters.size(), 1u);
-  EXPECT_EQ(e.calibration.stages[0].parameters[0].name, "guidance/kappa");
-  ASSERT_EQ(e.calibration.stages[0].targets.size(), 1u);
-  EXPECT_TRUE(e.calibration.stages[0].targets[0].by_operator);
-  EXPECT_EQ(e.calibration.loss, "huber");
+  ASSERT_EQ(e.Input<CalibrationDesign>().stages[0].parameters.size(), 1u);
+  EXPECT_EQ(e.Input<CalibrationDesign>().stages[0].parameters[0].name, "guidance/kappa");
+  ASSERT_EQ(e.Input<CalibrationDesign>().stages[0].targets.size(), 1u);
+  EXPECT_TRUE(e.Input<CalibrationDesign>().stages[0].targets[0].by_operator);
+  EXPECT_EQ(e.Input<CalibrationDesign>().loss, "huber");
   EXPECT_EQ(e.trials, 20);
 }
 
@@ -1157,7 +1196,8 @@ TEST(CalibrateErrorsTest, WidenedBoundBreaksTheRule) {
   ExpectError(doc, "/parameters/1/upper", "breaks reach/value_at_d2's rule");
   doc["relative_step"] = 0.04;
   EXPECT_DOUBLE_EQ(LoadExperiment(WriteJson(TestDir() / "e.json", doc))
-                       .calibration.stages[0]
+                       .Input<CalibrationDesign>()
+                       .stages[0]
                        .parameters[1]
                        .upper,
                    0.96);
@@ -1261,7 +1301,7 @@ json Staged() {
 
 TEST(CalibrateTest, StagesLoadInOrderWithTheirSolvers) {
   const ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", Staged()));
-  const CalibrationDesign& d = e.calibration;
+  const CalibrationDesign& d = e.Input<CalibrationDesign>();
   ASSERT_EQ(d.stages.size(), 2u);
   EXPECT_EQ(d.stages[0].name, "kappa");
   EXPECT_EQ(d.stages[0].pointer, "/stages/0");
@@ -1274,10 +1314,12 @@ TEST(CalibrateTest, StagesLoadInOrderWithTheirSolvers) {
   // The shipped paper calibration: kappa, then A_max on the fatigue design.
   const ExperimentFile paper =
       LoadExperiment(SourcePath("experiments/calibrate_paper.json"));
-  ASSERT_EQ(paper.calibration.stages.size(), 2u);
-  EXPECT_EQ(paper.calibration.stages[0].parameters[0].name, "guidance/kappa");
-  EXPECT_EQ(paper.calibration.stages[1].parameters[0].name, "fatigue/a_max");
-  EXPECT_EQ(paper.calibration.stages[1].targets[1].segment, 4);
+  ASSERT_EQ(paper.Input<CalibrationDesign>().stages.size(), 2u);
+  EXPECT_EQ(paper.Input<CalibrationDesign>().stages[0].parameters[0].name,
+            "guidance/kappa");
+  EXPECT_EQ(paper.Input<CalibrationDesign>().stages[1].parameters[0].name,
+            "fatigue/a_max");
+  EXPECT_EQ(paper.Input<CalibrationDesign>().stages[1].targets[1].segment, 4);
 }
 
 TEST(CalibrateErrorsTest, StagesAreWellFormed) {
@@ -1351,7 +1393,7 @@ TEST(CompareTest, SegmentsAndConditionsLoadWithTheFatigueDesign) {
   const ExperimentFile e =
       LoadExperiment(WriteJson(TestDir() / "e.json", ComparePaper()));
   EXPECT_EQ(e.kind, "compare");
-  const ComparisonDesign& d = e.comparison;
+  const ComparisonDesign& d = e.Input<ComparisonDesign>();
   EXPECT_TRUE(
       std::filesystem::equivalent(d.lab_path, SourcePath("data/paper/dataset.json")));
   ASSERT_EQ(d.quantities.size(), 3u);
@@ -1372,7 +1414,7 @@ TEST(CompareTest, SegmentsAndConditionsLoadWithTheFatigueDesign) {
 TEST(CompareTest, ShippedPaperComparison) {
   const ExperimentFile e = LoadExperiment(SourcePath("experiments/compare_paper.json"));
   EXPECT_EQ(e.scene.name, "hydraulic_cylinder");
-  const ComparisonDesign& d = e.comparison;
+  const ComparisonDesign& d = e.Input<ComparisonDesign>();
   ASSERT_EQ(d.quantities.size(), 6u);
   EXPECT_EQ(d.quantities[0].condition, "virtual");
   EXPECT_EQ(d.quantities[1].condition, "");

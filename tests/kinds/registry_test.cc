@@ -12,9 +12,11 @@
 #include "support/test_files.h"
 #include "vahf/core/error.h"
 #include "vahf/kinds/kind.h"
+#include "vahf/kinds/paper_input.h"
 #include "vahf/visibility/visibility.h"
 
 namespace vahf::kinds {
+
 namespace {
 
 using ::nlohmann::json;
@@ -140,8 +142,8 @@ TEST(KindRegistryTest, APaperRunValidatesEveryExperimentBeforeTheFirstTrial) {
                       {"kind", "paper"},
                       {"experiments", {first, second}}};
   scene::ExperimentFile file = LoadExperiment(Write("paper.json", paper));
-  ASSERT_EQ(file.experiments.size(), 2u);
-  file.experiments[1].scene.params.contact.shell_spacing = 1e-5;
+  ASSERT_EQ(file.Input<PaperInput>().experiments.size(), 2u);
+  file.UpdInput<PaperInput>().experiments[1].scene.params.contact.shell_spacing = 1e-5;
   const std::string checked = ErrorOf([&] { CheckExperiment(file); });
   EXPECT_THAT(checked, HasSubstr(bad_scene));
   EXPECT_THAT(checked, HasSubstr("/parameters/contact"));

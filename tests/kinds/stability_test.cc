@@ -16,10 +16,14 @@
 #include "support/test_files.h"
 #include "vahf/core/error.h"
 #include "vahf/experiment/stability_design.h"
+#include "vahf/experiment/stability_input.h"
 #include "vahf/kinds/kind.h"
 #include "vahf/scene/experiment_file.h"
 
 namespace vahf::scene {
+
+using experiment::StabilityCase;
+using experiment::StabilityDesign;
 namespace {
 
 using ::nlohmann::json;
@@ -78,9 +82,10 @@ void ExpectError(const json& doc, const std::string& where, const std::string& r
 TEST(StabilityFile, LoadsCasesWithTheirPatchesOverridesAndIntegrators) {
   const ExperimentFile e = Load(Stability());
   EXPECT_EQ(e.kind, "stability");
-  EXPECT_THAT(e.stability.integrators, ElementsAre("CVODE", "RungeKuttaMerson"));
-  ASSERT_EQ(e.stability.cases.size(), 2u);
-  const StabilityCase& tight = e.stability.cases[0];
+  EXPECT_THAT(e.Input<StabilityDesign>().integrators,
+              ElementsAre("CVODE", "RungeKuttaMerson"));
+  ASSERT_EQ(e.Input<StabilityDesign>().cases.size(), 2u);
+  const StabilityCase& tight = e.Input<StabilityDesign>().cases[0];
   EXPECT_EQ(tight.name, "tight");
   EXPECT_EQ(tight.pointer, "/cases/0");
   EXPECT_EQ(tight.seeds, 2);
@@ -98,7 +103,7 @@ TEST(StabilityFile, LoadsCasesWithTheirPatchesOverridesAndIntegrators) {
     EXPECT_EQ(s.parts[1].friction, 0.4);
     EXPECT_EQ(s.parts[0].friction, 0.15);  // unpatched
   }
-  const StabilityCase& fixed = e.stability.cases[1];
+  const StabilityCase& fixed = e.Input<StabilityDesign>().cases[1];
   EXPECT_THAT(fixed.integrators, ElementsAre("FixedStep"));
   EXPECT_EQ(fixed.scenes[0].params.simulation.integrator, "FixedStep");
   EXPECT_EQ(fixed.seeds, 1);

@@ -19,11 +19,20 @@
 
 #include "support/test_files.h"
 #include "vahf/core/error.h"
+#include "vahf/experiment/groups_input.h"
+#include "vahf/experiment/precision_input.h"
 #include "vahf/kinds/kind.h"
+#include "vahf/kinds/paper_input.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/scene_loader.h"
 
 namespace vahf::scene {
+
+using experiment::ConditionEntry;
+using experiment::GroupsInput;
+using experiment::PrecisionDesign;
+using experiment::PrecisionScene;
+using kinds::PaperInput;
 
 using kinds::LoadExperiment;
 using kinds::ParseExperiment;
@@ -270,9 +279,9 @@ TEST(ApplyOverridesExperimentTest, ReachRuleIsCheckedForEveryListedOperator) {
 
 TEST(ApplyOverridesExperimentTest, ReachesEveryConditionsScene) {
   ExperimentFile e = LoadExperiment(SourcePath("experiments/human_factors_groups.json"));
-  ASSERT_EQ(e.conditions.size(), 3u);
+  ASSERT_EQ(e.Input<GroupsInput>().conditions.size(), 3u);
   ApplyOverrides(Load({{"guidance/kappa", 321}}), &e);
-  for (const ConditionEntry& c : e.conditions)
+  for (const ConditionEntry& c : e.Input<GroupsInput>().conditions)
     EXPECT_DOUBLE_EQ(c.scene.params.guidance.kappa, 321.0) << c.name;
 }
 
@@ -297,13 +306,13 @@ json SmallPrecision() {
 TEST(ApplyOverridesPrecisionTest, ASettingKeepsWhatItSetsItself) {
   ExperimentFile e =
       LoadExperiment(WriteJson(TestDir() / "precision.json", SmallPrecision()));
-  ASSERT_EQ(e.precision.scenes.size(), 1u);
-  ASSERT_EQ(e.precision.scenes[0].settings.size(), 3u);
+  ASSERT_EQ(e.Input<PrecisionDesign>().scenes.size(), 1u);
+  ASSERT_EQ(e.Input<PrecisionDesign>().scenes[0].settings.size(), 3u);
   const ParameterOverrides o =
       Load({{"guidance/kappa", 321}, {"simulation/accuracy", 2e-4}});
   ApplyOverrides(o, &e);
   EXPECT_EQ(e.overrides_path, o.file);
-  const PrecisionScene& ps = e.precision.scenes[0];
+  const PrecisionScene& ps = e.Input<PrecisionDesign>().scenes[0];
   // The scene as its file gives it, and the manifest's scene, get both values.
   EXPECT_DOUBLE_EQ(ps.scene.params.guidance.kappa, 321.0);
   EXPECT_DOUBLE_EQ(ps.scene.params.simulation.accuracy, 2e-4);
@@ -322,19 +331,19 @@ TEST(ApplyOverridesPrecisionTest, ASettingKeepsWhatItSetsItself) {
 
 TEST(ApplyOverridesPrecisionTest, ReachesTheShippedExperimentsReferenceAndSettings) {
   ExperimentFile e = LoadExperiment(SourcePath("experiments/precision.json"));
-  ASSERT_EQ(e.precision.scenes.size(), 2u);
+  ASSERT_EQ(e.Input<PrecisionDesign>().scenes.size(), 2u);
   ApplyOverrides(Load({{"guidance/kappa", 321}, {"simulation/accuracy", 2e-4}}), &e);
-  for (const PrecisionScene& ps : e.precision.scenes) {
+  for (const PrecisionScene& ps : e.Input<PrecisionDesign>().scenes) {
     SCOPED_TRACE(ps.scene.name);
     EXPECT_DOUBLE_EQ(ps.scene.params.guidance.kappa, 321.0);
     EXPECT_DOUBLE_EQ(ps.reference.params.guidance.kappa, 321.0);
     EXPECT_DOUBLE_EQ(ps.reference.params.simulation.accuracy, 1e-8);
-    ASSERT_EQ(ps.settings.size(), e.precision.settings.size());
+    ASSERT_EQ(ps.settings.size(), e.Input<PrecisionDesign>().settings.size());
     for (std::size_t k = 0; k < ps.settings.size(); ++k) {
-      SCOPED_TRACE(e.precision.settings[k].label);
+      SCOPED_TRACE(e.Input<PrecisionDesign>().settings[k].label);
       EXPECT_DOUBLE_EQ(ps.settings[k].params.guidance.kappa, 321.0);
       bool own = false;  // does the setting set the accuracy itself?
-      for (const auto& [name, value] : e.precision.settings[k].overrides) {
+      for (const auto& [name, value] : e.Input<PrecisionDesign>().settings[k].overrides) {
         if (name == "simulation/accuracy") {
           own = true;
           EXPECT_DOUBLE_EQ(ps.settings[k].params.simulation.accuracy,
@@ -365,15 +374,16 @@ TEST(ApplyOverridesPrecisionTest, CrossParameterRuleNamesTheOverrideFile) {
 
 TEST(ApplyOverridesPaperTest, EveryChildsSceneGetsTheValue) {
   ExperimentFile e = LoadExperiment(SourcePath("experiments/paper.json"));
-  ASSERT_EQ(e.experiments.size(), 4u);
+  ASSERT_EQ(e.Input<PaperInput>().experiments.size(), 4u);
   const ParameterOverrides o = Load({{"guidance/kappa", 321}});
   ApplyOverrides(o, &e);
   EXPECT_EQ(e.overrides_path, o.file);
-  for (const ExperimentFile& sub : e.experiments) {
+  for (const ExperimentFile& sub : e.Input<PaperInput>().experiments) {
     SCOPED_TRACE(sub.name);
     EXPECT_EQ(sub.overrides_path, o.file);
     EXPECT_DOUBLE_EQ(sub.scene.params.guidance.kappa, 321.0);
-    for (const ConditionEntry& c : sub.conditions)
+    if (sub.kind != "human_factors_groups") continue;
+    for (const ConditionEntry& c : sub.Input<GroupsInput>().conditions)
       EXPECT_DOUBLE_EQ(c.scene.params.guidance.kappa, 321.0) << c.name;
   }
 }

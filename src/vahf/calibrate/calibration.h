@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "vahf/calibrate/calibration_input.h"
 #include "vahf/calibrate/targets.h"
 #include "vahf/data/lab_dataset.h"
 #include "vahf/experiment/runner.h"
@@ -43,9 +44,9 @@
 
 namespace vahf::calibrate {
 
-using ParameterSpec = scene::FitParameter;
-using CalibrationSpec = scene::CalibrationDesign;
-using StageSpec = scene::CalibrationStage;
+using ParameterSpec = FitParameter;
+using CalibrationSpec = CalibrationDesign;
+using StageSpec = CalibrationStage;
 // Rounds of re-weighting (see above).
 inline constexpr int kMaxRounds = 3;
 

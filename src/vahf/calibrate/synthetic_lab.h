@@ -20,6 +20,7 @@
 #include "vahf/experiment/runner.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/scene.h"
+#include "vahf/scene/shared_inputs.h"
 
 namespace vahf::calibrate {
 

@@ -18,6 +18,7 @@
 
 #include "vahf/data/lab_dataset.h"
 #include "vahf/experiment/design.h"
+#include "vahf/scene/shared_inputs.h"
 
 namespace vahf::calibrate {
 

@@ -192,7 +192,7 @@ QuantityComparison CompareReported(const calibrate::Target& target, double margi
 }
 
 std::vector<LabQuantity> LabSide(const data::LabDataset& lab,
-                                 const scene::ComparisonDesign& design,
+                                 const ComparisonDesign& design,
                                  const std::string& experiment_file) {
   std::vector<LabQuantity> out;
   for (const scene::FitTarget& spec : design.quantities) {
@@ -235,7 +235,7 @@ std::string LabBasis(const calibrate::Target& target, bool reported) {
 }
 
 ComparisonResult Compare(const scene::Scene& scene, const data::LabDataset& lab,
-                         const scene::ComparisonDesign& design,
+                         const ComparisonDesign& design,
                          const std::string& experiment_file, std::uint64_t seed,
                          int trials, const experiment::RunnerOptions& options,
                          const experiment::RunnerOptions& pilot_options) {

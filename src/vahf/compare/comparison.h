@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "vahf/calibrate/targets.h"
+#include "vahf/compare/comparison_input.h"
 #include "vahf/data/lab_dataset.h"
 #include "vahf/experiment/design.h"
 #include "vahf/scene/experiment_file.h"
@@ -52,7 +53,7 @@ struct LabQuantity {
 // without any spread is kept as a point). An InputError naming
 // `experiment_file` and the quantity's pointer when the lab has neither.
 std::vector<LabQuantity> LabSide(const data::LabDataset& lab,
-                                 const scene::ComparisonDesign& design,
+                                 const ComparisonDesign& design,
                                  const std::string& experiment_file);
 
 // How the lab's side of `q` was obtained, for reports: "trials", "reported",
@@ -96,7 +97,7 @@ struct ComparisonResult {
 // operator and per segment, `seed`) and compares each quantity. The fatigue
 // pilot reports its progress with `pilot_options`.
 ComparisonResult Compare(const scene::Scene& scene, const data::LabDataset& lab,
-                         const scene::ComparisonDesign& design,
+                         const ComparisonDesign& design,
                          const std::string& experiment_file, std::uint64_t seed,
                          int trials, const experiment::RunnerOptions& options,
                          const experiment::RunnerOptions& pilot_options);

@@ -5,6 +5,9 @@
 #include <algorithm>
 
 #include "vahf/core/error.h"
+#include "vahf/experiment/assembly_time_input.h"
+#include "vahf/experiment/fatigue_input.h"
+#include "vahf/experiment/groups_input.h"
 #include "vahf/experiment/precision_design.h"
 
 namespace vahf::experiment {
@@ -137,10 +140,12 @@ ExperimentRun Table1Run(const scene::ExperimentFile& file, const RunSettings& se
 ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file,
                               const RunSettings& settings) {
   ExperimentRun out = Begin(file, settings);
+  const std::vector<scene::OperatorEntry>& operators =
+      file.Input<AssemblyTimeInput>().operators;
   std::vector<Condition> conditions;
-  if (file.operators.empty())
+  if (operators.empty())
     conditions.push_back({"scene operator", file.scene.op.sex, Share(file.scene)});
-  for (const scene::OperatorEntry& o : file.operators)
+  for (const scene::OperatorEntry& o : operators)
     conditions.push_back(OperatorCondition(file.scene, o));
   out.run = RunDesign(conditions, out.trials, out.seed, false, Options(file, settings));
   return out;
@@ -150,7 +155,7 @@ ExperimentRun HumanFactorsGroupsRun(const scene::ExperimentFile& file,
                                     const RunSettings& settings) {
   ExperimentRun out = Begin(file, settings);
   std::vector<Condition> conditions;
-  for (const scene::ConditionEntry& c : file.conditions)
+  for (const ConditionEntry& c : file.Input<GroupsInput>().conditions)
     conditions.push_back({c.name, "", Share(c.scene)});
   out.run = RunDesign(conditions, out.trials, out.seed, true, Options(file, settings));
   return out;
@@ -159,8 +164,8 @@ ExperimentRun HumanFactorsGroupsRun(const scene::ExperimentFile& file,
 ExperimentRun FatigueExperimentRun(const scene::ExperimentFile& file,
                                    const RunSettings& settings) {
   ExperimentRun out = Begin(file, settings);
-  FatigueRun f = RunFatigue(Share(file.scene), file.fatigue, out.trials, out.seed,
-                            Options(file, settings),
+  FatigueRun f = RunFatigue(Share(file.scene), file.Input<FatigueInput>().fatigue,
+                            out.trials, out.seed, Options(file, settings),
                             Options(settings, file.name + " (fatigue pilot)"));
   out.pilot = std::move(f.pilot);
   out.work_rate = f.work_rate;

@@ -22,6 +22,7 @@
 #include "vahf/experiment/cycle.h"
 #include "vahf/experiment/runner.h"
 #include "vahf/scene/experiment_file.h"
+#include "vahf/scene/shared_inputs.h"
 
 namespace vahf::experiment {
 

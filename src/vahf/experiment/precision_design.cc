@@ -6,14 +6,13 @@ namespace vahf::experiment {
 
 std::vector<Condition> PrecisionConditions(const scene::ExperimentFile& file,
                                            int trials_override) {
-  const scene::PrecisionDesign& d = file.precision;
+  const PrecisionDesign& d = file.Input<PrecisionDesign>();
   std::vector<Condition> out;
-  for (const scene::PrecisionScene& s : d.scenes) {
+  for (const PrecisionScene& s : d.scenes) {
     const int trials = trials_override > 0 ? trials_override
                        : s.trials > 0      ? s.trials
                                            : file.trials;
-    const auto add = [&](const scene::PrecisionSetting& setting,
-                         const scene::Scene& scene) {
+    const auto add = [&](const PrecisionSetting& setting, const scene::Scene& scene) {
       Condition c;
       c.name = setting.label;
       c.group = s.scene.name;
@@ -27,8 +26,8 @@ std::vector<Condition> PrecisionConditions(const scene::ExperimentFile& file,
   return out;
 }
 
-std::size_t PrecisionConditionIndex(const scene::PrecisionDesign& design,
-                                    std::size_t scene, std::size_t setting) {
+std::size_t PrecisionConditionIndex(const PrecisionDesign& design, std::size_t scene,
+                                    std::size_t setting) {
   return scene * (design.settings.size() + 1) + setting;
 }
 

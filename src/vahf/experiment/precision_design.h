@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "vahf/experiment/design.h"
+#include "vahf/experiment/precision_input.h"
 #include "vahf/scene/experiment_file.h"
 
 namespace vahf::experiment {
@@ -23,7 +24,7 @@ std::vector<Condition> PrecisionConditions(const scene::ExperimentFile& file,
 
 // The index in PrecisionConditions of scene `scene`'s setting `setting`:
 // 0 is the reference, k + 1 the file's setting k.
-std::size_t PrecisionConditionIndex(const scene::PrecisionDesign& design,
-                                    std::size_t scene, std::size_t setting);
+std::size_t PrecisionConditionIndex(const PrecisionDesign& design, std::size_t scene,
+                                    std::size_t setting);
 
 }  // namespace vahf::experiment

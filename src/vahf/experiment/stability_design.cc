@@ -43,7 +43,7 @@ bool IsOutcomeClass(const std::string& name) {
   return std::find(all.begin(), all.end(), name) != all.end();
 }
 
-std::vector<std::string> StabilityFailures(const scene::StabilityCase& c,
+std::vector<std::string> StabilityFailures(const StabilityCase& c,
                                            const sim::TrialResult& r,
                                            std::int64_t max_steps) {
   std::vector<std::string> out;
@@ -63,7 +63,7 @@ std::vector<std::string> StabilityFailures(const scene::StabilityCase& c,
   return out;
 }
 
-std::vector<StabilityTrial> RunStabilityTrials(const scene::StabilityDesign& design,
+std::vector<StabilityTrial> RunStabilityTrials(const StabilityDesign& design,
                                                std::uint64_t seed,
                                                const RunnerOptions& options) {
   // The models of every case and integrator, built (and checked) once before
@@ -71,7 +71,7 @@ std::vector<StabilityTrial> RunStabilityTrials(const scene::StabilityDesign& des
   std::vector<std::vector<std::shared_ptr<const sim::TrialModel>>> models;
   std::vector<StabilityTrial> plan;
   for (std::size_t k = 0; k < design.cases.size(); ++k) {
-    const scene::StabilityCase& c = design.cases[k];
+    const StabilityCase& c = design.cases[k];
     models.emplace_back();
     for (std::size_t i = 0; i < c.scenes.size(); ++i) {
       models.back().push_back(sim::BuildTrialModel(c.scenes[i], c.position));
@@ -86,7 +86,7 @@ std::vector<StabilityTrial> RunStabilityTrials(const scene::StabilityDesign& des
   }
   return RunIndexed<StabilityTrial>(plan.size(), options, [&](std::size_t n) {
     StabilityTrial t = plan[n];
-    const scene::StabilityCase& c = design.cases[t.case_index];
+    const StabilityCase& c = design.cases[t.case_index];
     const scene::Scene& scene = c.scenes[t.integrator_index];
     sim::TrialOptions trial_options;
     trial_options.sequence_position = c.position;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "vahf/experiment/runner.h"
+#include "vahf/experiment/stability_input.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/sim/trial_result.h"
 
@@ -31,7 +32,7 @@ struct StabilityTrial {
 // scene draws from stream {seed, j n + p} (CycleKey), whatever the
 // integrator: the integrators of a case meet the same operator. Same inputs:
 // the same results but the measured times, whatever options.threads.
-std::vector<StabilityTrial> RunStabilityTrials(const scene::StabilityDesign& design,
+std::vector<StabilityTrial> RunStabilityTrials(const StabilityDesign& design,
                                                std::uint64_t seed,
                                                const RunnerOptions& options);
 
@@ -39,7 +40,7 @@ std::vector<StabilityTrial> RunStabilityTrials(const scene::StabilityDesign& des
 // is not one the case expects; a number of the result (end time, work, the
 // deepest contact, the final row's pose, velocities, forces, factors, A and
 // Psi_c) is not finite; it took more accepted steps than max_steps.
-std::vector<std::string> StabilityFailures(const scene::StabilityCase& c,
+std::vector<std::string> StabilityFailures(const StabilityCase& c,
                                            const sim::TrialResult& result,
                                            std::int64_t max_steps);
 

@@ -19,13 +19,15 @@ namespace vahf::kinds {
 // The lab dataset and the targets it must supply, as a run reads them before
 // its first trial, and the scene's trial models.
 std::string CheckCalibration(const scene::ExperimentFile& e) {
-  const data::LabDataset lab = data::LoadLabDataset(e.calibration.lab_path);
+  const data::LabDataset lab =
+      data::LoadLabDataset(e.Input<calibrate::CalibrationDesign>().lab_path);
   std::string out = data::DescribeLabDataset(lab);
   calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
-  for (const scene::CalibrationStage& stage : e.calibration.stages) {
+  for (const calibrate::CalibrationStage& stage :
+       e.Input<calibrate::CalibrationDesign>().stages) {
     if (!stage.name.empty())
       out += fmt::format("  stage '{}' ({}):\n", stage.name, stage.solver);
-    for (const scene::FitParameter& p : stage.parameters)
+    for (const calibrate::FitParameter& p : stage.parameters)
       out += fmt::format("  fits {} from {:g} within [{:g}, {:g}]\n", p.name, p.start,
                          p.lower, p.upper);
     for (const auto& t : calibrate::LabTargets(lab, stage.targets, e.file)) {
@@ -45,13 +47,15 @@ std::string CheckCalibration(const scene::ExperimentFile& e) {
 // output directory with calibrated.json.
 int RunCalibration(const scene::ExperimentFile& file, const RunContext& context) {
   const experiment::RunSettings& settings = context.settings;
-  const data::LabDataset lab = data::LoadLabDataset(file.calibration.lab_path);
+  const data::LabDataset lab =
+      data::LoadLabDataset(file.Input<calibrate::CalibrationDesign>().lab_path);
   const int trials = settings.trials > 0 ? settings.trials : file.trials;
   experiment::RunnerOptions options;
   options.threads = settings.threads;
   const auto start = std::chrono::steady_clock::now();
   const std::vector<calibrate::CalibrationResult> stages = calibrate::Calibrate(
-      file.scene, lab, file.calibration, file.file, settings.seed, trials, options,
+      file.scene, lab, file.Input<calibrate::CalibrationDesign>(), file.file,
+      settings.seed, trials, options,
       [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
   const report::RunInfo info{settings.threads, SecondsSince(start)};
   const report::RunOutput written =

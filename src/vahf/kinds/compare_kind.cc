@@ -17,18 +17,20 @@ namespace vahf::kinds {
 // The lab's side of every quantity, as a run reads it before simulating, and
 // the scene's trial models.
 std::string CheckComparison(const scene::ExperimentFile& e) {
-  const data::LabDataset lab = data::LoadLabDataset(e.comparison.lab_path);
+  const data::LabDataset lab =
+      data::LoadLabDataset(e.Input<compare::ComparisonDesign>().lab_path);
   std::string out = data::DescribeLabDataset(lab);
   calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
   bool segments = false;
-  for (const auto& q : compare::LabSide(lab, e.comparison, e.file)) {
+  for (const auto& q :
+       compare::LabSide(lab, e.Input<compare::ComparisonDesign>(), e.file)) {
     const char* unit = q.target.unit == "s" ? " s" : "";
     out += fmt::format("  compares {} within +-{:g}{}: lab {:g}{} from {}\n",
                        q.target.label, q.margin, unit, q.target.lab.value, unit,
                        compare::LabBasis(q.target, q.reported));
     segments = segments || q.target.spec.segment > 0;
   }
-  const scene::FatigueDesign& f = e.comparison.fatigue;
+  const scene::FatigueDesign& f = e.Input<compare::ComparisonDesign>().fatigue;
   if (segments)
     out += fmt::format(
         "  segments from the fatigue design: {:g} min in {} segments, {} pilot "
@@ -39,7 +41,8 @@ std::string CheckComparison(const scene::ExperimentFile& e) {
 
 int RunComparison(const scene::ExperimentFile& file, const RunContext& context) {
   const experiment::RunSettings& settings = context.settings;
-  const data::LabDataset lab = data::LoadLabDataset(file.comparison.lab_path);
+  const data::LabDataset lab =
+      data::LoadLabDataset(file.Input<compare::ComparisonDesign>().lab_path);
   const int trials = settings.trials > 0 ? settings.trials : file.trials;
   experiment::RunnerOptions options;
   options.threads = settings.threads;
@@ -49,8 +52,8 @@ int RunComparison(const scene::ExperimentFile& file, const RunContext& context) 
   pilot_options.label = file.name + " (compare, fatigue pilot)";
   const auto start = std::chrono::steady_clock::now();
   const compare::ComparisonResult result =
-      compare::Compare(file.scene, lab, file.comparison, file.file, settings.seed, trials,
-                       options, pilot_options);
+      compare::Compare(file.scene, lab, file.Input<compare::ComparisonDesign>(),
+                       file.file, settings.seed, trials, options, pilot_options);
   const report::RunInfo info{settings.threads, SecondsSince(start)};
   const report::RunOutput written =
       WriteLabRun(file, lab, context, trials,

@@ -5,7 +5,10 @@
 #include <set>
 #include <string>
 
+#include "vahf/experiment/groups_input.h"
+#include "vahf/experiment/precision_design.h"
 #include "vahf/kinds/kind_functions.h"
+#include "vahf/kinds/paper_input.h"
 #include "vahf/kinds/run_support.h"
 #include "vahf/scene/json_reader.h"
 #include "vahf/sim/trial_model.h"
@@ -18,7 +21,8 @@ std::string CheckOneScene(const scene::ExperimentFile& file) {
 
 std::string CheckGroups(const scene::ExperimentFile& file) {
   std::string out;
-  for (const scene::ConditionEntry& c : file.conditions)
+  for (const experiment::ConditionEntry& c :
+       file.Input<experiment::GroupsInput>().conditions)
     out += fmt::format("condition '{}' ({}):\n", c.name, c.scene_path) +
            DescribeSceneModels(c.scene);
   return out;
@@ -27,41 +31,19 @@ std::string CheckGroups(const scene::ExperimentFile& file) {
 // The settings, and the trial models of every scene under every setting (what
 // only building can reject, a setting's shell spacing say, fails now).
 std::string CheckPrecision(const scene::ExperimentFile& file) {
-  std::string out = scene::DescribePrecision(file);
-  for (const scene::PrecisionScene& s : file.precision.scenes) {
+  std::string out = experiment::DescribePrecision(file);
+  for (const experiment::PrecisionScene& s :
+       file.Input<experiment::PrecisionDesign>().scenes) {
     out += DescribeSceneModels(s.reference);
     for (const scene::Scene& setting : s.settings) sim::BuildSequenceModels(setting);
   }
   return out;
 }
 
-// The experiments a paper run lists, each from its own file and a design of
-// cycles (their outputs share one directory); they name their scenes.
-void ParsePaper(const scene::JsonNode& root, const std::string& path,
-                scene::ExperimentFile* e) {
-  const scene::JsonNode list = root.Required("experiments");
-  const std::size_t n = list.ArraySize(1);
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::string sub = scene::ResolvePath(list.At(k), path, "experiment");
-    // Checked before parsing, so a file listing itself cannot recurse.
-    const nlohmann::json doc = scene::ReadJsonFile(sub);
-    if (doc.is_object() && doc.contains("kind") && doc["kind"] == "paper")
-      list.At(k).Fail("a paper experiment cannot list another paper experiment");
-    scene::ExperimentFile x = ParseExperiment(doc, sub);
-    if (!FindKind(x.kind).design)
-      list.At(k).Fail(
-          fmt::format("{} is a {} experiment: a paper run lists designs of cycles "
-                      "(table1, assembly_time, human_factors_groups, fatigue, "
-                      "precision); run it on its own",
-                      sub, x.kind));
-    e->experiments.push_back(std::move(x));
-  }
-}
-
 std::string CheckPaper(const scene::ExperimentFile& file) {
   std::string out;
   std::set<std::string> checked;  // a file listed again is the same experiment
-  for (const scene::ExperimentFile& x : file.experiments) {
+  for (const scene::ExperimentFile& x : file.Input<PaperInput>().experiments) {
     // Every experiment valid before the first trial of any; each file once.
     if (checked.insert(x.file).second) FindKind(x.kind).check(x);
     out += fmt::format("  {} ({}): kind {}, {} cycles per condition, scene {}: valid\n",
@@ -76,7 +58,7 @@ experiment::ExperimentRun PaperRun(const scene::ExperimentFile& file,
   out.file = &file;
   out.seed = settings.seed;
   out.trials = settings.trials;  // 0: each experiment its own
-  for (const scene::ExperimentFile& x : file.experiments)
+  for (const scene::ExperimentFile& x : file.Input<PaperInput>().experiments)
     out.parts.push_back(RunDesign(x, settings));
   return out;
 }

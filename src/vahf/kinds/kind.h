@@ -1,5 +1,5 @@
 // The experiment kinds, each registered once (kinds/registry.cc): the keys of
-// an experiment file it reads and how (scene/experiment_file.h's readers), what
+// an experiment file it reads and how (each kind's reader, beside its input), what
 // `vahf check` validates and says of it, and how `vahf run` runs, analyses and
 // renders it. This is the top layer of the library: it sits above experiment/
 // (designs of cycles), calibrate/, compare/ and report/, and the vahf command
@@ -32,7 +32,7 @@ struct Kind {
   // Empty: the file names its scene in "scene". Otherwise the kind takes its
   // scenes elsewhere and this says where (the error for a "scene" key).
   std::string scene_elsewhere;
-  // Reads the kind's keys into the file (after the header and scene).
+  // Reads the kind's keys into the file's input (after the header and scene).
   void (*parse)(const scene::JsonNode& root, const std::string& path,
                 scene::ExperimentFile* e) = nullptr;
   // Validates what only loading or building can (lab datasets, trial models,

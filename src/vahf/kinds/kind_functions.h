@@ -14,8 +14,6 @@ std::string CheckOneScene(
     const scene::ExperimentFile& file);  // table1, assembly_time, fatigue
 std::string CheckGroups(const scene::ExperimentFile& file);
 std::string CheckPrecision(const scene::ExperimentFile& file);
-void ParsePaper(const scene::JsonNode& root, const std::string& path,
-                scene::ExperimentFile* e);
 std::string CheckPaper(const scene::ExperimentFile& file);
 experiment::ExperimentRun PaperRun(const scene::ExperimentFile& file,
                                    const experiment::RunSettings& settings);

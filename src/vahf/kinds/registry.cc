@@ -6,8 +6,17 @@
 #include <chrono>
 #include <utility>
 
+#include "vahf/calibrate/calibration_input.h"
+#include "vahf/compare/comparison_input.h"
 #include "vahf/core/error.h"
+#include "vahf/experiment/assembly_time_input.h"
+#include "vahf/experiment/fatigue_input.h"
+#include "vahf/experiment/groups_input.h"
+#include "vahf/experiment/precision_input.h"
+#include "vahf/experiment/stability_input.h"
+#include "vahf/experiment/table1_input.h"
 #include "vahf/kinds/kind_functions.h"
+#include "vahf/kinds/paper_input.h"
 #include "vahf/kinds/run_support.h"
 #include "vahf/report/run_output.h"
 #include "vahf/scene/json_reader.h"
@@ -51,7 +60,7 @@ std::vector<Kind> DesignKinds() {
        "success rate and time over an hour of work (Sec. 5.4)",
        {"fatigue"},
        "",
-       ReadFatigue,
+       ReadFatigueExperiment,
        CheckOneScene,
        FatigueExperimentRun,
        FatigueSection},
@@ -86,7 +95,7 @@ std::vector<Kind> OtherKinds() {
        {"lab", "fatigue", "parameters", "targets", "loss", "relative_step",
         "max_iterations", "tolerance", "solver", "stages"},
        "",
-       ReadCalibration,
+       calibrate::ReadCalibration,
        CheckCalibration,
        nullptr,
        nullptr,
@@ -95,7 +104,7 @@ std::vector<Kind> OtherKinds() {
        "a virtual design against a lab dataset (docs/calibration.md)",
        {"lab", "fatigue", "quantities"},
        "",
-       ReadComparison,
+       compare::ReadComparison,
        CheckComparison,
        nullptr,
        nullptr,

@@ -21,14 +21,16 @@ namespace vahf::kinds {
 // The expected classes (trial status names, which the scene layer does not
 // know), and every case's trial model under every integrator.
 std::string CheckStability(const scene::ExperimentFile& file) {
-  for (const scene::StabilityCase& c : file.stability.cases)
+  for (const experiment::StabilityCase& c :
+       file.Input<experiment::StabilityDesign>().cases)
     for (std::size_t j = 0; j < c.expect.size(); ++j)
       if (!experiment::IsOutcomeClass(c.expect[j]))
         throw InputError(file.file, c.expect_pointers[j], c.expect[j],
                          fmt::format("an outcome class is a trial status: {}",
                                      fmt::join(experiment::OutcomeClasses(), ", ")));
-  std::string out = scene::DescribeStability(file);
-  for (const scene::StabilityCase& c : file.stability.cases)
+  std::string out = experiment::DescribeStability(file);
+  for (const experiment::StabilityCase& c :
+       file.Input<experiment::StabilityDesign>().cases)
     for (const scene::Scene& scene : c.scenes) sim::BuildTrialModel(scene, c.position);
   return out;
 }
@@ -41,8 +43,8 @@ int RunStability(const scene::ExperimentFile& file, const RunContext& context) {
   options.unit = "trials";
   options.progress = settings.progress;
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<experiment::StabilityTrial> trials =
-      experiment::RunStabilityTrials(file.stability, settings.seed, options);
+  const std::vector<experiment::StabilityTrial> trials = experiment::RunStabilityTrials(
+      file.Input<experiment::StabilityDesign>(), settings.seed, options);
   const report::RunInfo info{settings.threads, SecondsSince(start)};
   report::RunHeader h;
   h.file = &file;
@@ -50,7 +52,8 @@ int RunStability(const scene::ExperimentFile& file, const RunContext& context) {
   h.seed = settings.seed;
   h.trials = 1;
   h.cycles_per_condition = "each case's seeds per integrator";
-  for (const scene::StabilityCase& c : file.stability.cases)
+  for (const experiment::StabilityCase& c :
+       file.Input<experiment::StabilityDesign>().cases)
     if (std::find(h.inputs.begin(), h.inputs.end(), c.scene_path) == h.inputs.end())
       h.inputs.push_back(c.scene_path);
   h.integration = fmt::format(
@@ -60,12 +63,13 @@ int RunStability(const scene::ExperimentFile& file, const RunContext& context) {
   if (!file.overrides_path.empty()) h.inputs.push_back(file.overrides_path);
   const report::RunOutput written = report::WriteSections(
       h, {report::StabilitySection(file, trials)}, *context.directory, info);
-  const std::vector<std::string> failed = report::FailedCases(file.stability, trials);
-  const int status =
-      FinishRun(file, context, info.wall_seconds, written,
-                fmt::format("{} trials, {} of {} cases passed", trials.size(),
-                            file.stability.cases.size() - failed.size(),
-                            file.stability.cases.size()));
+  const std::vector<std::string> failed =
+      report::FailedCases(file.Input<experiment::StabilityDesign>(), trials);
+  const int status = FinishRun(
+      file, context, info.wall_seconds, written,
+      fmt::format("{} trials, {} of {} cases passed", trials.size(),
+                  file.Input<experiment::StabilityDesign>().cases.size() - failed.size(),
+                  file.Input<experiment::StabilityDesign>().cases.size()));
   if (failed.empty()) return status;
   std::fprintf(stderr, "vahf: error: stability: %zu case(s) failed (results kept): %s\n",
                failed.size(), fmt::format("{}", fmt::join(failed, ", ")).c_str());

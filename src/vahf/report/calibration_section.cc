@@ -36,7 +36,7 @@ struct CalibrationTables {
 std::string Intro(const scene::ExperimentFile& file, const data::LabDataset& lab,
                   const std::vector<calibrate::CalibrationResult>& stages,
                   int evaluations) {
-  const scene::CalibrationDesign& d = file.calibration;
+  const calibrate::CalibrationDesign& d = file.Input<calibrate::CalibrationDesign>();
   return fmt::format(
       "## Calibration against {}\n\n{}\n\nLab dataset `{}`: {} (provenance: {}). "
       "Each residual is whitened by the lab's and the virtual statistic's standard "
@@ -53,7 +53,7 @@ std::string Intro(const scene::ExperimentFile& file, const data::LabDataset& lab
 }
 
 std::string StageHeading(const calibrate::CalibrationResult& r,
-                         const scene::CalibrationDesign& d) {
+                         const calibrate::CalibrationDesign& d) {
   const std::string solver =
       r.solver == "golden_section"
           ? fmt::format(
@@ -78,13 +78,13 @@ std::string ProfileText(const calibrate::FittedParameter& p) {
 
 // The stage's fitted parameters: table rows, summary entries and Markdown.
 void AddParameters(const std::string& stage, const calibrate::CalibrationResult& r,
-                   const scene::CalibrationStage& spec, CalibrationTables* t) {
+                   const calibrate::CalibrationStage& spec, CalibrationTables* t) {
   MarkdownTable md{{"parameter", "unit", "the scene's value", "start", "bounds",
                     "estimate", "standard error", "95 % interval",
                     "95 % profile interval"}};
   for (std::size_t i = 0; i < r.parameters.size(); ++i) {
     const calibrate::FittedParameter& p = r.parameters[i];
-    const scene::FitParameter& ps = spec.parameters[i];
+    const calibrate::FitParameter& ps = spec.parameters[i];
     // Ceres' covariance ignores the bounds: at a bound the interval is the
     // curvature's, not a confidence statement (docs/calibration.md).
     const bool at_bound = p.estimate <= ps.lower || p.estimate >= ps.upper;
@@ -174,8 +174,9 @@ constexpr const char* kRankDeficientNote =
     "central-difference step of the estimate, or a parameter they do not "
     "determine): no standard errors.\n";
 
-void AddStage(const calibrate::CalibrationResult& r, const scene::CalibrationDesign& d,
-              const scene::CalibrationStage& spec, CalibrationTables* t) {
+void AddStage(const calibrate::CalibrationResult& r,
+              const calibrate::CalibrationDesign& d,
+              const calibrate::CalibrationStage& spec, CalibrationTables* t) {
   const std::string stage = r.stage.empty() ? "1" : r.stage;
   t->markdown += StageHeading(r, d);
   AddParameters(stage, r, spec, t);
@@ -234,7 +235,8 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
   CalibrationTables t;
   t.markdown = Intro(file, lab, stages, evaluations);
   for (std::size_t k = 0; k < stages.size(); ++k)
-    AddStage(stages[k], file.calibration, file.calibration.stages[k], &t);
+    AddStage(stages[k], file.Input<calibrate::CalibrationDesign>(),
+             file.Input<calibrate::CalibrationDesign>().stages[k], &t);
   t.markdown += fmt::format(
       "\nThe fitted values are in `{}`, a parameter-override file: "
       "`vahf run EXPERIMENT --overrides {}` runs any experiment with them.\n\n",

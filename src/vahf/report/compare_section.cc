@@ -172,7 +172,8 @@ std::string Designs(const scene::ExperimentFile& file, const compare::Comparison
         "(the fatigue design): a pilot of {} cycles from A = 0 measured the work rate, "
         "{:.4g} J per second of assembly, and segment(s) {} ran {} cycles each, every "
         "cycle starting with the work done by its minute. ",
-        file.comparison.fatigue.duration_min, file.comparison.fatigue.segments,
+        file.Input<compare::ComparisonDesign>().fatigue.duration_min,
+        file.Input<compare::ComparisonDesign>().fatigue.segments,
         r.fatigue.pilot.records.size(), r.fatigue.work_rate, segments, trials);
   }
   return out;
@@ -291,7 +292,7 @@ std::string CompareIntro(const scene::ExperimentFile& file, const data::LabDatas
       "stated margin; \"not shown to agree\" does not mean shown to differ. Against a "
       "value the lab reports without its trials the test is the normal approximation, "
       "the area metric is the distance to that value, and there is no KS test.\n\n",
-      lab.name, file.comparison.lab_path, lab.description,
+      lab.name, file.Input<compare::ComparisonDesign>().lab_path, lab.description,
       lab.provenance.value("source", ""), Designs(file, r, trials));
 }
 

@@ -4,6 +4,7 @@
 
 #include <map>
 
+#include "vahf/experiment/fatigue_input.h"
 #include "vahf/human/fatigue.h"
 #include "vahf/report/figure.h"
 #include "vahf/report/markdown.h"
@@ -125,7 +126,8 @@ void DescribeSegments(const experiment::ExperimentRun& run, const SegmentOutcome
   }
   out->tables.emplace_back("fatigue_segments.csv", std::move(table));
   out->markdown = FatigueIntro(run) + ToMarkdown(md);
-  const double duration = run.file->fatigue.duration_min;
+  const double duration =
+      run.file->Input<experiment::FatigueInput>().fatigue.duration_min;
   out->plots.push_back({"plots/fatigue_time.png",
                         "Fig. 15: mean assembly time in each segment",
                         GnuplotScript(TimeFigure(fig15, duration))});

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 
+#include "vahf/experiment/groups_input.h"
 #include "vahf/report/figure.h"
 #include "vahf/report/markdown.h"
 #include "vahf/report/section.h"
@@ -43,7 +44,7 @@ struct InstantFactors {
 };
 
 void AddCycleFactors(const experiment::CycleRecord& r, const experiment::DesignRun& d,
-                     const scene::ExperimentFile& file, InstantFactors* out) {
+                     const experiment::GroupsInput& file, InstantFactors* out) {
   const std::size_t ni = file.instants_s.size();
   std::array<double, 2> sum = {0, 0};
   std::size_t found = 0;
@@ -68,7 +69,7 @@ void AddCycleFactors(const experiment::CycleRecord& r, const experiment::DesignR
 }
 
 InstantFactors CollectFactors(const experiment::DesignRun& d,
-                              const scene::ExperimentFile& file) {
+                              const experiment::GroupsInput& file) {
   const std::size_t nc = d.conditions.size(), ni = file.instants_s.size();
   InstantFactors out;
   for (auto& v : out.values) v.assign(nc, std::vector<std::vector<double>>(ni));
@@ -80,7 +81,7 @@ InstantFactors CollectFactors(const experiment::DesignRun& d,
 
 // The means table and its Markdown: a row per condition and quantity, a
 // column per instant.
-void DescribeMeans(const experiment::DesignRun& d, const scene::ExperimentFile& file,
+void DescribeMeans(const experiment::DesignRun& d, const experiment::GroupsInput& file,
                    const InstantFactors& f, Section* out) {
   Table means(
       {"condition", "paper_instant_s", "quantity", "n", "mean", "ci_lower", "ci_upper"});
@@ -113,7 +114,7 @@ void DescribeMeans(const experiment::DesignRun& d, const scene::ExperimentFile& 
 
 // Figs. 13-14: a quantity at each instant, a line per condition with each
 // mean's 95 % interval (the mean alone when one sample gives no interval).
-Plot QuantityPlot(const experiment::DesignRun& d, const scene::ExperimentFile& file,
+Plot QuantityPlot(const experiment::DesignRun& d, const experiment::GroupsInput& file,
                   const InstantFactors& f, std::size_t q) {
   const char* what = kQuantities[q];
   const char* fig = q == 0 ? "Fig. 13" : "Fig. 14";
@@ -205,17 +206,18 @@ nlohmann::json BetweenClaim(const experiment::DesignRun& d, const InstantFactors
 
 Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
   const experiment::DesignRun& d = run.run;
-  const InstantFactors factors = CollectFactors(d, *run.file);
+  const experiment::GroupsInput& groups = run.file->Input<experiment::GroupsInput>();
+  const InstantFactors factors = CollectFactors(d, groups);
   Section out;
   out.kind = "human_factors_groups";
   out.tables.emplace_back("human_factors_groups_cycles.csv", CyclesTable(d));
   out.tables.emplace_back("human_factors_groups_samples.csv", factors.rows);
-  DescribeMeans(d, *run.file, factors, &out);
+  DescribeMeans(d, groups, factors, &out);
   nlohmann::json claims = nlohmann::json::array();
   nlohmann::json tests = nlohmann::json::object();
   for (std::size_t q = 0; q < kQuantities.size(); ++q) {
     claims.push_back(BetweenClaim(d, factors, q, &tests));
-    out.plots.push_back(QuantityPlot(d, *run.file, factors, q));
+    out.plots.push_back(QuantityPlot(d, groups, factors, q));
   }
   out.summary = {{"tests", tests}, {"claims", claims}};
   return out;

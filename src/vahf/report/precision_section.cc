@@ -56,7 +56,7 @@ std::string Count(const std::optional<double>& x) {
   return x ? fmt::format("{:.0f}", *x) : "-";
 }
 
-nlohmann::json Overrides(const scene::PrecisionSetting& s) {
+nlohmann::json Overrides(const experiment::PrecisionSetting& s) {
   nlohmann::json o = nlohmann::json::object();
   for (const auto& [name, value] : s.overrides) o[name] = value;
   return o;
@@ -64,8 +64,8 @@ nlohmann::json Overrides(const scene::PrecisionSetting& s) {
 
 // One scene's outcomes: [setting][part][cycle], setting 0 the reference.
 struct SceneData {
-  const scene::PrecisionScene* scene = nullptr;
-  std::vector<const scene::PrecisionSetting*> settings;  // reference first
+  const experiment::PrecisionScene* scene = nullptr;
+  std::vector<const experiment::PrecisionSetting*> settings;  // reference first
   std::vector<std::string> parts;
   std::size_t cycles = 0;
   std::vector<std::vector<std::vector<PartOutcome>>> outcomes;
@@ -75,7 +75,7 @@ struct SceneData {
 };
 
 std::vector<SceneData> Collect(const experiment::ExperimentRun& run) {
-  const scene::PrecisionDesign& d = run.file->precision;
+  const experiment::PrecisionDesign& d = run.file->Input<experiment::PrecisionDesign>();
   const experiment::DesignRun& design = run.run;
   std::vector<std::vector<const experiment::CycleRecord*>> by_condition(
       design.conditions.size());
@@ -86,7 +86,7 @@ std::vector<SceneData> Collect(const experiment::ExperimentRun& run) {
     SceneData sd;
     sd.scene = &d.scenes[s];
     sd.settings.push_back(&d.reference);
-    for (const scene::PrecisionSetting& x : d.settings) sd.settings.push_back(&x);
+    for (const experiment::PrecisionSetting& x : d.settings) sd.settings.push_back(&x);
     const scene::Scene& scene = sd.scene->scene;
     for (int index : scene.sequence) sd.parts.push_back(scene.parts[index].name);
     sd.cycles = by_condition[experiment::PrecisionConditionIndex(d, s, 0)].size();
@@ -267,7 +267,7 @@ void AddPanel(const SceneData& sd, const Measure& m, std::size_t p, Figure* f) {
   std::map<std::string, std::vector<std::pair<double, DataRow>>> by_integrator;
   for (const PanelPoints::Point& pt : pp.points) {
     const DataRow row = DataRow().Number(pt.x).Number(clamp(pt.y)).Number(clamp(pt.top));
-    const scene::PrecisionSetting& s = *sd.settings[pt.k];
+    const experiment::PrecisionSetting& s = *sd.settings[pt.k];
     if (!s.AccuracyOnly()) {
       add(fmt::format("p{}s{}", p, pt.k), {row}, s.label, false);
       continue;
@@ -434,7 +434,7 @@ struct SceneSettings {
 SceneSettings DescribeSettings(const SceneData& sd, PrecisionTables* t) {
   SceneSettings out;
   for (std::size_t k = 0; k < sd.settings.size(); ++k) {
-    const scene::PrecisionSetting& s = *sd.settings[k];
+    const experiment::PrecisionSetting& s = *sd.settings[k];
     nlohmann::json parts = nlohmann::json::array();
     nlohmann::json walls = nlohmann::json::array();
     for (std::size_t p = 0; p < sd.parts.size(); ++p) {
@@ -462,7 +462,7 @@ SceneSettings DescribeSettings(const SceneData& sd, PrecisionTables* t) {
 // measured.json's entry for the recommended setting: its errors per part.
 nlohmann::json RecommendedJson(const SceneData& sd, const Recommendation& rec,
                                const std::vector<Candidate>& candidates) {
-  const scene::PrecisionSetting& chosen = *sd.settings[rec.index];
+  const experiment::PrecisionSetting& chosen = *sd.settings[rec.index];
   nlohmann::json errors = nlohmann::json::object();
   for (std::size_t p = 0; p < sd.parts.size(); ++p) {
     const PartComparison& c = sd.comparisons[rec.index][p];
@@ -527,13 +527,13 @@ std::string SceneMarkdown(const SceneData& sd, const Recommendation& rec) {
   for (std::size_t k = 0; k < sd.settings.size(); ++k)
     for (std::size_t p = 0; p < sd.parts.size(); ++p)
       table.AddRow(SettingMarkdown(sd, k, p));
-  const scene::PrecisionSetting& chosen = *sd.settings[rec.index];
+  const experiment::PrecisionSetting& chosen = *sd.settings[rec.index];
   return md + ".\n\n" + ToMarkdown(table) +
          fmt::format("\n**Recommended for {}: {}** ({}). {}.\n\n", name, chosen.label,
                      Overrides(chosen).dump(), rec.why);
 }
 
-std::string PrecisionIntro(const scene::PrecisionDesign& d) {
+std::string PrecisionIntro(const experiment::PrecisionDesign& d) {
   return fmt::format(
       "## Error against run time (precision)\n\n"
       "Each setting runs the same cycles as the reference ({}), on common random "
@@ -550,7 +550,7 @@ std::string PrecisionIntro(const scene::PrecisionDesign& d) {
 }  // namespace
 
 Section PrecisionSection(const experiment::ExperimentRun& run) {
-  const scene::PrecisionDesign& d = run.file->precision;
+  const experiment::PrecisionDesign& d = run.file->Input<experiment::PrecisionDesign>();
   PrecisionTables t;
   nlohmann::json summary_scenes = nlohmann::json::array();
   nlohmann::json measured_scenes = nlohmann::json::array();

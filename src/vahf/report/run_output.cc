@@ -26,17 +26,16 @@ std::vector<const experiment::ExperimentRun*> Leaves(
   return out;
 }
 
-// The scene files and paper table an experiment read, each once, in the
-// order first met.
+// The scene files and other inputs (a paper table) an experiment read, each
+// once, in the order first met.
 void AddInputs(const scene::ExperimentFile& f, std::vector<std::string>* paths) {
   const auto add = [&](const std::string& p) {
     if (!p.empty() && std::find(paths->begin(), paths->end(), p) == paths->end())
       paths->push_back(p);
   };
   add(f.scene_path);
-  for (const auto& c : f.conditions) add(c.scene_path);
-  for (const auto& s : f.precision.scenes) add(s.path);
-  if (!f.paper_table_path.empty()) add(f.paper_table_path);
+  if (f.input)
+    for (const std::string& p : f.input->InputFiles()) add(p);
   add(f.overrides_path);
 }
 

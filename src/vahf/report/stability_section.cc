@@ -26,16 +26,16 @@ nlohmann::json WarningCounts(const Warnings& w) {
 
 // The trials of one case under one integrator, in seed order.
 struct Cell {
-  const scene::StabilityCase* c = nullptr;
+  const experiment::StabilityCase* c = nullptr;
   std::string integrator;
   std::vector<const experiment::StabilityTrial*> trials;
 };
 
-std::vector<Cell> Cells(const scene::StabilityDesign& d,
+std::vector<Cell> Cells(const experiment::StabilityDesign& d,
                         const std::vector<experiment::StabilityTrial>& trials) {
   std::vector<Cell> out;
   for (const experiment::StabilityTrial& t : trials) {
-    const scene::StabilityCase& c = d.cases[t.case_index];
+    const experiment::StabilityCase& c = d.cases[t.case_index];
     const std::string& integrator = c.integrators[t.integrator_index];
     if (out.empty() || out.back().c != &c || out.back().integrator != integrator)
       out.push_back({&c, integrator, {}});
@@ -79,7 +79,7 @@ std::string CompactWarnings(const Warnings& w) {
 }
 
 std::vector<std::string> FailedCases(
-    const scene::StabilityDesign& d,
+    const experiment::StabilityDesign& d,
     const std::vector<experiment::StabilityTrial>& trials) {
   std::vector<bool> failed(d.cases.size(), false);
   for (const experiment::StabilityTrial& t : trials)
@@ -140,7 +140,7 @@ double RealTimeFactor(const sim::TrialResult& r) {
   return r.cpu_seconds > 0 ? r.end_time / r.cpu_seconds : 0.0;
 }
 
-nlohmann::json CaseJson(const scene::StabilityCase& c) {
+nlohmann::json CaseJson(const experiment::StabilityCase& c) {
   return {{"case", c.name},
           {"pointer", c.pointer},
           {"scene", c.scene_path},
@@ -169,7 +169,7 @@ struct TrialRecords {
 TrialRecords RecordTrials(const std::vector<Cell>& cells) {
   TrialRecords out;
   for (const Cell& cell : cells) {
-    const scene::StabilityCase& c = *cell.c;
+    const experiment::StabilityCase& c = *cell.c;
     if (out.cases.empty() || out.cases.back()["case"] != c.name)
       out.cases.push_back(CaseJson(c));
     nlohmann::json cell_trials = nlohmann::json::array();
@@ -241,7 +241,7 @@ constexpr const char* kLegend =
     "(stability_cost.csv, measured.json); over several seeds CPU is their sum.\n\n"
     "Why each trial ended:\n\n";
 
-std::string StabilityMarkdown(const scene::StabilityDesign& d,
+std::string StabilityMarkdown(const experiment::StabilityDesign& d,
                               const std::vector<experiment::StabilityTrial>& trials,
                               const std::vector<std::string>& failed) {
   std::string md = fmt::format(
@@ -260,7 +260,7 @@ std::string StabilityMarkdown(const scene::StabilityDesign& d,
   for (const Cell& cell : Cells(d, trials)) table.AddRow(CellMarkdown(cell));
   md += ToMarkdown(table) + kLegend;
   for (const experiment::StabilityTrial& t : trials) {
-    const scene::StabilityCase& c = d.cases[t.case_index];
+    const experiment::StabilityCase& c = d.cases[t.case_index];
     md +=
         fmt::format("- {}, {}{}: {} ({})\n", c.name, c.integrators[t.integrator_index],
                     c.seeds > 1 ? fmt::format(", seed {}", t.seed_index) : std::string(),
@@ -273,7 +273,7 @@ std::string StabilityMarkdown(const scene::StabilityDesign& d,
 
 Section StabilitySection(const scene::ExperimentFile& file,
                          const std::vector<experiment::StabilityTrial>& trials) {
-  const scene::StabilityDesign& d = file.stability;
+  const experiment::StabilityDesign& d = file.Input<experiment::StabilityDesign>();
   TrialRecords records = RecordTrials(Cells(d, trials));
   const std::vector<std::string> failed = FailedCases(d, trials);
   Section s;

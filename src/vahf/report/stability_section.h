@@ -20,7 +20,7 @@ std::string CompactWarnings(const Warnings& warnings);
 // The names of the cases with a trial that fails (StabilityTrial::failures),
 // in file order.
 std::vector<std::string> FailedCases(
-    const scene::StabilityDesign& design,
+    const experiment::StabilityDesign& design,
     const std::vector<experiment::StabilityTrial>& trials);
 
 // stability_trials.csv (a row per trial: deterministic), stability_cost.csv

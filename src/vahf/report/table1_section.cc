@@ -5,6 +5,7 @@
 #include <array>
 
 #include "vahf/experiment/instants.h"
+#include "vahf/experiment/table1_input.h"
 #include "vahf/experiment/table1_reference.h"
 #include "vahf/report/figure.h"
 #include "vahf/report/markdown.h"
@@ -179,8 +180,8 @@ std::string Table1Intro(const experiment::ExperimentRun& run, int completed) {
 Section Table1Section(const experiment::ExperimentRun& run) {
   const scene::Scene& scene = run.file->scene;
   std::optional<experiment::Table1> paper;
-  if (!run.file->paper_table_path.empty())
-    paper = experiment::LoadTable1(run.file->paper_table_path);
+  const std::string& table = run.file->Input<experiment::Table1Input>().paper_table_path;
+  if (!table.empty()) paper = experiment::LoadTable1(table);
   const InstantSamples samples = CollectInstants(run.run, scene);
   std::vector<std::string> parts;
   for (std::size_t i : scene.sequence) parts.push_back(scene.parts[i].name);

@@ -54,47 +54,22 @@ void ApplyOverrides(const ParameterOverrides& o, Scene* scene) {
   Check(o, *scene);
 }
 
+void ApplyOverridesExcept(const ParameterOverrides& o,
+                          const std::vector<std::pair<std::string, nlohmann::json>>& own,
+                          const std::string& also_own, Scene* scene) {
+  for (const auto& [name, value] : o.values) {
+    const bool kept =
+        name == also_own || std::any_of(own.begin(), own.end(),
+                                        [&](const auto& s) { return s.first == name; });
+    if (!kept) Set(o, name, value, scene);
+  }
+  Check(o, *scene);
+}
+
 void ApplyOverrides(const ParameterOverrides& o, ExperimentFile* file) {
   file->overrides_path = o.file;
   if (!file->scene_path.empty()) ApplyOverrides(o, &file->scene);
-  // assembly_time runs the scene once per listed operator: the reach rule must
-  // hold for each of them, as ReadOperators checks when the file is loaded.
-  for (const OperatorEntry& op : file->operators) {
-    const std::string violation =
-        file->scene.params.reach.Violation(op.arm_length, op.height);
-    if (!violation.empty())
-      throw InputError(o.file, "/parameters",
-                       "applied to scene '" + file->scene.name + "' with operator '" +
-                           op.name + "' of " + file->file,
-                       violation);
-  }
-  for (ConditionEntry& c : file->conditions) ApplyOverrides(o, &c.scene);
-  // What a precision setting or a stability case sets itself stays its own.
-  const auto apply_except =
-      [&](const std::vector<std::pair<std::string, nlohmann::json>>& own,
-          const std::string& also_own, Scene* scene) {
-        for (const auto& [name, value] : o.values) {
-          const bool kept = name == also_own ||
-                            std::any_of(own.begin(), own.end(),
-                                        [&](const auto& s) { return s.first == name; });
-          if (!kept) Set(o, name, value, scene);
-        }
-        Check(o, *scene);
-      };
-  PrecisionDesign& d = file->precision;
-  for (PrecisionScene& ps : d.scenes) {
-    ApplyOverrides(o, &ps.scene);
-    apply_except(d.reference.overrides, "", &ps.reference);
-    for (std::size_t k = 0; k < ps.settings.size(); ++k)
-      apply_except(d.settings[k].overrides, "", &ps.settings[k]);
-  }
-  if (!d.scenes.empty()) file->scene = d.scenes[0].scene;
-  // A stability case runs each of its integrators.
-  for (StabilityCase& c : file->stability.cases)
-    for (Scene& scene : c.scenes)
-      apply_except(c.overrides, "simulation/integrator", &scene);
-  if (!file->stability.cases.empty()) file->scene = file->stability.cases[0].scenes[0];
-  for (ExperimentFile& sub : file->experiments) ApplyOverrides(o, &sub);
+  if (file->input) file->input->ApplyOverrides(o, file);
 }
 
 }  // namespace vahf::scene

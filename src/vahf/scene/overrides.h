@@ -34,11 +34,16 @@ ParameterOverrides LoadOverrides(const std::string& path);
 // scene.
 void ApplyOverrides(const ParameterOverrides& overrides, Scene* scene);
 
-// The same for every scene an experiment runs: its scene, its working
-// conditions' scenes, a precision experiment's scenes with their reference
-// and settings (a setting keeps the values it sets itself: it is what the
-// experiment varies), and each experiment a paper run lists. The reach rule
-// is checked for each operator an assembly_time experiment lists, too.
+// The same, keeping what a kind's setting sets itself (it is what the
+// experiment varies): a value named in `own`, or `also_own`, is not set.
+void ApplyOverridesExcept(const ParameterOverrides& overrides,
+                          const std::vector<std::pair<std::string, nlohmann::json>>& own,
+                          const std::string& also_own, Scene* scene);
+
+// The same for every scene an experiment runs: its scene, then the scenes its
+// kind's input holds (KindInput::ApplyOverrides: working conditions, a
+// precision experiment's scenes with their reference and settings, a stability
+// case's scenes, each experiment a paper run lists).
 void ApplyOverrides(const ParameterOverrides& overrides, ExperimentFile* file);
 
 }  // namespace vahf::scene

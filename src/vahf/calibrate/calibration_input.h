@@ -1,0 +1,61 @@
+// The input of a calibrate experiment (docs/calibration.md): the parameters
+// fitted, the lab summaries they are fitted to and the fit's settings, in
+// stages, as its experiment file states them and its reader reads them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "vahf/scene/experiment_file.h"
+#include "vahf/scene/json_reader.h"
+#include "vahf/scene/shared_inputs.h"
+
+namespace vahf::calibrate {
+
+// A parameter a calibration fits: its name in the parameter table
+// ("guidance/kappa", a real-valued one), where the search starts and the
+// bounds it stays within (docs/calibration.md).
+struct FitParameter {
+  std::string name;
+  double start = 0, lower = 0, upper = 0;
+  std::string pointer;  // where the experiment file states it
+};
+
+// One stage of a calibration: parameters fitted to targets by a solver.
+struct CalibrationStage {
+  std::string name;     // the file's stage name; "" for a file of one stage
+  std::string pointer;  // where the file states it ("" for a file of one stage)
+  // "levenberg_marquardt" (Ceres) or "golden_section" (one parameter: GSL's bracketed
+  // golden-section minimisation of the same cost, for objectives that are piecewise
+  // constant in the parameter; Ceres then gives the covariance).
+  std::string solver = "levenberg_marquardt";
+  std::vector<FitParameter> parameters;
+  std::vector<scene::FitTarget> targets;
+};
+
+// Ceres least squares of parameters to a lab dataset's summaries
+// (calibrate/calibration.h), in stages: each stage starts from the scene with
+// every earlier stage's estimates (a sequential calibration).
+struct CalibrationDesign : scene::KindInputOf<CalibrationDesign> {
+  std::string lab_path;                  // the lab dataset's manifest
+  std::vector<CalibrationStage> stages;  // at least one
+  // Robust loss on the whitened residuals: "huber", "cauchy" or "none"; its
+  // scale in standard deviations (residuals beyond it are down-weighted).
+  std::string loss = "huber";
+  double loss_scale = 3.0;
+  double relative_step = 0.05;  // of each parameter's value, central differences
+  int max_iterations =
+      30;  // Levenberg-Marquardt (or golden-section) iterations per round
+  // golden_section: the search stops when the bracket is narrower than this fraction
+  // of the estimate.
+  double tolerance = 0.02;
+  // The hour of work that segment targets are read from (the file's
+  // "fatigue", as the fatigue kind reads it).
+  scene::FatigueDesign fatigue;
+};
+
+// calibrate: "lab", "fatigue", the fit's parameters, targets, stages and settings.
+void ReadCalibration(const scene::JsonNode& root, const std::string& path,
+                     scene::ExperimentFile* e);
+
+}  // namespace vahf::calibrate

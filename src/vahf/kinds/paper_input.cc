@@ -1,0 +1,41 @@
+#include "vahf/kinds/paper_input.h"
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <utility>
+
+#include "vahf/kinds/kind.h"
+#include "vahf/scene/overrides.h"
+
+namespace vahf::kinds {
+
+void PaperInput::ApplyOverrides(const scene::ParameterOverrides& o,
+                                scene::ExperimentFile*) {
+  for (scene::ExperimentFile& sub : experiments) scene::ApplyOverrides(o, &sub);
+}
+
+void ParsePaper(const scene::JsonNode& root, const std::string& path,
+                scene::ExperimentFile* e) {
+  auto input = std::make_unique<PaperInput>();
+  const scene::JsonNode list = root.Required("experiments");
+  const std::size_t n = list.ArraySize(1);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::string sub = scene::ResolvePath(list.At(k), path, "experiment");
+    // Checked before parsing, so a file listing itself cannot recurse.
+    const nlohmann::json doc = scene::ReadJsonFile(sub);
+    if (doc.is_object() && doc.contains("kind") && doc["kind"] == "paper")
+      list.At(k).Fail("a paper experiment cannot list another paper experiment");
+    scene::ExperimentFile x = ParseExperiment(doc, sub);
+    if (!FindKind(x.kind).design)
+      list.At(k).Fail(
+          fmt::format("{} is a {} experiment: a paper run lists designs of cycles "
+                      "(table1, assembly_time, human_factors_groups, fatigue, "
+                      "precision); run it on its own",
+                      sub, x.kind));
+    input->experiments.push_back(std::move(x));
+  }
+  e->input = core::ClonePtr<scene::KindInput>(std::move(input));
+}
+
+}  // namespace vahf::kinds

@@ -1,0 +1,68 @@
+// The parts of an experiment file that several kinds read the same way: an
+// operator (assembly_time's operators, a synthetic lab's), the hour of work
+// in segments (fatigue, and the segment targets of calibrate and compare) and
+// a lab summary to fit or compare (calibrate, compare).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "vahf/scene/json_reader.h"
+#include "vahf/scene/scene.h"
+
+namespace vahf::scene {
+
+// An operator of an assembly_time experiment: the scene's operator with this
+// stature and arm length (standing where the scene's operator stands).
+struct OperatorEntry {
+  std::string name;
+  std::string sex;        // "male" or "female"
+  double height = 0;      // m
+  double arm_length = 0;  // m
+  std::string source;     // where the dimensions come from
+};
+
+// Operators as an experiment file lists them (assembly_time's "operators":
+// name, sex, height, arm_length, source), checked against the scene's reach
+// rule; names unique.
+std::vector<OperatorEntry> ReadOperators(const JsonNode& node, const Scene& scene);
+
+// One hour of continuous cycles in segments (fatigue, paper Sec. 5.4).
+struct FatigueDesign {
+  double duration_min = 60.0;
+  int segments = 4;
+  int pilot_cycles = 0;  // cycles from A = 0 that measure the work rate; 0: `trials`
+};
+
+// "fatigue" of the file's root object; the defaults when it has none.
+FatigueDesign ReadFatigue(const JsonNode& root);
+
+// A lab summary a calibration fits (calibrate/targets.h): a quantity of one
+// part ("all": whole cycles), over all the lab's operators or each one's.
+struct FitTarget {
+  std::string quantity;      // "assembly_time" or "success_rate"
+  std::string part;          // a part of the scene's sequence, or "all"
+  bool by_operator = false;  // one target per lab operator instead of one over all
+  std::string pointer;       // where the experiment file states it
+  // compare: the equivalence margin, in the quantity's unit (s, or 1 for a
+  // rate): virtual and lab agree when their difference is shown within it.
+  double margin = 0;
+  // A segment of the hour of work (1-based; 0: none): the lab's value of that
+  // segment, against a fatigue design's (FatigueDesign of the same file).
+  int segment = 0;
+  // The lab's condition (series) to read, e.g. "real"; empty: any.
+  std::string condition;
+};
+
+// Lab summaries as a calibration's targets or a comparison's quantities name
+// them: quantity, part (of the scene's sequence, or "all"), by ("operator" or
+// "all"), segment (1-based) and condition (the lab's, not empty: without it,
+// any), and for a comparison (`margin`) the equivalence margin.
+std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, bool margin);
+
+// Segment targets or quantities lie within the fatigue design's hour; an
+// InputError naming `path` otherwise.
+void CheckSegments(const std::vector<FitTarget>& targets, const FatigueDesign& fatigue,
+                   const std::string& path);
+
+}  // namespace vahf::scene
