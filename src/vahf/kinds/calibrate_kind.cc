@@ -58,9 +58,9 @@ int RunCalibration(const scene::ExperimentFile& file, const RunContext& context)
       settings.seed, trials, options,
       [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
   const report::RunInfo info{settings.threads, SecondsSince(start)};
-  const report::RunOutput written =
-      WriteLabRun(file, lab, context, trials, " per lab operator and parameter vector",
-                  report::CalibrationSection(file, lab, stages), info);
+  const report::RunOutput written = WriteLabRun(
+      file, lab, context, trials, " per lab operator and parameter vector",
+      KindSection(context, report::CalibrationSection(file, lab, stages)), info);
   int evaluations = 0;
   for (const auto& r : stages) {
     evaluations += r.evaluations;

@@ -55,12 +55,12 @@ int RunComparison(const scene::ExperimentFile& file, const RunContext& context) 
       compare::Compare(file.scene, lab, file.Input<compare::ComparisonDesign>(),
                        file.file, settings.seed, trials, options, pilot_options);
   const report::RunInfo info{settings.threads, SecondsSince(start)};
-  const report::RunOutput written =
-      WriteLabRun(file, lab, context, trials,
-                  result.fatigue.run.conditions.empty() ? " per lab operator"
-                  : result.run.conditions.empty()       ? " per segment"
-                                                  : " per lab operator and per segment",
-                  report::ComparisonSection(file, lab, result, trials), info);
+  const report::RunOutput written = WriteLabRun(
+      file, lab, context, trials,
+      result.fatigue.run.conditions.empty() ? " per lab operator"
+      : result.run.conditions.empty()       ? " per segment"
+                                            : " per lab operator and per segment",
+      KindSection(context, report::ComparisonSection(file, lab, result, trials)), info);
   for (const auto& q : result.quantities)
     std::printf("%s: %s\n", q.target.label.c_str(), q.verdict.c_str());
   return FinishRun(file, context, info.wall_seconds, written);

@@ -16,10 +16,15 @@
 
 namespace vahf::kinds {
 
+struct Kind;
+
 // What a run needs besides its experiment file.
 struct RunContext {
   experiment::RunSettings settings;  // seed (resolved), trials override, threads
   report::OutputDirectory* directory = nullptr;  // created before any simulation
+  // The kind run (RunExperiment sets it): a run of its own names its section
+  // by it.
+  const Kind* kind = nullptr;
 };
 
 struct Kind {
@@ -47,6 +52,10 @@ struct Kind {
   // A run of its own (calibrate, compare): runs, writes the output directory,
   // prints what it found; returns the exit status. Null: a design's run.
   int (*run)(const scene::ExperimentFile& file, const RunContext& context) = nullptr;
+  // Whether `trials` is the file's cycles per condition (`vahf check` says
+  // so); false for a kind whose cycles are set otherwise (a paper run: each
+  // listed experiment's; stability: each case's seeds).
+  bool cycles_per_condition = true;
 };
 
 // Every kind, in the order docs/experiments.md presents them.

@@ -89,7 +89,9 @@ std::vector<Kind> OtherKinds() {
        ParsePaper,
        CheckPaper,
        PaperRun,
-       nullptr},
+       nullptr,
+       nullptr,
+       false},
       {"calibrate",
        "parameters fitted to a lab dataset (docs/calibration.md)",
        {"lab", "fatigue", "parameters", "targets", "loss", "relative_step",
@@ -117,7 +119,8 @@ std::vector<Kind> OtherKinds() {
        CheckStability,
        nullptr,
        nullptr,
-       RunStability},
+       RunStability,
+       false},
   };
 }
 
@@ -197,9 +200,9 @@ std::string CheckExperiment(const scene::ExperimentFile& file) {
   std::string out =
       fmt::format("experiment '{}' ({}): kind {}, seed {}{}\n", file.name, file.file,
                   file.kind, file.seed,
-                  file.kind == "paper" || file.kind == "stability"
-                      ? ""
-                      : fmt::format(", {} cycles per condition", file.trials));
+                  FindKind(file.kind).cycles_per_condition
+                      ? fmt::format(", {} cycles per condition", file.trials)
+                      : "");
   return out + FindKind(file.kind).check(file);
 }
 
@@ -213,7 +216,8 @@ experiment::ExperimentRun RunDesign(const scene::ExperimentFile& file,
 std::vector<report::Section> Sections(const experiment::ExperimentRun& run) {
   std::vector<report::Section> out;
   const auto add = [&](const experiment::ExperimentRun& r) {
-    out.push_back(report::SectionFor(r, FindKind(r.file->kind).analyse(r)));
+    const Kind& kind = FindKind(r.file->kind);
+    out.push_back(report::SectionFor(kind.name, r, kind.analyse(r)));
   };
   if (run.parts.empty()) add(run);
   for (const experiment::ExperimentRun& part : run.parts) add(part);
@@ -223,7 +227,11 @@ std::vector<report::Section> Sections(const experiment::ExperimentRun& run) {
 int RunExperiment(const scene::ExperimentFile& file, const RunContext& context) {
   const Kind& kind = FindKind(file.kind);
   kind.check(file);  // what check rejects fails now, before any trial
-  if (kind.run) return kind.run(file, context);
+  if (kind.run) {
+    RunContext own = context;
+    own.kind = &kind;
+    return kind.run(file, own);
+  }
   const auto start = std::chrono::steady_clock::now();
   const experiment::ExperimentRun run = RunDesign(file, context.settings);
   const report::RunInfo info{context.settings.threads, SecondsSince(start)};

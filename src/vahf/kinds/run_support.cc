@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "vahf/core/error.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/sim/trial_model.h"
 
@@ -49,6 +50,12 @@ std::string DescribeSceneModels(const scene::Scene& scene) {
     if (m->operator_acts) out += DescribeHand(*m);
   }
   return out;
+}
+
+report::Section KindSection(const RunContext& context, report::Section section) {
+  VAHF_CHECK(context.kind != nullptr, "a kind's own run without its kind");
+  section.kind = context.kind->name;
+  return section;
 }
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {

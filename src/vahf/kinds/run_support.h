@@ -16,6 +16,10 @@ namespace vahf::kinds {
 // before its first trial (what only building can reject is rejected now).
 std::string DescribeSceneModels(const scene::Scene& scene);
 
+// The section of a kind with a run of its own, named by its kind (the key of
+// its part of summary.json).
+report::Section KindSection(const RunContext& context, report::Section section);
+
 double SecondsSince(std::chrono::steady_clock::time_point start);
 
 // Prints "NAME: KIND, seed S, X s on T thread(s)[, detail]", the results

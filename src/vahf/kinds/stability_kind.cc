@@ -62,7 +62,8 @@ int RunStability(const scene::ExperimentFile& file, const RunContext& context) {
       file.scene.params.simulation.accuracy);
   if (!file.overrides_path.empty()) h.inputs.push_back(file.overrides_path);
   const report::RunOutput written = report::WriteSections(
-      h, {report::StabilitySection(file, trials)}, *context.directory, info);
+      h, {KindSection(context, report::StabilitySection(file, trials))},
+      *context.directory, info);
   const std::vector<std::string> failed =
       report::FailedCases(file.Input<experiment::StabilityDesign>(), trials);
   const int status = FinishRun(

@@ -262,7 +262,6 @@ Section AssemblyTimeSection(const experiment::ExperimentRun& run) {
   const scene::Scene& scene = run.file->scene;
   const AssemblyTimes times = CollectTimes(run.run, scene.sequence.size());
   Section out;
-  out.kind = "assembly_time";
   out.tables.emplace_back("assembly_time_cycles.csv", CyclesTable(run.run));
   DescribeOperators(run.run, times, &out);
   DescribeParts(scene, times, &out);

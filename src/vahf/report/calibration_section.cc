@@ -242,7 +242,6 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
       "`vahf run EXPERIMENT --overrides {}` runs any experiment with them.\n\n",
       kOverridesFile, kOverridesFile);
   Section out;
-  out.kind = "calibrate";
   out.tables.emplace_back("calibrate_parameters.csv", std::move(t.params));
   out.tables.emplace_back("calibrate_targets.csv", std::move(t.targets));
   out.tables.emplace_back("calibrate_covariance.csv", std::move(t.covariance));

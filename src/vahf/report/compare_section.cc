@@ -311,7 +311,6 @@ MarkdownTable UnitTable(const std::string& unit) {
 Section ComparisonSection(const scene::ExperimentFile& file, const data::LabDataset& lab,
                           const compare::ComparisonResult& r, int trials) {
   Section out;
-  out.kind = "compare";
   Table t = QuantitiesTable();
   nlohmann::json quantities = nlohmann::json::array();
   std::string md = CompareIntro(file, lab, r, trials);

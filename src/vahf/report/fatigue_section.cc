@@ -225,7 +225,6 @@ Section FatigueSection(const experiment::ExperimentRun& run) {
       ns ? human::FatigueCoefficient(d.conditions[ns - 1].work_end, a_max) : 1.0;
   const SegmentOutcomes outcomes = CountSegments(d);
   Section out;
-  out.kind = "fatigue";
   out.tables.emplace_back("fatigue_cycles.csv", CyclesTable(d));
   out.tables.emplace_back("fatigue_pilot_cycles.csv", CyclesTable(run.pilot));
   DescribeSegments(run, outcomes, &out);

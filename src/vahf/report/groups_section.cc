@@ -209,7 +209,6 @@ Section HumanFactorsGroupsSection(const experiment::ExperimentRun& run) {
   const experiment::GroupsInput& groups = run.file->Input<experiment::GroupsInput>();
   const InstantFactors factors = CollectFactors(d, groups);
   Section out;
-  out.kind = "human_factors_groups";
   out.tables.emplace_back("human_factors_groups_cycles.csv", CyclesTable(d));
   out.tables.emplace_back("human_factors_groups_samples.csv", factors.rows);
   DescribeMeans(d, groups, factors, &out);

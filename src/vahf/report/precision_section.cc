@@ -556,7 +556,6 @@ Section PrecisionSection(const experiment::ExperimentRun& run) {
   nlohmann::json measured_scenes = nlohmann::json::array();
   nlohmann::json recommended = nlohmann::json::object();
   Section out;
-  out.kind = "precision";
   out.markdown = PrecisionIntro(d);
   for (const SceneData& sd : Collect(run)) {
     const std::string& name = sd.scene->scene.name;

@@ -89,8 +89,10 @@ Table CyclesTable(const experiment::DesignRun& run) {
   return t;
 }
 
-Section SectionFor(const experiment::ExperimentRun& run, Section analysis) {
+Section SectionFor(const std::string& kind, const experiment::ExperimentRun& run,
+                   Section analysis) {
   Section out = std::move(analysis);
+  out.kind = kind;
   out.summary["health"] = HealthJson(run.run);
   out.markdown += HealthMarkdown(run.run);
   // A kind that measures its own cost (precision: per setting, whose trials
@@ -99,7 +101,7 @@ Section SectionFor(const experiment::ExperimentRun& run, Section analysis) {
     Table cost = CostTable(run.run);
     out.markdown += CostMarkdown(cost);
     out.measured = {{"cost", CostJson(cost)}};
-    out.measured_tables.emplace_back(run.file->kind + "_cost.csv", std::move(cost));
+    out.measured_tables.emplace_back(kind + "_cost.csv", std::move(cost));
   }
   return out;
 }

@@ -87,12 +87,14 @@ Section FatigueSection(const experiment::ExperimentRun& run);
 // Error against run time of each setting (report/precision.h).
 Section PrecisionSection(const experiment::ExperimentRun& run);
 
-// The section of a design of cycles: its kind's analysis (one of the above,
+// The section of a design of cycles of kind `kind` (the registry's name, which
+// keys the section in summary.json): its kind's analysis (one of the above,
 // as the kind registry, kinds/kind.h, pairs them) with the run's numerical
 // health (health.h) in summary["health"] and at the end of its markdown, and,
 // but for a kind that measures its cost itself (precision, per setting: its
 // `measured` is set), what its trials cost (cost.h) as a measured table
 // KIND_cost.csv, measured.json and markdown.
-Section SectionFor(const experiment::ExperimentRun& run, Section analysis);
+Section SectionFor(const std::string& kind, const experiment::ExperimentRun& run,
+                   Section analysis);
 
 }  // namespace vahf::report

@@ -277,7 +277,6 @@ Section StabilitySection(const scene::ExperimentFile& file,
   TrialRecords records = RecordTrials(Cells(d, trials));
   const std::vector<std::string> failed = FailedCases(d, trials);
   Section s;
-  s.kind = "stability";
   s.tables.emplace_back("stability_trials.csv", std::move(records.table));
   s.measured_tables.emplace_back("stability_cost.csv", std::move(records.cost));
   s.summary = {{"claims", nlohmann::json::array()},

@@ -200,7 +200,6 @@ Section Table1Section(const experiment::ExperimentRun& run) {
     claims.push_back(EtaRiseClaim(parts[p], samples.eta_rise[p]));
   }
   Section out;
-  out.kind = "table1";
   out.tables = {{"table1_cycles.csv", CyclesTable(run.run)},
                 {"table1_instants.csv", samples.rows},
                 {"table1_means.csv", means}};
