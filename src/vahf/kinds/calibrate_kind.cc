@@ -9,12 +9,13 @@
 
 #include "vahf/calibrate/calibration.h"
 #include "vahf/calibrate/targets.h"
-#include "vahf/kinds/kind_functions.h"
+#include "vahf/kinds/kind.h"
 #include "vahf/kinds/lab_run.h"
 #include "vahf/kinds/run_support.h"
 #include "vahf/report/calibration_section.h"
 
 namespace vahf::kinds {
+namespace {
 
 // The lab dataset and the targets it must supply, as a run reads them before
 // its first trial, and the scene's trial models.
@@ -73,6 +74,20 @@ int RunCalibration(const scene::ExperimentFile& file, const RunContext& context)
   std::printf("overrides: %s/%s\n", context.directory->path().c_str(),
               report::kOverridesFile);
   return status;
+}
+
+}  // namespace
+
+Kind CalibrateKind() {
+  Kind k;
+  k.name = "calibrate";
+  k.summary = "parameters fitted to a lab dataset (docs/calibration.md)";
+  k.keys = {"lab",           "fatigue",        "parameters", "targets", "loss",
+            "relative_step", "max_iterations", "tolerance",  "solver",  "stages"};
+  k.parse = calibrate::ReadCalibration;
+  k.check = CheckCalibration;
+  k.run = RunCalibration;
+  return k;
 }
 
 }  // namespace vahf::kinds

@@ -7,12 +7,13 @@
 
 #include "vahf/calibrate/targets.h"
 #include "vahf/compare/comparison.h"
-#include "vahf/kinds/kind_functions.h"
+#include "vahf/kinds/kind.h"
 #include "vahf/kinds/lab_run.h"
 #include "vahf/kinds/run_support.h"
 #include "vahf/report/compare_section.h"
 
 namespace vahf::kinds {
+namespace {
 
 // The lab's side of every quantity, as a run reads it before simulating, and
 // the scene's trial models.
@@ -64,6 +65,19 @@ int RunComparison(const scene::ExperimentFile& file, const RunContext& context) 
   for (const auto& q : result.quantities)
     std::printf("%s: %s\n", q.target.label.c_str(), q.verdict.c_str());
   return FinishRun(file, context, info.wall_seconds, written);
+}
+
+}  // namespace
+
+Kind CompareKind() {
+  Kind k;
+  k.name = "compare";
+  k.summary = "a virtual design against a lab dataset (docs/calibration.md)";
+  k.keys = {"lab", "fatigue", "quantities"};
+  k.parse = compare::ReadComparison;
+  k.check = CheckComparison;
+  k.run = RunComparison;
+  return k;
 }
 
 }  // namespace vahf::kinds

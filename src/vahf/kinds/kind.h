@@ -1,9 +1,11 @@
-// The experiment kinds, each registered once (kinds/registry.cc): the keys of
+// The experiment kinds, each registered once (kinds/kinds.def lists them; each
+// defines its entry, `Kind XKind()`, in its own kinds/*_kind.cc): the keys of
 // an experiment file it reads and how (each kind's reader, beside its input), what
 // `vahf check` validates and says of it, and how `vahf run` runs, analyses and
 // renders it. This is the top layer of the library: it sits above experiment/
 // (designs of cycles), calibrate/, compare/ and report/, and the vahf command
-// reaches every kind through it. A new kind is one entry of the table.
+// reaches every kind through it. A new kind is its line in kinds.def and its
+// own files.
 #pragma once
 
 #include <string>

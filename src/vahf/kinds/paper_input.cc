@@ -15,6 +15,19 @@ void PaperInput::ApplyOverrides(const scene::ParameterOverrides& o,
   for (scene::ExperimentFile& sub : experiments) scene::ApplyOverrides(o, &sub);
 }
 
+namespace {
+
+// "table1, assembly_time, ...": the kinds a paper run may list, the designs of
+// cycles with an analysis of their own (the paper run itself has none).
+std::string DesignNames() {
+  std::string out;
+  for (const Kind& k : Kinds())
+    if (k.design && k.analyse) out += (out.empty() ? "" : ", ") + k.name;
+  return out;
+}
+
+}  // namespace
+
 void ParsePaper(const scene::JsonNode& root, const std::string& path,
                 scene::ExperimentFile* e) {
   auto input = std::make_unique<PaperInput>();
@@ -28,11 +41,10 @@ void ParsePaper(const scene::JsonNode& root, const std::string& path,
       list.At(k).Fail("a paper experiment cannot list another paper experiment");
     scene::ExperimentFile x = ParseExperiment(doc, sub);
     if (!FindKind(x.kind).design)
-      list.At(k).Fail(
-          fmt::format("{} is a {} experiment: a paper run lists designs of cycles "
-                      "(table1, assembly_time, human_factors_groups, fatigue, "
-                      "precision); run it on its own",
-                      sub, x.kind));
+      list.At(k).Fail(fmt::format(
+          "{} is a {} experiment: a paper run lists designs of cycles ({}); run it on "
+          "its own",
+          sub, x.kind, DesignNames()));
     input->experiments.push_back(std::move(x));
   }
   e->input = core::ClonePtr<scene::KindInput>(std::move(input));

@@ -1,137 +1,30 @@
-// The experiment kinds: one entry each (kind.h). docs/experiments.md describes
-// them; docs/scene-format.md, "Experiment files", their keys.
+// The experiment kinds: one entry each (kind.h), defined in the kind's own
+// file and listed once in kinds.def. docs/kinds.md indexes them (`vahf kinds`);
+// docs/scene-format.md, "Experiment files", gives the common keys.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
 #include <utility>
 
-#include "vahf/calibrate/calibration_input.h"
-#include "vahf/compare/comparison_input.h"
 #include "vahf/core/error.h"
-#include "vahf/experiment/assembly_time_input.h"
-#include "vahf/experiment/fatigue_input.h"
-#include "vahf/experiment/groups_input.h"
-#include "vahf/experiment/precision_input.h"
-#include "vahf/experiment/stability_input.h"
-#include "vahf/experiment/table1_input.h"
-#include "vahf/kinds/kind_functions.h"
-#include "vahf/kinds/paper_input.h"
+#include "vahf/kinds/kind.h"
 #include "vahf/kinds/run_support.h"
 #include "vahf/report/run_output.h"
 #include "vahf/scene/json_reader.h"
 
 namespace vahf::kinds {
 
-namespace {
-
-// The designs of cycles, each analysed into a report section (a paper run
-// lists only these).
-std::vector<Kind> DesignKinds() {
-  using namespace experiment;
-  using namespace report;
-  using namespace scene;
-  return {
-      {"table1",
-       "Table 1: V, f, r, g, eta, lambda_c and Psi_c at the paper's instants",
-       {"paper_table"},
-       "",
-       ReadTable1,
-       CheckOneScene,
-       Table1Run,
-       Table1Section},
-      {"assembly_time",
-       "assembly time per operator (Sec. 5.2)",
-       {"operators"},
-       "",
-       ReadAssemblyTime,
-       CheckOneScene,
-       AssemblyTimeRun,
-       AssemblyTimeSection},
-      {"human_factors_groups",
-       "human factors per working condition (Sec. 5.3)",
-       {"conditions", "instants_s", "paper_cycle_s"},
-       "",
-       ReadHumanFactorsGroups,
-       CheckGroups,
-       HumanFactorsGroupsRun,
-       HumanFactorsGroupsSection},
-      {"fatigue",
-       "success rate and time over an hour of work (Sec. 5.4)",
-       {"fatigue"},
-       "",
-       ReadFatigueExperiment,
-       CheckOneScene,
-       FatigueExperimentRun,
-       FatigueSection},
-      {"precision",
-       "error against run time of integrators and model settings",
-       {"scenes", "reference", "settings", "noise_trials"},
-       "a precision experiment names its scenes in \"scenes\"",
-       ReadPrecision,
-       CheckPrecision,
-       PrecisionRun,
-       PrecisionSection},
-  };
-}
-
-// The kinds that are no single design: a paper run of designs, and the kinds
-// with a run of their own.
-std::vector<Kind> OtherKinds() {
-  using namespace experiment;
-  using namespace report;
-  using namespace scene;
-  return {
-      {"paper",
-       "the paper's experiments, one report",
-       {"experiments"},
-       "a paper experiment takes its scenes from the experiments it lists",
-       ParsePaper,
-       CheckPaper,
-       PaperRun,
-       nullptr,
-       nullptr,
-       false},
-      {"calibrate",
-       "parameters fitted to a lab dataset (docs/calibration.md)",
-       {"lab", "fatigue", "parameters", "targets", "loss", "relative_step",
-        "max_iterations", "tolerance", "solver", "stages"},
-       "",
-       calibrate::ReadCalibration,
-       CheckCalibration,
-       nullptr,
-       nullptr,
-       RunCalibration},
-      {"compare",
-       "a virtual design against a lab dataset (docs/calibration.md)",
-       {"lab", "fatigue", "quantities"},
-       "",
-       compare::ReadComparison,
-       CheckComparison,
-       nullptr,
-       nullptr,
-       RunComparison},
-      {"stability",
-       "stiff and extreme cases across integrators, each with its expected outcome",
-       {"integrators", "cases"},
-       "a stability experiment names a scene in each of its \"cases\"",
-       ReadStability,
-       CheckStability,
-       nullptr,
-       nullptr,
-       RunStability,
-       false},
-  };
-}
-
-}  // namespace
+#define VAHF_KIND(F) Kind F();
+#include "vahf/kinds/kinds.def"
+#undef VAHF_KIND
 
 const std::vector<Kind>& Kinds() {
-  static const std::vector<Kind> kinds = [] {
-    std::vector<Kind> all = DesignKinds();
-    for (Kind& k : OtherKinds()) all.push_back(std::move(k));
-    return all;
-  }();
+  static const std::vector<Kind> kinds = {
+#define VAHF_KIND(F) F(),
+#include "vahf/kinds/kinds.def"
+#undef VAHF_KIND
+  };
   return kinds;
 }
 

@@ -52,6 +52,10 @@ std::string DescribeSceneModels(const scene::Scene& scene) {
   return out;
 }
 
+std::string CheckOneScene(const scene::ExperimentFile& file) {
+  return DescribeSceneModels(file.scene);
+}
+
 report::Section KindSection(const RunContext& context, report::Section section) {
   VAHF_CHECK(context.kind != nullptr, "a kind's own run without its kind");
   section.kind = context.kind->name;

@@ -15,6 +15,9 @@ namespace vahf::kinds {
 // The scene's description and its trial models, built as a run builds them
 // before its first trial (what only building can reject is rejected now).
 std::string DescribeSceneModels(const scene::Scene& scene);
+// The check of a kind that runs the file's one scene (table1, assembly_time,
+// fatigue): DescribeSceneModels of it.
+std::string CheckOneScene(const scene::ExperimentFile& file);
 
 // The section of a kind with a run of its own, named by its kind (the key of
 // its part of summary.json).

@@ -11,12 +11,13 @@
 
 #include "vahf/core/error.h"
 #include "vahf/experiment/stability_design.h"
-#include "vahf/kinds/kind_functions.h"
+#include "vahf/kinds/kind.h"
 #include "vahf/kinds/run_support.h"
 #include "vahf/report/stability_section.h"
 #include "vahf/sim/trial_model.h"
 
 namespace vahf::kinds {
+namespace {
 
 // The expected classes (trial status names, which the scene layer does not
 // know), and every case's trial model under every integrator.
@@ -75,6 +76,22 @@ int RunStability(const scene::ExperimentFile& file, const RunContext& context) {
   std::fprintf(stderr, "vahf: error: stability: %zu case(s) failed (results kept): %s\n",
                failed.size(), fmt::format("{}", fmt::join(failed, ", ")).c_str());
   return kExitComputationFailure;  // a failed case: the suite's computation failed
+}
+
+}  // namespace
+
+Kind StabilityKind() {
+  Kind k;
+  k.name = "stability";
+  k.summary =
+      "stiff and extreme cases across integrators, each with its expected outcome";
+  k.keys = {"integrators", "cases"};
+  k.scene_elsewhere = "a stability experiment names a scene in each of its \"cases\"";
+  k.parse = experiment::ReadStability;
+  k.check = CheckStability;
+  k.run = RunStability;
+  k.cycles_per_condition = false;  // each case's seeds per integrator
+  return k;
 }
 
 }  // namespace vahf::kinds
