@@ -98,8 +98,6 @@ ERROR_PREFIX = "vahf: error: "
 
 FORMATS = ["vahf-scene/1", "vahf-experiment/1", "vahf-lab/1", "vahf-overrides/1",
            "vahf-synthetic/1", "vahf-scene/2", "vahf-scene", "VAHF-SCENE/1", "", "scene"]
-KINDS = ["table1", "assembly_time", "human_factors_groups", "fatigue", "precision", "paper",
-         "calibrate", "compare", "stability", "", "Table1"]
 
 
 def registry_names(param):
@@ -115,6 +113,19 @@ def registry_names(param):
 
 
 INTEGRATORS = registry_names("simulation/integrator")
+
+
+def kind_names():
+    """The experiment kinds as docs/kinds.md (`vahf kinds`, the registry's
+    output: src/vahf/kinds/kinds.def) lists them, in its order."""
+    with open(os.path.join(REPO, "docs", "kinds.md"), encoding="utf-8") as f:
+        names = re.findall(r"^\| `([a-z_0-9]+)` \|", f.read(), re.M)
+    if not names:
+        sys.exit("fuzz_inputs.py: docs/kinds.md lists no kinds")
+    return names
+
+
+KINDS = kind_names() + ["", "Table1"]
 ENUMS = {
     "role": ["base", "assembling", "assembled", "fixed", ""],
     "sex": ["male", "female", "unspecified", "other", ""],

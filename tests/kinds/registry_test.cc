@@ -5,9 +5,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "support/test_files.h"
 #include "vahf/core/error.h"
@@ -20,7 +23,9 @@ namespace vahf::kinds {
 namespace {
 
 using ::nlohmann::json;
+using ::testing::Contains;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 std::string Source(const std::string& relative) {
   return std::string(VAHF_SOURCE_DIR) + "/" + relative;
@@ -68,6 +73,7 @@ TEST(KindRegistryTest, EveryKindIsRegisteredOnceWithWhatItsStagesNeed) {
     EXPECT_FALSE(k.summary.empty()) << k.name;
     EXPECT_NE(k.parse, nullptr) << k.name;
     EXPECT_NE(k.check, nullptr) << k.name;
+    EXPECT_FALSE(k.doc.empty()) << k.name;  // docs/kinds.md links it
     // Either a design of cycles with its analysis (the paper run analyses its
     // parts), or a run of its own; never both, never neither.
     EXPECT_NE(k.design == nullptr, k.run == nullptr) << k.name;
@@ -76,28 +82,66 @@ TEST(KindRegistryTest, EveryKindIsRegisteredOnceWithWhatItsStagesNeed) {
     }
     EXPECT_EQ(&FindKind(k.name), &k);
   }
-  EXPECT_EQ(names, (std::set<std::string>{"table1", "assembly_time",
-                                          "human_factors_groups", "fatigue", "precision",
-                                          "paper", "calibrate", "compare", "stability"}));
+}
+
+// The kinds of the shipped experiments (experiments/*.json), each once.
+std::set<std::string> ShippedKinds() {
+  std::set<std::string> out;
+  for (const auto& entry : std::filesystem::directory_iterator(Source("experiments"))) {
+    if (entry.path().extension() != ".json") continue;
+    std::ifstream in(entry.path());
+    const json doc = json::parse(in);
+    if (doc.value("format", "") == "vahf-experiment/1") out.insert(doc.value("kind", ""));
+  }
+  return out;
+}
+
+// The kinds docs/kinds.md lists, in its order: the first cell of each row.
+std::vector<std::string> DocumentedKinds() {
+  std::ifstream in(Source("docs/kinds.md"));
+  std::vector<std::string> out;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("| `", 0) == 0) out.push_back(line.substr(3, line.find('`', 3) - 3));
+  return out;
+}
+
+// Every registered kind has a shipped example and a line in docs/kinds.md, in
+// the registry's order; no shipped experiment names a kind that is not there.
+TEST(KindRegistryTest, TheShippedExperimentsAndTheDocsNameTheRegisteredKinds) {
+  const std::vector<std::string> names = KindNames();
+  EXPECT_EQ(ShippedKinds(), std::set<std::string>(names.begin(), names.end()));
+  EXPECT_EQ(DocumentedKinds(), names);
+}
+
+TEST(KindRegistryTest, TheKindIndexIsCurrent) {
+  std::ifstream in(Source("docs/kinds.md"));
+  ASSERT_TRUE(in) << "docs/kinds.md is missing";
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), KindIndexMarkdown())
+      << "docs/kinds.md is out of date: regenerate it with `vahf kinds > docs/kinds.md`";
 }
 
 TEST(KindRegistryTest, EveryShippedExperimentLoadsWithARegisteredKind) {
-  for (const char* f :
-       {"table1", "assembly_time", "human_factors_groups", "fatigue", "precision",
-        "paper", "calibrate_paper", "compare_paper", "stability"}) {
-    const scene::ExperimentFile e = LoadExperiment(Source("experiments/") + f + ".json");
-    EXPECT_EQ(FindKind(e.kind).name, e.kind) << f;
+  for (const auto& entry : std::filesystem::directory_iterator(Source("experiments"))) {
+    if (entry.path().extension() != ".json") continue;
+    std::ifstream in(entry.path());
+    if (json::parse(in).value("format", "") != "vahf-experiment/1") continue;
+    const scene::ExperimentFile e = LoadExperiment(entry.path().string());
+    EXPECT_EQ(FindKind(e.kind).name, e.kind) << entry.path();
   }
 }
 
 TEST(KindRegistryTest, AnUnregisteredKindNamesTheRegisteredOnes) {
   const std::string path =
       Write("planned.json",
-            Experiment("sensitivity", Source("experiments/scenes/peg_in_hole.json"), 1));
+            Experiment("no_such_kind", Source("experiments/scenes/peg_in_hole.json"), 1));
+  // The example is a name no kind may take.
+  ASSERT_THAT(KindNames(), Not(Contains("no_such_kind")));
   const std::string message = ErrorOf([&] { LoadExperiment(path); });
   EXPECT_THAT(message, HasSubstr(path));
   EXPECT_THAT(message, HasSubstr("/kind"));
-  EXPECT_THAT(message, HasSubstr("sensitivity"));
+  EXPECT_THAT(message, HasSubstr("no_such_kind"));
   for (const Kind& k : Kinds()) EXPECT_THAT(message, HasSubstr(k.name));
 }
 

@@ -366,6 +366,11 @@ int main(int argc, char** argv) {
   CLI::App* params = app.add_subcommand(
       "params", "Print every model parameter with its unit, rule and default (Markdown)");
 
+  CLI::App* kind_index = app.add_subcommand(
+      "kinds",
+      "Print every experiment kind with its summary, keys, scenes and docs link "
+      "(Markdown: docs/kinds.md)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -388,6 +393,10 @@ int main(int argc, char** argv) {
     if (*synthesize) return Synthesize(synth_args);
     if (*params) {
       std::fputs(vahf::scene::ParameterTableMarkdown().c_str(), stdout);
+      return 0;
+    }
+    if (*kind_index) {
+      std::fputs(vahf::kinds::KindIndexMarkdown().c_str(), stdout);
       return 0;
     }
   } catch (const vahf::InputError& e) {

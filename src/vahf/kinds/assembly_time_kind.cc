@@ -12,6 +12,7 @@ Kind AssemblyTimeKind() {
   Kind k;
   k.name = "assembly_time";
   k.summary = "assembly time per operator (Sec. 5.2)";
+  k.doc = "experiments.md#assembly_time-sec-52-figs-11-12";
   k.keys = {"operators"};
   k.parse = experiment::ReadAssemblyTime;
   k.check = CheckOneScene;

@@ -82,6 +82,7 @@ Kind CalibrateKind() {
   Kind k;
   k.name = "calibrate";
   k.summary = "parameters fitted to a lab dataset (docs/calibration.md)";
+  k.doc = "calibration.md#the-calibrate-kind";
   k.keys = {"lab",           "fatigue",        "parameters", "targets", "loss",
             "relative_step", "max_iterations", "tolerance",  "solver",  "stages"};
   k.parse = calibrate::ReadCalibration;

@@ -73,6 +73,7 @@ Kind CompareKind() {
   Kind k;
   k.name = "compare";
   k.summary = "a virtual design against a lab dataset (docs/calibration.md)";
+  k.doc = "experiments.md#compare-virtual-against-a-lab-dataset";
   k.keys = {"lab", "fatigue", "quantities"};
   k.parse = compare::ReadComparison;
   k.check = CheckComparison;

@@ -12,6 +12,7 @@ Kind FatigueKind() {
   Kind k;
   k.name = "fatigue";
   k.summary = "success rate and time over an hour of work (Sec. 5.4)";
+  k.doc = "experiments.md#fatigue-sec-54-figs-15-16";
   k.keys = {"fatigue"};
   k.parse = experiment::ReadFatigueExperiment;
   k.check = CheckOneScene;

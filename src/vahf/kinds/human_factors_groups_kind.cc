@@ -28,6 +28,7 @@ Kind HumanFactorsGroupsKind() {
   Kind k;
   k.name = "human_factors_groups";
   k.summary = "human factors per working condition (Sec. 5.3)";
+  k.doc = "experiments.md#human_factors_groups-sec-53-figs-13-14";
   k.keys = {"conditions", "instants_s", "paper_cycle_s"};
   k.parse = experiment::ReadHumanFactorsGroups;
   k.check = CheckGroups;

@@ -31,7 +31,11 @@ struct RunContext {
 
 struct Kind {
   std::string name;
-  std::string summary;  // one line: what it runs and shows (docs/experiments.md)
+  std::string summary;  // one line: what it runs and shows (docs/kinds.md)
+  // Where the docs describe it, relative to docs/: its own page
+  // "kinds/NAME.md", or the section of a page ("experiments.md#table1-...");
+  // docs/kinds.md links it.
+  std::string doc;
   // The keys of an experiment file it reads besides the common ones (format,
   // name, description, kind, seed, trials, scene); a key only other kinds read
   // is an error that names them.
@@ -60,12 +64,16 @@ struct Kind {
   bool cycles_per_condition = true;
 };
 
-// Every kind, in the order docs/experiments.md presents them.
+// Every kind, in the order of kinds.def (docs/kinds.md's).
 const std::vector<Kind>& Kinds();
 std::vector<std::string> KindNames();
 // The kind named `name`; a program error when there is none (the file's kind
 // was checked against KindNames when it was read).
 const Kind& FindKind(const std::string& name);
+
+// docs/kinds.md: every kind's name, summary, keys, scenes and docs link, as
+// `vahf kinds` prints it.
+std::string KindIndexMarkdown();
 
 // Reads an experiment file: the common fields, the scene, then its kind's
 // keys; errors name whichever file holds the fault.

@@ -41,6 +41,7 @@ Kind PaperKind() {
   Kind k;
   k.name = "paper";
   k.summary = "the paper's experiments, one report";
+  k.doc = "experiments.md";
   k.keys = {"experiments"};
   k.scene_elsewhere = "a paper experiment takes its scenes from the experiments it lists";
   k.parse = ParsePaper;

@@ -30,6 +30,7 @@ Kind PrecisionKind() {
   Kind k;
   k.name = "precision";
   k.summary = "error against run time of integrators and model settings";
+  k.doc = "experiments.md#precision-error-against-run-time";
   k.keys = {"scenes", "reference", "settings", "noise_trials"};
   k.scene_elsewhere = "a precision experiment names its scenes in \"scenes\"";
   k.parse = experiment::ReadPrecision;

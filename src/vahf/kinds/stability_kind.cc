@@ -85,6 +85,7 @@ Kind StabilityKind() {
   k.name = "stability";
   k.summary =
       "stiff and extreme cases across integrators, each with its expected outcome";
+  k.doc = "experiments.md#stability-stiff-and-extreme-cases-across-integrators";
   k.keys = {"integrators", "cases"};
   k.scene_elsewhere = "a stability experiment names a scene in each of its \"cases\"";
   k.parse = experiment::ReadStability;

@@ -12,6 +12,7 @@ Kind Table1Kind() {
   Kind k;
   k.name = "table1";
   k.summary = "Table 1: V, f, r, g, eta, lambda_c and Psi_c at the paper's instants";
+  k.doc = "experiments.md#table1-paper-sec-4-table-1";
   k.keys = {"paper_table"};
   k.parse = experiment::ReadTable1;
   k.check = CheckOneScene;
