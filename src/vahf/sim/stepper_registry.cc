@@ -1,14 +1,41 @@
 #include "vahf/sim/stepper_registry.h"
 
+#include <type_traits>
+
 #include "vahf/core/error.h"
-#include "vahf/sim/internal/cvode_stepper.h"
-#include "vahf/sim/internal/integrators.h"
 
 namespace vahf::sim {
+
+using scene::StepperNeeds;
+
+namespace internal {
+
+// The function type of a factory of each kind.
+template <StepperNeeds needs>
+struct FactoryOf;
+template <>
+struct FactoryOf<StepperNeeds::kSimbodySystem> {
+  using Type = std::remove_pointer_t<IntegratorFactory>;
+};
+template <>
+struct FactoryOf<StepperNeeds::kOwnRightHandSide> {
+  using Type = std::remove_pointer_t<Driver>;
+};
+
+// Every factory scene/steppers.def names, declared with the type its needs
+// name, so no stepper has a header for this file to include. A factory
+// defined with the other kind's signature is another function: the build
+// fails at link time, naming the declared one it does not find.
+#define VAHF_STEPPER(name, needs, factory, description) \
+  FactoryOf<StepperNeeds::needs>::Type factory;
+#include "vahf/scene/steppers.def"
+#undef VAHF_STEPPER
+
+}  // namespace internal
+
 namespace {
 
 using namespace internal;  // the factories
-using scene::StepperNeeds;
 
 // An entry of scene/steppers.def with its factory, which must be the kind its
 // needs name: a mismatch does not compile.
