@@ -13,6 +13,7 @@
 #include <string>
 
 #include "vahf/core/error.h"
+#include "vahf/scene/stepper_catalogue.h"
 #include "vahf/sim/internal/decisions.h"
 #include "vahf/sim/internal/step_checks.h"
 #include "vahf/sim/rigid_body.h"
@@ -20,6 +21,8 @@
 
 namespace vahf::sim::internal {
 namespace {
+
+namespace stepper_settings = scene::stepper_settings;
 
 // The most one accepted step may deepen the contact, as a fraction of the
 // hardening barrier's depth b (contact_params.h). A quarter: the barrier's
@@ -198,7 +201,9 @@ void SetUp(TrialContext& c, const contact::RigidMotion& start, Problem* p, Cvode
   Ok(CVodeSetUserData(cv->mem, p), "user data");
   Ok(CVodeSetErrHandlerFn(cv->mem, OnError, p), "error handler");
   cv->atol = N_VNew_Serial(kBodyStateSize, cv->context);
-  SetAbsoluteTolerances(c.model, sim.accuracy, sim.velocity_time_scale, cv->atol);
+  SetAbsoluteTolerances(c.model, sim.accuracy,
+                        sim.stepper_values.Get(stepper_settings::velocity_time_scale),
+                        cv->atol);
   Ok(CVodeSVtolerances(cv->mem, sim.accuracy, cv->atol), "tolerances");
   cv->matrix = SUNDenseMatrix(kBodyStateSize, kBodyStateSize, cv->context);
   cv->solver = SUNLinSol_Dense(cv->y, cv->matrix, cv->context);
@@ -211,8 +216,11 @@ void SetUp(TrialContext& c, const contact::RigidMotion& start, Problem* p, Cvode
   int falling = -1;
   Ok(CVodeSetRootDirection(cv->mem, &falling), "root direction");
   Ok(CVodeSetMaxNumSteps(cv->mem, 1000000), "step limit");
-  Ok(CVodeSetMaxOrd(cv->mem, sim.max_order), "maximum order");
-  Ok(CVodeSetJacEvalFrequency(cv->mem, sim.jacobian_interval), "Jacobian interval");
+  Ok(CVodeSetMaxOrd(cv->mem, sim.stepper_values.Count(stepper_settings::max_order)),
+     "maximum order");
+  Ok(CVodeSetJacEvalFrequency(
+         cv->mem, sim.stepper_values.Count(stepper_settings::jacobian_interval)),
+     "Jacobian interval");
 }
 
 // CVODE's counters restart with it: the totals of the runs before.

@@ -28,8 +28,10 @@ struct FactoryOf<StepperNeeds::kOwnRightHandSide> {
 // fails at link time, naming the declared one it does not find.
 #define VAHF_STEPPER(name, needs, factory, description) \
   FactoryOf<StepperNeeds::needs>::Type factory;
+#define VAHF_STEPPER_SETTING(key, unit, rule, lo, hi, default_value, meaning)
 #include "vahf/scene/steppers.def"
 #undef VAHF_STEPPER
+#undef VAHF_STEPPER_SETTING
 
 }  // namespace internal
 
@@ -58,10 +60,12 @@ StepperEntry Entry(const char* name, const char* description, Driver factory) {
 const std::vector<StepperEntry>& Steppers() {
 #define VAHF_STEPPER(name, needs, factory, description) \
   Entry<StepperNeeds::needs>(name, description, factory),
+#define VAHF_STEPPER_SETTING(key, unit, rule, lo, hi, default_value, meaning)
   static const std::vector<StepperEntry> steppers = {
 #include "vahf/scene/steppers.def"
   };
 #undef VAHF_STEPPER
+#undef VAHF_STEPPER_SETTING
   return steppers;
 }
 
