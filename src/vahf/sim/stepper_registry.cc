@@ -19,7 +19,7 @@ struct FactoryOf<StepperNeeds::kSimbodySystem> {
 };
 template <>
 struct FactoryOf<StepperNeeds::kOwnRightHandSide> {
-  using Type = std::remove_pointer_t<Driver>;
+  using Type = std::remove_pointer_t<CoreFactory>;
 };
 
 // Every factory scene/steppers.def names, declared with the type its needs
@@ -49,9 +49,9 @@ StepperEntry Entry(const char* name, const char* description, IntegratorFactory 
 }
 
 template <StepperNeeds needs>
-StepperEntry Entry(const char* name, const char* description, Driver factory) {
+StepperEntry Entry(const char* name, const char* description, CoreFactory factory) {
   static_assert(needs == StepperNeeds::kOwnRightHandSide,
-                "a driver steps the trial model's own right-hand side");
+                "a core steps the trial model's own right-hand side");
   return {name, description, needs, nullptr, factory};
 }
 
