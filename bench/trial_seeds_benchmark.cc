@@ -19,6 +19,7 @@
 
 #include "vahf/core/thread_cpu.h"
 #include "vahf/scene/scene_loader.h"
+#include "vahf/scene/stepper_catalogue.h"
 #include "vahf/sim/trial.h"
 #include "vahf/sim/trial_model.h"
 
@@ -44,6 +45,8 @@ double Quantile(const std::vector<double>& sorted, double q) {
 // Jacobian at least every 5 steps and the operator's friction push bounded
 // at 100 N (what a contact held by the hardening barrier needs:
 // docs/physics.md).
+namespace settings = vahf::scene::stepper_settings;
+
 void Seeds(benchmark::State& state, const std::string& scene_file, int position,
            const std::string& integrator, const std::string& contact_model = "") {
   vahf::scene::Scene scene = vahf::scene::LoadScene(std::string(VAHF_SOURCE_DIR) +
@@ -51,15 +54,15 @@ void Seeds(benchmark::State& state, const std::string& scene_file, int position,
   if (!contact_model.empty()) {
     scene.params.contact.model = contact_model;
     scene.params.simulation.max_steps = 100000;
-    scene.params.simulation.max_order = 2;
-    scene.params.simulation.jacobian_interval = 5;
+    scene.params.simulation.stepper_values.Upd(settings::max_order) = 2;
+    scene.params.simulation.stepper_values.Upd(settings::jacobian_interval) = 5;
     scene.params.guidance.max_push = 100;
   }
   if (!integrator.empty()) {
     scene.params.simulation.integrator = integrator;
     scene.params.simulation.accuracy = 1e-4;
-    scene.params.simulation.velocity_time_scale =
-        vahf::scene::SimulationParams().velocity_time_scale;
+    scene.params.simulation.stepper_values.Upd(settings::velocity_time_scale) =
+        settings::velocity_time_scale.default_value;
   }
   const auto model = vahf::sim::BuildTrialModel(scene, position);
   const int n = SeedCount();

@@ -17,6 +17,7 @@
 #include "vahf/contact/contact_registry.h"
 #include "vahf/core/error.h"
 #include "vahf/scene/json_reader.h"
+#include "vahf/scene/stepper_catalogue.h"
 
 namespace vahf::scene {
 namespace {
@@ -37,6 +38,9 @@ TEST(ParameterTable, WellFormed) {
           break;
         case ParamRule::kOpenBelow:
           EXPECT_TRUE(v > s.lo && v <= s.hi) << name;
+          break;
+        case ParamRule::kCount:  // a declared count, stored as an exact double
+          EXPECT_TRUE(v >= s.lo && v <= s.hi && v == std::floor(v)) << name;
           break;
         default:
           ADD_FAILURE() << name << " has a rule for another kind of value";
@@ -59,13 +63,15 @@ TEST(ParameterTable, WellFormed) {
   EXPECT_GE(names.size(), 30u);
 }
 
-// Every key a contact model declares is a contact/ row with its declaration's
-// unit, rule, bounds and meaning, whose default is the declaration's and which
-// reads into ContactParams::values.
-TEST(ParameterTable, ContactModelKeysAreRowsOfTheirDeclarations) {
-  ASSERT_FALSE(contact::ContactModelParams().empty());
-  for (const core::ParamDecl* d : contact::ContactModelParams()) {
-    const ParamSpec* s = FindParam(std::string("contact/") + d->key);
+// Every declared key is a row of its group with its declaration's unit,
+// rule, bounds and meaning, whose default is the declaration's and which
+// reads into the ParamValues `values` returns.
+void ExpectRowsOfTheirDeclarations(const std::vector<const core::ParamDecl*>& decls,
+                                   const std::string& group,
+                                   core::ParamValues& (*values)(Parameters&)) {
+  ASSERT_FALSE(decls.empty()) << group;
+  for (const core::ParamDecl* d : decls) {
+    const ParamSpec* s = FindParam(group + "/" + d->key);
     ASSERT_NE(s, nullptr) << d->key;
     EXPECT_STREQ(s->unit, d->unit) << d->key;
     EXPECT_EQ(s->rule, d->rule) << d->key;
@@ -74,10 +80,33 @@ TEST(ParameterTable, ContactModelKeysAreRowsOfTheirDeclarations) {
     EXPECT_STREQ(s->meaning, d->meaning) << d->key;
     Parameters p;
     EXPECT_EQ(s->real(p), d->default_value) << d->key;
-    ReadParamValue(*s, JsonNode(nlohmann::json(d->hi), "f.json", ""), &p);
-    EXPECT_EQ(p.contact.values.Get(*d), d->hi) << d->key;
-    EXPECT_EQ(Parameters().contact.values.Get(*d), d->default_value) << d->key;
+    const nlohmann::json hi = d->rule == ParamRule::kCount
+                                  ? nlohmann::json(static_cast<std::int64_t>(d->hi))
+                                  : nlohmann::json(d->hi);
+    ReadParamValue(*s, JsonNode(hi, "f.json", ""), &p);
+    EXPECT_EQ(values(p).Get(*d), d->hi) << d->key;
+    Parameters defaults;
+    EXPECT_EQ(values(defaults).Get(*d), d->default_value) << d->key;
   }
+}
+
+TEST(ParameterTable, ContactModelKeysAreRowsOfTheirDeclarations) {
+  ExpectRowsOfTheirDeclarations(
+      contact::ContactModelParams(), "contact",
+      [](Parameters& p) -> core::ParamValues& { return p.contact.values; });
+}
+
+// A stepper's settings (steppers.def) likewise, into
+// SimulationParams::stepper_values; a count reads back as the integer set.
+TEST(ParameterTable, StepperSettingsAreRowsOfTheirDeclarations) {
+  ExpectRowsOfTheirDeclarations(
+      StepperSettings(), "simulation",
+      [](Parameters& p) -> core::ParamValues& { return p.simulation.stepper_values; });
+  Parameters p;
+  ReadParamValue(*FindParam("simulation/max_order"),
+                 JsonNode(nlohmann::json(2), "f.json", ""), &p);
+  EXPECT_EQ(p.simulation.stepper_values.Count(stepper_settings::max_order), 2);
+  EXPECT_EQ(ParamValueText(*FindParam("simulation/jacobian_interval"), p), "51");
 }
 
 TEST(ParameterTable, AccessorsReachDistinctFields) {

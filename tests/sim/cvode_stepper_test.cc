@@ -12,6 +12,7 @@
 
 #include "support/free_fall.h"
 #include "vahf/scene/scene_loader.h"
+#include "vahf/scene/stepper_catalogue.h"
 #include "vahf/sim/trace_csv.h"
 #include "vahf/sim/trial.h"
 
@@ -25,7 +26,8 @@ scene::Scene LoadExample(const std::string& name, double accuracy = 1e-4) {
   s.params.simulation.accuracy = accuracy;
   // The default velocity time scale, whatever the scene sets (the measured
   // figures below are at it).
-  s.params.simulation.velocity_time_scale = scene::SimulationParams().velocity_time_scale;
+  const core::ParamDecl& scale = scene::stepper_settings::velocity_time_scale;
+  s.params.simulation.stepper_values.Upd(scale) = scale.default_value;
   return s;
 }
 
@@ -81,7 +83,8 @@ TEST(CvodeStepper, PegConvergesToMersonsCompletionTime) {
 TEST(CvodeStepper, AShorterVelocityTimeScaleStepsOverTheVibration) {
   const scene::Scene tight = LoadExample("peg_in_hole_shell.json");
   scene::Scene loose = tight;
-  loose.params.simulation.velocity_time_scale = 0.1;
+  loose.params.simulation.stepper_values.Upd(
+      scene::stepper_settings::velocity_time_scale) = 0.1;
   const TrialResult a = RunSeed1(tight), b = RunSeed1(loose);
   ASSERT_EQ(a.status, Status::kCompleted) << a.detail;
   ASSERT_EQ(b.status, Status::kCompleted) << b.detail;

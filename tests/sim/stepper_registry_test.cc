@@ -69,7 +69,7 @@ TEST(StepperRegistry, EachEntryHasTheFactoryItsNeedsName) {
     EXPECT_FALSE(std::string(s.description).empty());
     const bool simbody = s.needs == scene::StepperNeeds::kSimbodySystem;
     EXPECT_EQ(s.make_integrator != nullptr, simbody);
-    EXPECT_EQ(s.integrate != nullptr, !simbody);
+    EXPECT_EQ(s.make_core != nullptr, !simbody);
     EXPECT_EQ(&FindStepper(s.name), &s);
   }
 }

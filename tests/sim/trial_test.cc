@@ -21,6 +21,7 @@
 
 #include "vahf/core/error.h"
 #include "vahf/scene/scene_loader.h"
+#include "vahf/scene/stepper_catalogue.h"
 #include "vahf/sim/trace_csv.h"
 
 namespace vahf::sim {
@@ -558,13 +559,15 @@ TEST(Trial, DivergedIntegrationIsANumericalFailureNotACrash) {
   // runs at every accepted step, so it names the step after the last decision).
   scene::Scene s = LoadExample("peg_in_hole_shell.json");
   s.params.simulation.integrator = "FixedStep";
-  s.params.simulation.fixed_step = 5e-3;
+  double& step =
+      s.params.simulation.stepper_values.Upd(scene::stepper_settings::fixed_step);
+  step = 5e-3;
   const TrialResult r = RunTrial(s, {1, 0});
   EXPECT_EQ(r.status, Status::kNumericalFailure);
   EXPECT_NE(r.detail.find("diverged"), std::string::npos) << r.detail;
   EXPECT_NE(r.detail.find("at a step after decision"), std::string::npos) << r.detail;
   // The same scene at the default step completes.
-  s.params.simulation.fixed_step = 1e-4;
+  step = 1e-4;
   EXPECT_EQ(RunTrial(s, {1, 0}, {0, 0.0, false}).status, Status::kCompleted);
 }
 

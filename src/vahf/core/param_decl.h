@@ -18,10 +18,11 @@ enum class ParamRule {
   kChoice,     // one of the table's `choices` (lo, hi unused)
 };
 
-// One real-valued parameter: its key under its group, unit, rule (kClosed or
-// kOpenBelow), bounds, default and the one line `vahf params` prints. Declare
-// it once (an inline constexpr beside the code that reads it): two users of
-// one key share the object.
+// One numeric parameter: its key under its group, unit, rule (kClosed,
+// kOpenBelow or kCount: a count's bounds and default are integers), bounds,
+// default and the one line `vahf params` prints. Declare it once (an inline
+// constexpr beside the code that reads it): two users of one key share the
+// object.
 struct ParamDecl {
   const char* key;
   const char* unit;
@@ -40,6 +41,9 @@ class ParamValues {
     const auto it = values_.find(decl.key);
     return it == values_.end() ? decl.default_value : it->second;
   }
+  // A count's value (kCount): stored as a double, exact for any integer
+  // below 2^53, so the cast gives back the integer the scene set.
+  int Count(const ParamDecl& decl) const { return static_cast<int>(Get(decl)); }
   // The value to write through (the parameter table's accessor): the default
   // until written.
   double& Upd(const ParamDecl& decl) {

@@ -1,6 +1,7 @@
 #include "vahf/report/manifest.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <string_view>
 
 #include "vahf/core/error.h"
@@ -18,7 +19,9 @@ nlohmann::json ParametersToJson(const scene::Parameters& p) {
   nlohmann::json out = nlohmann::json::object();
   for (const scene::ParamSpec& spec : scene::ParameterTable()) {
     nlohmann::json& slot = out[spec.group][spec.key];
-    if (spec.real) {
+    if (spec.real && spec.rule == scene::ParamRule::kCount) {
+      slot = static_cast<std::int64_t>(spec.real(copy));  // a declared count
+    } else if (spec.real) {
       slot = spec.real(copy);
     } else if (spec.count) {
       slot = spec.count(copy);

@@ -219,13 +219,21 @@ std::vector<ParamSpec> VisionError() {
   return rows;
 }
 
-// The row of a key a contact model declares (contact_registry.h), read into
-// ContactParams::values.
+// The row of a declared key of `group`, read into the ParamValues `values`
+// returns: a contact model's (ContactParams::values, contact_registry.h) or a
+// stepper's (SimulationParams::stepper_values, steppers.def).
+ParamSpec DeclaredRow(const char* group, const core::ParamDecl* d,
+                      core::ParamValues& (*values)(Parameters&)) {
+  return {
+      group,      d->key,
+      d->unit,    d->rule,
+      d->lo,      d->hi,
+      d->meaning, [d, values](Parameters& p) -> double& { return values(p).Upd(*d); }};
+}
+
 ParamSpec ModelRow(const core::ParamDecl* d) {
-  return {"contact",  d->key,
-          d->unit,    d->rule,
-          d->lo,      d->hi,
-          d->meaning, [d](Parameters& p) -> double& { return p.contact.values.Upd(*d); }};
+  return DeclaredRow(
+      "contact", d, [](Parameters& p) -> core::ParamValues& { return p.contact.values; });
 }
 
 // The declared keys that keep the places they had among the shared rows
@@ -365,7 +373,8 @@ std::vector<ParamSpec> DecisionsAndOutcomes() {
   return rows;
 }
 
-// The integrator and its settings (docs/design.md decision 11).
+// The integrator and its settings (docs/design.md decision 11): the shared
+// ones, then each stepper's own (steppers.def).
 std::vector<ParamSpec> Integration() {
   using R = ParamRule;
   std::vector<ParamSpec> rows = {
@@ -376,18 +385,11 @@ std::vector<ParamSpec> Integration() {
       // times the state's size and the step size collapses.
       {"simulation", "accuracy", "1", R::kClosed, 1e-12, 0.5,
        "integrator relative accuracy", VAHF_REAL(simulation.accuracy)},
-      {"simulation", "fixed_step", "s", R::kClosed, 1e-7, 1,
-       "step of the FixedStep integrator", VAHF_REAL(simulation.fixed_step)},
-      {"simulation", "velocity_time_scale", "s", R::kClosed, 1e-6, 1e3,
-       "CVODE: velocity tolerance = accuracy / this (m/s)",
-       VAHF_REAL(simulation.velocity_time_scale)},
-      {"simulation", "max_order", "-", R::kCount, 1, 5,
-       "CVODE: highest BDF order (2 and below are A-stable)", nullptr,
-       VAHF_COUNT(simulation.max_order)},
-      {"simulation", "jacobian_interval", "steps", R::kCount, 1, 1e6,
-       "CVODE: most steps taken on one Jacobian", nullptr,
-       VAHF_COUNT(simulation.jacobian_interval)},
   };
+  for (const core::ParamDecl* d : StepperSettings())
+    rows.push_back(DeclaredRow("simulation", d, [](Parameters& p) -> core::ParamValues& {
+      return p.simulation.stepper_values;
+    }));
   return rows;
 }
 
@@ -456,10 +458,15 @@ void ReadParamValue(const ParamSpec& s, const JsonNode& v, Parameters* p) {
     case ParamRule::kOpenBelow:
       s.real(*p) = v.InOpenClosed(s.lo, s.hi);
       break;
-    case ParamRule::kCount:
-      s.count(*p) = static_cast<int>(
-          v.Integer(static_cast<std::int64_t>(s.lo), static_cast<std::int64_t>(s.hi)));
+    case ParamRule::kCount: {
+      const std::int64_t n =
+          v.Integer(static_cast<std::int64_t>(s.lo), static_cast<std::int64_t>(s.hi));
+      if (s.count)
+        s.count(*p) = static_cast<int>(n);
+      else
+        s.real(*p) = static_cast<double>(n);  // a declared count (ParamValues::Count)
       break;
+    }
     case ParamRule::kChoice:
       s.text(*p) = v.Choice(s.choices);
       break;
@@ -468,6 +475,8 @@ void ReadParamValue(const ParamSpec& s, const JsonNode& v, Parameters* p) {
 
 std::string ParamValueText(const ParamSpec& spec, const Parameters& p) {
   Parameters q = p;  // the accessors are the loader's, which writes through them
+  if (spec.real && spec.rule == ParamRule::kCount)
+    return fmt::format("{}", static_cast<std::int64_t>(spec.real(q)));
   if (spec.real) return fmt::format("{}", spec.real(q));
   if (spec.count) return fmt::format("{}", spec.count(q));
   return spec.text(q);

@@ -25,7 +25,9 @@ struct ParamSpec {
   double lo, hi;
   const char* meaning;
   // Exactly one accessor is set, by the kind of value. A real one may carry
-  // its declaration (a contact model's key in ContactParams::values).
+  // its declaration (a contact model's key in ContactParams::values, a
+  // stepper's in SimulationParams::stepper_values): a declared count
+  // (kCount) is read through it too, stored as an exact double.
   std::function<double&(Parameters&)> real = nullptr;
   int& (*count)(Parameters&) = nullptr;
   std::string& (*text)(Parameters&) = nullptr;

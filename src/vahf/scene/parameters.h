@@ -6,6 +6,7 @@
 #include <string>
 
 #include "vahf/contact/contact_params.h"
+#include "vahf/core/param_decl.h"
 #include "vahf/guidance/assembly_force.h"
 #include "vahf/human/factor_curves.h"
 #include "vahf/human/fatigue.h"
@@ -31,38 +32,11 @@ struct SimulationParams {
   // and a part dropped from a 1 m workbench lands at 4.4 m/s.
   double divergence_speed = 20.0;
   std::string integrator = "RungeKuttaMerson";
-  double accuracy = 1e-4;    // integrator relative accuracy
-  double fixed_step = 1e-4;  // s, for integrator "FixedStep"
-  // CVODE only: the time over which a velocity error counts as much as the
-  // position error it would make, s. CVODE's absolute tolerances are
-  // `accuracy` m for the position, accuracy / velocity_time_scale m/s for the
-  // velocity and the same over the part's radius for the rotation and the
-  // angular velocity (docs/physics.md, Integrators). 1 s holds a velocity to
-  // as many m/s as a position to m. A shorter one lets the steps stop
-  // resolving the velocity's fast vibration in contact while the pose stays
-  // held to `accuracy`; Simbody's System has the same notion (its default
-  // time scale, 0.1 s, "the time scale at which you expect to see
-  // interesting things happen"). Its error is measured by the precision
-  // experiment like any other setting.
-  double velocity_time_scale = 1.0;
-  // CVODE only: the highest order its BDF formulas may use (1-5; 5 is
-  // CVODE's own default). BDF1 and BDF2 are A-stable; no linear multistep
-  // method of higher order is (Dahlquist's second barrier: G. Dahlquist, BIT
-  // 3 (1963) 27-43), and BDF3-5 lose a wedge about the imaginary axis
-  // (Hairer and Wanner, Solving Ordinary Differential Equations II, 2nd ed.
-  // 1996, Sec. V.2), where a lightly damped stiff oscillation lies: a part
-  // rattling on a contact held to micrometres by the hardening barrier. There
-  // order 3-5 grows the oscillation until the part diverges (measured on the
-  // resolved peg: docs/physics.md, Integrators); order 2 holds it.
-  int max_order = 5;
-  // CVODE: the most steps it takes on one Jacobian (CVodeSetJacEvalFrequency;
-  // CVODE's own default, 51). A Jacobian taken in contact and kept after the
-  // contact has let go makes each step's single Newton correction point the
-  // wrong way while the correction stays small enough to pass CVODE's
-  // convergence test: the resolved peg's angular velocity then grew 1.1-fold
-  // a microsecond with no contact until the part passed divergence_speed
-  // (docs/physics.md, Integrators). 5 holds it there.
-  int jacobian_interval = 51;
+  double accuracy = 1e-4;  // integrator relative accuracy
+  // The settings a stepper declares with its line in steppers.def
+  // (fixed_step, velocity_time_scale, max_order, jacobian_interval), read
+  // through scene::stepper_settings (stepper_catalogue.h).
+  core::ParamValues stepper_values;
   // An accepted step shorter than this, s, is recorded as a warning
   // (step_size_floor): the integrator is resolving something far faster than
   // the contact oscillation (about 1e-4 s) or sticking friction (a few

@@ -4,6 +4,8 @@
 
 #include <utility>
 
+#include "vahf/scene/stepper_catalogue.h"
+
 namespace vahf::sim::internal {
 namespace {
 
@@ -63,7 +65,8 @@ std::unique_ptr<SimTK::Integrator> MakeSemiExplicitEuler2(
 std::unique_ptr<SimTK::Integrator> MakeFixedStep(
     const SimTK::System& system, const scene::SimulationParams& settings) {
   auto integ = Limited(std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system));
-  integ->setFixedStepSize(settings.fixed_step);
+  integ->setFixedStepSize(
+      settings.stepper_values.Get(scene::stepper_settings::fixed_step));
   return integ;
 }
 

@@ -84,12 +84,7 @@ class SimbodyTrial::CompletionTrigger : public SimTK::TriggeredEventHandler {
     getTriggerInfo().setTriggerOnRisingSignTransition(false);
   }
   SimTK::Real getValue(const SimTK::State& s) const override {
-    const contact::RigidMotion m = t_->PoseOf(s);
-    const TrialModel& model = t_->c_.model;
-    const auto& sim = t_->c_.params().simulation;
-    return std::max(model.DistanceToTarget(m) / sim.completion_distance,
-                    model.AngleToTargetDeg(m) / sim.completion_angle_deg) -
-           1.0;
+    return t_->c_.model.CompletionWitness(t_->PoseOf(s));
   }
   void handleEvent(SimTK::State& s, SimTK::Real, bool& terminate) const override {
     TrialContext& c = t_->c_;

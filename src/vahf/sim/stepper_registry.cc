@@ -1,14 +1,43 @@
 #include "vahf/sim/stepper_registry.h"
 
+#include <type_traits>
+
 #include "vahf/core/error.h"
-#include "vahf/sim/internal/cvode_stepper.h"
-#include "vahf/sim/internal/integrators.h"
 
 namespace vahf::sim {
+
+using scene::StepperNeeds;
+
+namespace internal {
+
+// The function type of a factory of each kind.
+template <StepperNeeds needs>
+struct FactoryOf;
+template <>
+struct FactoryOf<StepperNeeds::kSimbodySystem> {
+  using Type = std::remove_pointer_t<IntegratorFactory>;
+};
+template <>
+struct FactoryOf<StepperNeeds::kOwnRightHandSide> {
+  using Type = std::remove_pointer_t<CoreFactory>;
+};
+
+// Every factory scene/steppers.def names, declared with the type its needs
+// name, so no stepper has a header for this file to include. A factory
+// defined with the other kind's signature is another function: the build
+// fails at link time, naming the declared one it does not find.
+#define VAHF_STEPPER(name, needs, factory, description) \
+  FactoryOf<StepperNeeds::needs>::Type factory;
+#define VAHF_STEPPER_SETTING(key, unit, rule, lo, hi, default_value, meaning)
+#include "vahf/scene/steppers.def"
+#undef VAHF_STEPPER
+#undef VAHF_STEPPER_SETTING
+
+}  // namespace internal
+
 namespace {
 
 using namespace internal;  // the factories
-using scene::StepperNeeds;
 
 // An entry of scene/steppers.def with its factory, which must be the kind its
 // needs name: a mismatch does not compile.
@@ -20,9 +49,9 @@ StepperEntry Entry(const char* name, const char* description, IntegratorFactory 
 }
 
 template <StepperNeeds needs>
-StepperEntry Entry(const char* name, const char* description, Driver factory) {
+StepperEntry Entry(const char* name, const char* description, CoreFactory factory) {
   static_assert(needs == StepperNeeds::kOwnRightHandSide,
-                "a driver steps the trial model's own right-hand side");
+                "a core steps the trial model's own right-hand side");
   return {name, description, needs, nullptr, factory};
 }
 
@@ -31,10 +60,12 @@ StepperEntry Entry(const char* name, const char* description, Driver factory) {
 const std::vector<StepperEntry>& Steppers() {
 #define VAHF_STEPPER(name, needs, factory, description) \
   Entry<StepperNeeds::needs>(name, description, factory),
+#define VAHF_STEPPER_SETTING(key, unit, rule, lo, hi, default_value, meaning)
   static const std::vector<StepperEntry> steppers = {
 #include "vahf/scene/steppers.def"
   };
 #undef VAHF_STEPPER
+#undef VAHF_STEPPER_SETTING
   return steppers;
 }
 

@@ -9,6 +9,7 @@
 #include "vahf/core/thread_cpu.h"
 #include "vahf/core/warnings.h"
 #include "vahf/sim/internal/simbody_trial.h"
+#include "vahf/sim/internal/stepper_driver.h"
 #include "vahf/sim/internal/stepping.h"
 #include "vahf/sim/internal/trial_context.h"
 #include "vahf/sim/stepper_registry.h"
@@ -65,13 +66,13 @@ double IntegrateWithSimbody(IntegratorFactory make_integrator, TrialContext& c,
 }
 
 // Runs the stepper: a Simbody one's integrator under the Simbody driver, or
-// one of the trial model's own right-hand side as its own driver.
+// a core of the trial model's own right-hand side under the shared driver.
 double RunStepper(const StepperEntry& stepper, TrialContext& c, double sample_interval,
                   std::optional<TraceRow>* final_row, TrialCounters* counters) {
   if (stepper.needs == scene::StepperNeeds::kSimbodySystem)
     return IntegrateWithSimbody(stepper.make_integrator, c, sample_interval, final_row,
                                 counters);
-  return stepper.integrate(c, sample_interval, final_row, counters);
+  return DriveTrial(c, stepper.make_core, sample_interval, final_row, counters);
 }
 
 }  // namespace

@@ -287,4 +287,11 @@ double TrialModel::AngleToTargetDeg(const contact::RigidMotion& m) const {
          M_PI;
 }
 
+double TrialModel::CompletionWitness(const contact::RigidMotion& m) const {
+  const scene::SimulationParams& sim = params.simulation;
+  return std::max(DistanceToTarget(m) / sim.completion_distance,
+                  AngleToTargetDeg(m) / sim.completion_angle_deg) -
+         1.0;
+}
+
 }  // namespace vahf::sim

@@ -133,6 +133,11 @@ struct TrialModel {
   // Distance and angle to the target, for completion and progress.
   double DistanceToTarget(const contact::RigidMotion& m) const;
   double AngleToTargetDeg(const contact::RigidMotion& m) const;
+  // The completion witness, max(distance / d_th, angle / angle_th) - 1: it
+  // falls through zero when the part comes within both thresholds (Sec. 3.1;
+  // simulation/completion_distance and completion_angle_deg). Every stepper's
+  // completion is its zero.
+  double CompletionWitness(const contact::RigidMotion& m) const;
 };
 
 // The model of the part at `sequence_position` of scene.sequence, against the

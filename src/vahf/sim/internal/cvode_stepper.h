@@ -2,10 +2,10 @@
 // 11 and 13): SUNDIALS CVODE (variable-order BDF, Newton iteration, dense
 // direct linear solver; A. C. Hindmarsh et al., ACM TOMS 31(3) 363, 2005) on
 // the body's equations of motion (rigid_body.h) under the trial model's loads.
-// Integrator name "CVODE". The decisions restart it at every t_i, completion
-// is CVODE's root finding on the completion witness, every accepted step is
-// checked (step_checks.h), and dense samples come from CVODE's own
-// interpolant, so sampling never changes the trajectory.
+// Integrator name "CVODE", a core of the shared driver (stepper_driver.h),
+// which restarts it at every t_i, checks every accepted step and samples on
+// each step's path, so sampling never changes the trajectory; completion is
+// CVODE's root finding on the completion witness.
 //
 // Tolerances: relative `accuracy`; absolute `accuracy` in m and m/s for the
 // origin's position and velocity, and for the orientation and angular
@@ -20,18 +20,15 @@
 // TrialContext::difference_quotient_jacobian restores for comparison).
 #pragma once
 
-#include <optional>
+#include <memory>
 
-#include "vahf/sim/internal/trial_context.h"
-#include "vahf/sim/trial_result.h"
+#include "vahf/sim/stepper_core.h"
 
 namespace vahf::sim::internal {
 
-// Makes the decision at t = 0 and steps c's trial to completion, an ending or
-// the time limit. Returns the time reached; sets *final_row and the
-// integrator's counters. Numerical trouble ends the trial as a numerical
-// failure with a detail, never an exception.
-double IntegrateWithCvode(TrialContext& c, double sample_interval,
-                          std::optional<TraceRow>* final_row, TrialCounters* counters);
+// CVODE's core for the shared driver (stepper_driver.h), started at t = 0
+// from `start`: it finds completion with CVODE's root finding, and sets the
+// integrator's counters, CVODE's restarts included.
+std::unique_ptr<StepperCore> MakeCvodeCore(RightHandSide& rhs, const BodyState& start);
 
 }  // namespace vahf::sim::internal

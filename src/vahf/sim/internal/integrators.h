@@ -30,7 +30,7 @@ std::unique_ptr<SimTK::Integrator> MakeVerlet(const SimTK::System& system,
                                               const scene::SimulationParams& settings);
 std::unique_ptr<SimTK::Integrator> MakeSemiExplicitEuler2(
     const SimTK::System& system, const scene::SimulationParams& settings);
-// Runge-Kutta-Merson with error control off, step settings.fixed_step.
+// Runge-Kutta-Merson with error control off, step simulation/fixed_step.
 std::unique_ptr<SimTK::Integrator> MakeFixedStep(const SimTK::System& system,
                                                  const scene::SimulationParams& settings);
 

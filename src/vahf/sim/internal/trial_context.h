@@ -2,7 +2,7 @@
 // model of its part (trial_model.h) and everything the trial mutates, so that
 // trials run concurrently on the runner's threads without sharing state.
 // The decisions (decisions.h), the Simbody model (simbody_trial.h) and the
-// steppers (stepping.h, cvode_stepper.h) work on it.
+// steppers (stepping.h, stepper_driver.h) work on it.
 #pragma once
 
 #include <Eigen/Core>
