@@ -1,4 +1,4 @@
-# Sourced by the tests of a source-tree check (format_test.sh,
+# Sourced by the tests of a source-tree check (format_test.sh, registry_names_test.sh,
 # error_tiers_test.sh, layering_test.sh, function_length_test.sh,
 # public_headers_test.sh): the check must pass on the tree and
 # on a good copy, and fail on a broken copy naming what broke it. Counts failures in $failures;

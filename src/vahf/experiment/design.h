@@ -11,7 +11,7 @@
 //                         (Sec. 5.4), see RunExperiment;
 //   precision             per scene, the reference and one condition per
 //                         setting of the integrator or model (precision_design.h);
-//   paper                 each experiment it lists (kinds/design_kinds.cc).
+//   paper                 each experiment it lists (kinds/paper_kind.cc).
 #pragma once
 
 #include <cstdint>

@@ -35,9 +35,10 @@ void ParsePaper(const scene::JsonNode& root, const std::string& path,
   const std::size_t n = list.ArraySize(1);
   for (std::size_t k = 0; k < n; ++k) {
     const std::string sub = scene::ResolvePath(list.At(k), path, "experiment");
-    // Checked before parsing, so a file listing itself cannot recurse.
+    // Checked before parsing, so a file listing itself cannot recurse: a
+    // listed file of this kind (the registry's name, e->kind) is refused.
     const nlohmann::json doc = scene::ReadJsonFile(sub);
-    if (doc.is_object() && doc.contains("kind") && doc["kind"] == "paper")
+    if (doc.is_object() && doc.contains("kind") && doc["kind"] == e->kind)
       list.At(k).Fail("a paper experiment cannot list another paper experiment");
     scene::ExperimentFile x = ParseExperiment(doc, sub);
     if (!FindKind(x.kind).design)
