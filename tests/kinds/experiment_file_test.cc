@@ -871,10 +871,10 @@ TEST(PrecisionTest, NoiseTrialsDefault) {
   EXPECT_EQ(e.Input<PrecisionDesign>().noise_trials,
             PrecisionDesign::kDefaultNoiseTrials);
   // The most cycles per condition of any paper experiment.
+  // Held by name: a range-for over a member of a temporary would read it freed.
+  const ExperimentFile paper = LoadExperiment(SourcePath("experiments/paper.json"));
   int most = 0;
-  for (const ExperimentFile& x : LoadExperiment(SourcePath("experiments/paper.json"))
-                                     .Input<PaperInput>()
-                                     .experiments)
+  for (const ExperimentFile& x : paper.Input<PaperInput>().experiments)
     most = std::max(most, x.trials);
   EXPECT_EQ(PrecisionDesign::kDefaultNoiseTrials, most);
 }
