@@ -39,27 +39,20 @@ namespace {
 
 using namespace internal;  // the factories
 
-// An entry of scene/steppers.def with its factory, which must be the kind its
-// needs name: a mismatch does not compile.
-template <StepperNeeds needs>
+// An entry of scene/steppers.def with its factory; what it needs follows from
+// the factory's type, which the declarations above took from the line's needs.
 StepperEntry Entry(const char* name, const char* description, IntegratorFactory factory) {
-  static_assert(needs == StepperNeeds::kSimbodySystem,
-                "an integrator factory makes what the Simbody driver steps");
-  return {name, description, needs, factory, nullptr};
+  return {name, description, StepperNeeds::kSimbodySystem, factory, nullptr};
 }
 
-template <StepperNeeds needs>
 StepperEntry Entry(const char* name, const char* description, CoreFactory factory) {
-  static_assert(needs == StepperNeeds::kOwnRightHandSide,
-                "a core steps the trial model's own right-hand side");
-  return {name, description, needs, nullptr, factory};
+  return {name, description, StepperNeeds::kOwnRightHandSide, nullptr, factory};
 }
 
 }  // namespace
 
 const std::vector<StepperEntry>& Steppers() {
-#define VAHF_STEPPER(name, needs, factory, description) \
-  Entry<StepperNeeds::needs>(name, description, factory),
+#define VAHF_STEPPER(name, needs, factory, description) Entry(name, description, factory),
 #define VAHF_STEPPER_SETTING(key, unit, rule, lo, hi, default_value, meaning)
   static const std::vector<StepperEntry> steppers = {
 #include "vahf/scene/steppers.def"
