@@ -183,6 +183,17 @@ struct EdgeLines {
   }
 };
 
+// Whether f, from a to b (ends on opposite sides, w apart), is monotone and
+// so crosses zero once: its slope has the crossing's sign at both ends, and
+// with |f''| <= K it stays above the lower of the lines s_a - K (phi - a)
+// and s_b - K (b - phi), whose meeting point is (s_a + s_b - K w) / 2 over
+// zero. Never near a profile's corner, where K is infinite.
+bool Monotone(const Sample& a, const Sample& b, double curvature, double w) {
+  const double s = b.v.f > a.v.f ? 1.0 : -1.0;
+  const double sa = s * a.v.slope, sb = s * b.v.slope;
+  return sa > 0 && sb > 0 && sa + sb > curvature * w;
+}
+
 struct Scan {
   Scan(const CircleField& f, const Bounds& b)
       : field(f), bounds(b), lines(f.solid(), b) {}
@@ -203,21 +214,30 @@ struct Scan {
   // b - a = 2 pi / kSamples / 2^level.
   void Interval(const Sample& a, const Unit& ua, const Sample& b, const Unit& ub,
                 int level) {
-    if (a.inside() != b.inside()) {
-      Add(Crossing(field, a, b));
-      return;
-    }
-    // f cannot leave its side and come back over the interval: by its
-    // slope bound, or by its curvature bound (f stays within K w^2 / 8 of
-    // the chord, w the interval's width, K >= |f''| on it: TravelBounds),
-    // or because the trace can cross none of the edges near it (EdgeLines:
-    // their lines have no kink where f has one, at a corner).
     const double w = b.phi - a.phi;
-    if (CannotReachZero(std::abs(a.v.f), std::abs(b.v.f), bounds.slope, bounds.curvature,
-                        w))
-      return;
-    if (lines.NoneCrossed(a.v.q, b.v.q, w)) return;
-    if (level >= kMaxLevels) return;  // a dip shallower than the bound: left out
+    if (a.inside() != b.inside()) {
+      // Ends on opposite sides hold an odd number of crossings: one when f
+      // is monotone over the interval (Monotone), or when the interval
+      // is as fine as the scan goes; otherwise it is halved, so that a
+      // rim leaving the solid and coming back (two contacts a few degrees
+      // apart, as a tilted piston meets a chamfered mouth) is not taken
+      // for one arc through the gap.
+      if (level >= kMaxLevels || Monotone(a, b, bounds.curvature, w)) {
+        Add(Crossing(field, a, b));
+        return;
+      }
+    } else {
+      // f cannot leave its side and come back over the interval: by its
+      // slope bound, or by its curvature bound (f stays within K w^2 / 8 of
+      // the chord, w the interval's width, K >= |f''| on it: TravelBounds),
+      // or because the trace can cross none of the edges near it (EdgeLines:
+      // their lines have no kink where f has one, at a corner).
+      if (CannotReachZero(std::abs(a.v.f), std::abs(b.v.f), bounds.slope,
+                          bounds.curvature, w))
+        return;
+      if (lines.NoneCrossed(a.v.q, b.v.q, w)) return;
+      if (level >= kMaxLevels) return;  // a dip shallower than the bound: left out
+    }
     const double h = kScanAngles.half[level];
     const Unit um{(ua.cs + ub.cs) * h, (ua.sn + ub.sn) * h};
     const Sample m{0.5 * (a.phi + b.phi), field.At(um.cs, um.sn)};
