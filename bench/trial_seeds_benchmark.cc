@@ -6,9 +6,10 @@
 // trial model built once. Counters: thread CPU seconds per trial at p50, p99
 // and max; the real-time factor (simulated over CPU seconds) at p50 and its
 // worst; mean contact evaluations, integrator steps and rejected steps
-// (attempted - taken) per trial; completed share; the shares of the time in
-// contact, Jacobians, linear algebra and the rest (TrialOptions::
-// time_phases, phase_seconds.h). One benchmark iteration
+// (attempted - taken) per trial; completed share; CPU per accepted step; the
+// shares of the time in contact, Jacobians, linear algebra, the operator's
+// hand, decisions, visibility and the rest (TrialOptions::time_phases,
+// phase_seconds.h). One benchmark iteration
 // runs every seed. Run with tools/bench --benchmark_filter=Seeds.
 #include <benchmark/benchmark.h>
 
@@ -91,6 +92,9 @@ void Seeds(benchmark::State& state, const std::string& scene_file, int position,
       phases.contact += r.phases.contact;
       phases.jacobian += r.phases.jacobian;
       phases.linear_algebra += r.phases.linear_algebra;
+      phases.hand += r.phases.hand;
+      phases.decisions += r.phases.decisions;
+      phases.visibility += r.phases.visibility;
       wall += r.wall_seconds;
     }
   }
@@ -106,15 +110,27 @@ void Seeds(benchmark::State& state, const std::string& scene_file, int position,
   state.counters["steps"] = steps / trials;
   state.counters["rejected"] = rejected / trials;
   state.counters["completed"] = completed / trials;
+  // CPU per accepted step, everything included.
+  double cpu_total = 0;
+  for (double c : cpu) cpu_total += c;
+  state.counters["us_per_step"] =
+      1e6 * cpu_total / static_cast<double>(n) / (steps / trials);
   // Where the time went, as shares of the trials' wall time (one core):
-  // contact evaluations, analytic Jacobians (CVODE), the linear solver
-  // (CVODE), and the rest (the stepper, the operator's loads, decisions,
-  // checks; for Simbody's steppers also their Jacobians and linear algebra).
+  // contact evaluations (the oil's film among them), analytic Jacobians
+  // (CVODE), the linear solver (CVODE), the operator's hand at each
+  // right-hand side, the decisions, V's ray casting, and the rest (the
+  // stepper itself and the step checks; for Simbody's steppers also their
+  // Jacobians and linear algebra).
   state.counters["share_contact"] = phases.contact / wall;
   state.counters["share_jacobian"] = phases.jacobian / wall;
   state.counters["share_linalg"] = phases.linear_algebra / wall;
+  state.counters["share_hand"] = phases.hand / wall;
+  state.counters["share_decisions"] = phases.decisions / wall;
+  state.counters["share_visibility"] = phases.visibility / wall;
   state.counters["share_rest"] =
-      1.0 - (phases.contact + phases.jacobian + phases.linear_algebra) / wall;
+      1.0 - (phases.contact + phases.jacobian + phases.linear_algebra + phases.hand +
+             phases.decisions + phases.visibility) /
+                wall;
 }
 
 // One benchmark: `name` over the seeds of `file`'s part `position` with

@@ -67,10 +67,8 @@ void RecordDecision(TrialContext& c, double time, const contact::RigidMotion& m,
   c.trace.push_back(row);
 }
 
-}  // namespace
-
-std::optional<Decision> Decide(TrialContext& c, double time,
-                               const contact::RigidMotion& m) {
+std::optional<Decision> DecideNow(TrialContext& c, double time,
+                                  const contact::RigidMotion& m) {
   const TrialModel& model = c.model;
   const auto& p = c.params();
   const std::int64_t i = std::llround(time / p.simulation.decision_interval);
@@ -110,6 +108,22 @@ std::optional<Decision> Decide(TrialContext& c, double time,
   c.last_force = force.norm();
   c.max_penetration = std::max(c.max_penetration, cf.max_depth);
   if (c.record_trace) RecordDecision(c, time, m, force, cf, f, psi);
+  return d;
+}
+
+}  // namespace
+
+std::optional<Decision> Decide(TrialContext& c, double time,
+                               const contact::RigidMotion& m) {
+  // V's ray casting and the decision's contact evaluation are their own
+  // phases: what they took within is taken out.
+  const double within = c.phases.visibility + c.phases.contact;
+  std::optional<Decision> d;
+  {
+    const PhaseTimer timer(c.Timing(&PhaseSeconds::decisions));
+    d = DecideNow(c, time, m);
+  }
+  c.phases.decisions -= c.phases.visibility + c.phases.contact - within;
   return d;
 }
 

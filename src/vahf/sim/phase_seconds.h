@@ -18,6 +18,14 @@ struct PhaseSeconds {
   double jacobian = 0;
   // The stepper's linear solver (CVODE's dense LU): factorisations and solves.
   double linear_algebra = 0;
+  // The operator's hand: its force and torque on the part at each
+  // right-hand side (TrialModel::OperatorLoad), after the contact it reads.
+  double hand = 0;
+  // The operator's decisions (Eq. 5's draws, the human factors, fatigue, the
+  // outcome checks), their contact evaluation and V's ray casting aside.
+  double decisions = 0;
+  // Eq. 1's ray casting, at the decisions and the final row.
+  double visibility = 0;
 };
 
 // Adds the steady-clock time from its construction to its destruction to

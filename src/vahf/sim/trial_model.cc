@@ -258,16 +258,19 @@ void TrialModel::OperatorLoad(const contact::RigidMotion& m, const Decision& d,
 
 Loads TrialModel::LoadsAt(const contact::RigidMotion& m, const Decision& d,
                           contact::ContactCounters* counters, LoadJacobian* jacobian,
-                          double* contact_seconds) const {
+                          PhaseSeconds* phases) const {
   Loads out;
   contact::ContactJacobian cj;
   {
-    const PhaseTimer timer(contact_seconds);
+    const PhaseTimer timer(phases ? &phases->contact : nullptr);
     out.contact = jacobian && contact.model ? contact.model->Evaluate(m, counters, &cj)
                                             : ContactAt(m, counters);
   }
   Vector3d torque;
-  OperatorLoad(m, d, out.contact, &out.assembly_force, &torque);
+  {
+    const PhaseTimer timer(phases ? &phases->hand : nullptr);
+    OperatorLoad(m, d, out.contact, &out.assembly_force, &torque);
+  }
   out.force = out.assembly_force + out.contact.normal_force + out.contact.friction_force +
               out.contact.film_force;
   out.torque = torque + out.contact.torque;

@@ -24,6 +24,8 @@
 
 namespace vahf::sim {
 
+struct PhaseSeconds;  // phase_seconds.h
+
 // What the operator decided at the last decision instant, held until the next
 // (docs/design.md decision 1). The contact it met is not held: the force law
 // reads the current contact (guidance::ImpedanceForce), so the force is
@@ -119,11 +121,12 @@ struct TrialModel {
   // Both elements at m (gravity aside): the contact first, as the operator
   // feels it, then their sum, operator first (the order fixes the bits).
   // With `jacobian`, also their derivative, from the same contact pass (the
-  // loads the same bits as without). With `contact_seconds`, the contact
-  // evaluation's time is added to it (PhaseTimer).
+  // loads the same bits as without). With `phases`, the contact
+  // evaluation's time is added to its contact and the operator's to its hand
+  // (PhaseTimer).
   Loads LoadsAt(const contact::RigidMotion& m, const Decision& d,
                 contact::ContactCounters* counters, LoadJacobian* jacobian = nullptr,
-                double* contact_seconds = nullptr) const;
+                PhaseSeconds* phases = nullptr) const;
   // The derivative of LoadsAt(m, d) given its `loads` and the contact's
   // derivative there (trial_model_jacobian.cc).
   LoadJacobian LoadJacobianAt(const contact::RigidMotion& m, const Decision& d,

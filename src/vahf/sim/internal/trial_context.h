@@ -95,7 +95,7 @@ struct TrialContext {
   // TrialModel::LoadsAt with this trial's counters, its contact timed.
   Loads LoadsAt(const contact::RigidMotion& m, const Decision& d) {
     return model.LoadsAt(m, d, &contact_counters, nullptr,
-                         Timing(&PhaseSeconds::contact));
+                         time_phases ? &phases : nullptr);
   }
 
   // V (Eq. 1: cast, given, or 1) and the factors for the part at pose m with
@@ -106,6 +106,7 @@ struct TrialContext {
     if (model.visibility_mode == TrialModel::Visibility::kConstant) {
       V = params().visibility.value;
     } else if (caster) {
+      const PhaseTimer timer(Timing(&PhaseSeconds::visibility));
       const visibility::VisibilityResult seen =
           caster->Compute(model.posture.eye, m.pose);
       V = seen.V;
