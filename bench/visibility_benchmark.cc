@@ -4,9 +4,12 @@
 // - PegV/N: one V on an N x N grid (the target is under 1 ms at N = 128 on one
 //   core). Each iteration moves the peg by 1 micrometre and back, so every V
 //   pays the instance move and top-level commit a trial would pay.
-// - PegTessellation, PegCasterSetUp: the one-time cost per trial, split into
-//   meshing both parts and building the caster (Embree device, BVHs);
-//   MinimalCasterSetUp: a caster with almost nothing in it (the device).
+// - PegTessellation, PegCasterSetUp: the one-time cost per part and
+//   experiment (and per thread for the caster), split into meshing both parts
+//   and building the caster (Embree device, BVHs); MinimalCasterSetUp: a
+//   caster with almost nothing in it (the device); PegCasterBorrow: what a
+//   trial pays for its caster instead, a borrow from and return to the trial
+//   model's pool (visibility/caster_pool.h).
 // Run with tools/bench, or taskset -c 0 build/release/bench/visibility_benchmark.
 #include <benchmark/benchmark.h>
 
@@ -16,6 +19,7 @@
 #include "vahf/geometry/tessellation.h"
 #include "vahf/human/operator_model.h"
 #include "vahf/scene/scene_loader.h"
+#include "vahf/visibility/caster_pool.h"
 #include "vahf/visibility/visibility.h"
 
 namespace {
@@ -99,6 +103,19 @@ void PegCasterSetUp(benchmark::State& state) {
   }
 }
 BENCHMARK(PegCasterSetUp)->Unit(benchmark::kMicrosecond);
+
+void PegCasterBorrow(benchmark::State& state) {
+  const PegScene s;
+  const vahf::visibility::CasterPool pool(
+      vahf::geometry::Tessellate(s.peg->shape, s.tolerance), s.Occluders(), {128, false});
+  pool.Borrow();  // the one caster the pool builds, idle from here on
+  for (auto _ : state) {
+    const vahf::visibility::CasterPool::Lease lease = pool.Borrow();
+    benchmark::DoNotOptimize(lease.caster().part_bounding_radius());
+  }
+  state.counters["built"] = static_cast<double>(pool.casters_built());
+}
+BENCHMARK(PegCasterBorrow)->Unit(benchmark::kMicrosecond);
 
 // The floor of PegCasterSetUp: a caster for a 12-triangle box and nothing
 // else, mostly the Embree device.

@@ -46,7 +46,7 @@ std::string DescribeSceneModels(const scene::Scene& scene) {
     if (m->clearance > 0)
       out += fmt::format(", radial clearance {:.3g} um, penetration bound {:.3g} um",
                          m->clearance * 1e6, m->penetration_bound * 1e6);
-    out += m->visibility ? ", V by ray casting\n" : "\n";
+    out += m->casters ? ", V by ray casting\n" : "\n";
     if (m->operator_acts) out += DescribeHand(*m);
   }
   return out;

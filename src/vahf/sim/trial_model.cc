@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <utility>
 
 #include "vahf/core/error.h"
 #include "vahf/geometry/clearance.h"
@@ -42,9 +44,11 @@ std::vector<FixedPart> FixedParts(const scene::Scene& scene, int position) {
   return out;
 }
 
-// Eq. 1's meshes: the part's and the fixed parts', at the scene's tolerance.
-VisibilityMeshes MeshesFor(const scene::Scene& scene, const scene::Part& part,
-                           const std::vector<FixedPart>& fixed) {
+// Eq. 1's casters, on the part's and the fixed parts' meshes at the scene's
+// tolerance.
+std::shared_ptr<const visibility::CasterPool> CastersFor(
+    const scene::Scene& scene, const scene::Part& part,
+    const std::vector<FixedPart>& fixed) {
   const auto& v = scene.params.visibility;
   if (v.grid > visibility::kMaxGrid)  // a scene built or changed in memory
     throw InputError(scene.file, "/parameters/visibility/grid", std::to_string(v.grid),
@@ -58,11 +62,13 @@ VisibilityMeshes MeshesFor(const scene::Scene& scene, const scene::Part& part,
                        e.value(), fmt::format("{} (part '{}')", e.rule(), p.name));
     }
   };
-  VisibilityMeshes out;
-  out.part = mesh(part);
-  for (const FixedPart& f : fixed) out.occluders.push_back({mesh(*f.part), f.pose});
-  out.options.grid = v.grid;
-  return out;
+  geometry::TriangleMesh part_mesh_P = mesh(part);  // the part first, as it fails first
+  std::vector<visibility::Occluder> occluders;
+  for (const FixedPart& f : fixed) occluders.push_back({mesh(*f.part), f.pose});
+  visibility::CasterOptions options;
+  options.grid = v.grid;
+  return std::make_shared<const visibility::CasterPool>(std::move(part_mesh_P),
+                                                        std::move(occluders), options);
 }
 
 // The end of the part along its own z axis that enters first: the one
@@ -206,7 +212,7 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
   // Eq. 1 by ray casting only when the scene asks for it and something could
   // hide the part; a scene with V given or switched off tessellates nothing.
   if (m.visibility_mode == TrialModel::Visibility::kRaycast && !fixed.empty())
-    m.visibility = MeshesFor(scene, part, fixed);
+    m.casters = CastersFor(scene, part, fixed);
   return out;
 }
 

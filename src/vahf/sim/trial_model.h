@@ -6,13 +6,13 @@
 // decision, which any stepper can evaluate.
 //
 // Built and checked once per part and experiment (BuildTrialModel), then
-// shared, read-only, by every trial of that part on every thread.
+// shared, read-only but for its pool of visibility casters, by every trial of
+// that part on every thread.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include "vahf/contact/contact_model.h"
@@ -20,7 +20,7 @@
 #include "vahf/geometry/tessellation.h"
 #include "vahf/human/factors.h"
 #include "vahf/scene/scene.h"
-#include "vahf/visibility/visibility.h"
+#include "vahf/visibility/caster_pool.h"
 
 namespace vahf::sim {
 
@@ -49,15 +49,6 @@ struct Loads {
 // (rows 3-5) with respect to the part's motion, in contact::ContactJacobian's
 // columns (dx, dtheta, v, w): for implicit steppers.
 using LoadJacobian = Eigen::Matrix<double, 6, 12>;
-
-// What Eq. 1 is cast against: the part's mesh and the fixed parts' meshes,
-// tessellated once. A caster (Embree scene) is built from them per trial:
-// casting moves the part's instance, so casters are not shared.
-struct VisibilityMeshes {
-  geometry::TriangleMesh part;
-  std::vector<visibility::Occluder> occluders;
-  visibility::CasterOptions options;
-};
 
 struct TrialModel {
   explicit TrialModel(human::FactorCurves factor_curves)
@@ -107,8 +98,13 @@ struct TrialModel {
   double clearance = 0;  // the smallest radial clearance to a fixed part, m (0: none)
   double penetration_bound = 0;   // m; 0: the scene has no radial fit to bound
   contact::BuiltContact contact;  // model null: nothing to touch, no contact work
-  // Raycast, and something could hide the part.
-  std::optional<VisibilityMeshes> visibility;
+  // Raycast, and something could hide the part: Eq. 1's casters against the
+  // part's mesh and the fixed parts', tessellated once. The pool is the one
+  // thing of the model that changes, under its own lock: each trial borrows a
+  // caster for its duration (casting moves the part's instance in it), and
+  // the pool builds one only when none is idle, so at most one per thread. A
+  // copy of the model shares it: a caster depends on the meshes alone.
+  std::shared_ptr<const visibility::CasterPool> casters;
 
   // The contact force element: the forces the part meets at m.
   contact::ContactForces ContactAt(const contact::RigidMotion& m,

@@ -275,13 +275,17 @@ struct VisibilityCaster::Impl {
   }
 
   // Moves the part's instances to X_WP and commits their top levels (one or
-  // two instances: cheap); nothing when the pose has not changed.
+  // two instances: cheap); nothing when the pose has not changed. The only
+  // state a Compute changes: what it leaves depends on X_WP alone, so a caster
+  // gives the same bits whatever it cast before (caster_pool.h). A commit
+  // that throws leaves nothing committed, and the next Place commits again.
   void Place(const Eigen::Isometry3d& X_WP) {
     std::array<float, 12> x;
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r) x[3 * c + r] = static_cast<float>(X_WP.linear()(r, c));
     for (int r = 0; r < 3; ++r) x[9 + r] = static_cast<float>(X_WP.translation()(r));
     if (committed && x == committed_X_WP) return;
+    committed = false;
     for (RTCGeometry g : part_instances) {
       rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, x.data());
       rtcCommitGeometry(g);

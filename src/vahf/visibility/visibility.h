@@ -8,11 +8,12 @@
 // pixels evenly spaced on the tangent plane at unit distance; one ray through
 // each pixel centre. docs/visibility.md has the method and its error.
 //
-// Built once per trial (Embree device, meshes, BVHs); the moving part is an
-// Embree instance, so a new pose costs a transform and a top-level commit,
-// never a re-tessellation. Single-threaded and deterministic: the same inputs
-// give the same bits. Not safe to share between threads (Compute moves the
-// instance).
+// Built once (Embree device, meshes, BVHs); the moving part is an Embree
+// instance, so a new pose costs a transform and a top-level commit, never a
+// re-tessellation. Single-threaded and deterministic: the same inputs give
+// the same bits, whatever the caster computed before. Not safe to share
+// between threads (Compute moves the instance): caster_pool.h lends one
+// caster to one user at a time.
 #pragma once
 
 #include <Eigen/Core>

@@ -19,7 +19,7 @@
 #include "vahf/sim/phase_seconds.h"
 #include "vahf/sim/trial_model.h"
 #include "vahf/sim/trial_result.h"
-#include "vahf/visibility/visibility.h"
+#include "vahf/visibility/caster_pool.h"
 
 namespace vahf::sim::internal {
 
@@ -38,14 +38,13 @@ inline bool IsFinite(const contact::RigidMotion& m) {
 struct TrialContext {
   TrialContext(const TrialModel& trial_model, rng::StreamKey stream_key)
       : model(trial_model), key(stream_key) {
-    if (model.visibility)
-      caster.emplace(model.visibility->part, model.visibility->occluders,
-                     model.visibility->options);
+    if (model.casters) caster_lease.emplace(model.casters->Borrow());
   }
 
   const TrialModel& model;
   rng::StreamKey key;
-  std::optional<visibility::VisibilityCaster> caster;  // Eq. 1 by ray casting
+  // Eq. 1 by ray casting: the model's caster this trial holds until it ends.
+  std::optional<visibility::CasterPool::Lease> caster_lease;
   std::int64_t rays_cast = 0;
   contact::ContactCounters contact_counters;
 
@@ -105,10 +104,10 @@ struct TrialContext {
     double V = 1.0;  // "off", and "raycast" with nothing that could hide the part
     if (model.visibility_mode == TrialModel::Visibility::kConstant) {
       V = params().visibility.value;
-    } else if (caster) {
+    } else if (caster_lease) {
       const PhaseTimer timer(Timing(&PhaseSeconds::visibility));
       const visibility::VisibilityResult seen =
-          caster->Compute(model.posture.eye, m.pose);
+          caster_lease->caster().Compute(model.posture.eye, m.pose);
       V = seen.V;
       rays_cast += seen.rays_cast;
     }
