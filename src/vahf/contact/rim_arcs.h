@@ -19,12 +19,12 @@
 // method inside the bracket (f' = n . P', n the surface normal), and any
 // other interval is halved, at most kMaxLevels times (below that an
 // excursion into or out of the solid is shallower than the bound over the
-// last interval, about 0.2 um at the scenes' tilts, and is left out). The curvature bound
-// adds the bend of the distance near the profile's corners (rim_arcs.cc, TravelBounds);
-// where the trace reaches a corner, f has a kink, and an interval is excluded instead
-// when the trace can cross none of the surface edges near it (the edges' lines have no
-// kink: rim_arcs.cc, EdgeLines). The queries examine only those edges
-// (SignedDistance::Near).
+// last interval, about 0.2 um at the scenes' tilts, and is left out). The
+// curvature bound adds the bend of the distance near the profile's corners
+// (rim_arcs.cc, TravelBounds); where the trace reaches a corner, f has a
+// kink, and an interval is excluded instead when the trace can cross none of
+// the surface edges near it (the edges' lines have no kink: rim_arcs.cc,
+// EdgeLines). The queries examine only those edges (SignedDistance::Near).
 #pragma once
 
 #include <Eigen/Core>
