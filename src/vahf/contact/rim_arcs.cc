@@ -27,9 +27,10 @@ class CircleField {
       : c_(c), solid_(solid), queries_(queries), edges_(edges) {}
 
   struct Value {
-    double f;           // signed distance, m
-    double slope;       // df/dphi, m/rad
-    Eigen::Vector2d q;  // the point's meridian coordinates (r, z), m
+    double f;            // signed distance, m
+    double slope;        // df/dphi, m/rad
+    Eigen::Vector2d q;   // the point's meridian coordinates (r, z), m
+    Eigen::Vector2d dq;  // their slopes d(r, z)/dphi, m/rad
   };
   Value operator()(double phi) const { return At(std::cos(phi), std::sin(phi)); }
   // At the angle whose cosine and sine are cs and sn.
@@ -38,12 +39,15 @@ class CircleField {
     ++*queries_;
     Eigen::Vector2d q;
     const Distance d = solid_.At(p, edges_, &q);
-    return {d.distance, c_.radius * d.normal.dot(cn_dot(cs, sn)), q};
+    const Eigen::Vector3d t = cs * c_.y - sn * c_.x;  // dP/dphi over the radius
+    const Eigen::Vector3d dp = c_.radius * t;
+    // r' = (P_xy . P'_xy) / r; on the axis, where r has no slope, 0.
+    const double dr = q.x() > 0 ? (p.x() * dp.x() + p.y() * dp.y()) / q.x() : 0.0;
+    return {d.distance, c_.radius * d.normal.dot(t), q, {dr, dp.z()}};
   }
   const NearEdges& solid() const { return solid_; }
 
  private:
-  Eigen::Vector3d cn_dot(double cs, double sn) const { return cs * c_.y - sn * c_.x; }
   const PlacedCircle& c_;
   const NearEdges& solid_;
   std::uint64_t* queries_;
@@ -106,12 +110,87 @@ double Crossing(const CircleField& field, Sample a, Sample b) {
   return 0.5 * (a.phi + b.phi);
 }
 
+// The least of s f between samples a and b (s = 1: f's minimum, s = -1: its
+// maximum), a sample of the search's bracket when no interior extremum is
+// bracketed (the slopes of s f must change sign from a to b).
+Sample Extremum(const CircleField& field, Sample a, Sample b, double s) {
+  double lo = a.phi, hi = b.phi;
+  const auto lower = [&] { return s * a.v.f <= s * b.v.f ? a : b; };
+  if (!(s * a.v.slope < 0 && s * b.v.slope > 0)) return lower();  // none bracketed
+  // The slope changes sign at the minimum. Where the rim crosses the solid's
+  // medial axis (equally deep under two faces) f has a kink there, a V;
+  // elsewhere a smooth bowl. A secant of the slope (regula falsi) finds a
+  // bowl's bottom, and the meeting point of the ends' tangents a V's point
+  // once the ends lie on its straight arms; either creeps when an end is
+  // far out on a curved arm. So the steps cycle: a secant, a meeting point,
+  // and a bisection when those two did not halve the bracket (Dekker's
+  // safeguard: the bracket halves at least every third query), else a
+  // second meeting point. A meeting point is kept a hair inside the
+  // bracket: a V's point found at an end, its slope one arm's, is then
+  // bracketed by the probe beside it and the bracket closes to the
+  // tolerance. It stops when f can change by less than kDeepestTolerance
+  // over the bracket (f convex on it, the premise of the search: its slope
+  // lies between the ends').
+  double checkpoint = hi - lo;  // the bracket's width at the cycle's start
+  for (int i = 0; i < kMaxDeepest; ++i) {
+    const double sa = s * a.v.slope, sb = s * b.v.slope;
+    if ((hi - lo) * std::max(-sa, sb) < kDeepestTolerance) break;
+    const int phase = i % 3;
+    if (phase == 0) checkpoint = hi - lo;
+    double x;
+    if (phase == 0) {
+      x = lo - sa * (hi - lo) / (sb - sa);
+    } else if (phase == 2 && hi - lo > 0.5 * checkpoint) {
+      x = 0.5 * (lo + hi);
+    } else {
+      const double hair = 0.5 * kDeepestTolerance / std::max(-sa, sb);
+      const double meet = (s * b.v.f - s * a.v.f + sa * lo - sb * hi) / (sa - sb);
+      x = std::min(std::max(meet, lo + hair), hi - hair);
+    }
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    const Sample v{x, field(x)};
+    if (s * v.v.slope < 0) {
+      lo = x, a = v;
+    } else if (s * v.v.slope > 0) {
+      hi = x, b = v;
+    } else {
+      return v;
+    }
+  }
+  return lower();
+}
+
 // Whether a function of magnitudes fa and fb (> 0) at the ends of an
 // interval of width w, its slope and curvature at most s and k on it, cannot
 // reach zero inside: by its slope bound, or because it stays within
 // k w^2 / 8 of its chord.
 bool CannotReachZero(double fa, double fb, double s, double k, double w) {
   return fa + fb > s * w || std::min(fa, fb) > 0.125 * k * w * w;
+}
+
+// Whether a function g with values ga and gb (the same strict sign) and
+// slopes sa and sb at the ends of an interval of width w, its curvature at
+// most k on it, keeps its sign inside, by its tangents at the ends: by
+// Taylor's theorem g (for ga, gb > 0) stays above ga + sa t - k t^2 / 2 from
+// the first end to the middle (t from 0 to w / 2), a concave function of t,
+// so above the lesser of ga and its value at the middle; likewise from the
+// other end. Where the ends' slopes point away from zero this holds over
+// intervals far wider than the chord's bound (CannotReachZero) allows.
+bool TangentsKeepSide(double ga, double sa, double gb, double sb, double k, double w) {
+  if (ga < 0 && gb < 0) ga = -ga, sa = -sa, gb = -gb, sb = -sb;
+  const double bend = 0.125 * k * w * w;
+  return ga > 0 && gb > 0 && ga + 0.5 * w * sa > bend && gb - 0.5 * w * sb > bend;
+}
+
+// Whether g, with values ga and gb of opposite strict signs and slopes sa and
+// sb at the ends of an interval of width w, its curvature at most k on it, is
+// monotone and so crosses zero once: its slope has the crossing's sign at
+// both ends, and it stays above the lower of the lines s_a - k t and
+// s_b - k (w - t), whose meeting point is (s_a + s_b - k w) / 2 over zero.
+bool CrossesOnce(double ga, double sa, double gb, double sb, double k, double w) {
+  if (!((ga < 0 && gb > 0) || (ga > 0 && gb < 0))) return false;
+  if (ga > 0) sa = -sa, sb = -sb;
+  return sa > 0 && sb > 0 && sa + sb > k * w;
 }
 
 // Bounds on the travel of the circle's meridian trace (r, z)(phi) and of f
@@ -159,27 +238,58 @@ struct EdgeLines {
   }
 
   // Whether g, of slope and curvature at most s and k, keeps the sign it
-  // has at both ends (ga, gb, same strict sign) over an interval of width w.
-  static bool KeepsSide(double ga, double gb, double s, double k, double w) {
+  // has at both ends (ga, gb, same strict sign; slopes sa, sb) over an
+  // interval of width w.
+  static bool KeepsSide(double ga, double sa, double gb, double sb, double s, double k,
+                        double w) {
     if (!((ga > 0 && gb > 0) || (ga < 0 && gb < 0))) return false;
-    return CannotReachZero(std::abs(ga), std::abs(gb), s, k, w);
+    return CannotReachZero(std::abs(ga), std::abs(gb), s, k, w) ||
+           TangentsKeepSide(ga, sa, gb, sb, k, w);
   }
-  // Whether the trace cannot cross any of the edges between meridian points
-  // qa and qb an interval of width w apart.
-  bool NoneCrossed(const Eigen::Vector2d& qa, const Eigen::Vector2d& qb, double w) const {
+  // Whether the trace cannot reach the edge of `l` between the circle's
+  // values a and b, an interval of width w apart: it stays on one side of
+  // the edge's line, or before its start or past its end along it.
+  static bool Misses(const Line& l, const CircleField::Value& a,
+                     const CircleField::Value& b, double w) {
+    const Eigen::Vector2d da = a.q - l.a, db = b.q - l.a;
+    if (KeepsSide(l.n.dot(da), l.n.dot(a.dq), l.n.dot(db), l.n.dot(b.dq), l.slope_l,
+                  l.curve_l, w))
+      return true;
+    const double pa = l.u.dot(da), pb = l.u.dot(db);
+    const double sa = l.u.dot(a.dq), sb = l.u.dot(b.dq);
+    if (pa < 0 && KeepsSide(pa, sa, pb, sb, l.slope_p, l.curve_p, w)) return true;
+    return pa > l.length &&
+           KeepsSide(pa - l.length, sa, pb - l.length, sb, l.slope_p, l.curve_p, w);
+  }
+  // Whether the trace cannot cross any of the edges between the circle's
+  // values a and b, an interval of width w apart.
+  bool NoneCrossed(const CircleField::Value& a, const CircleField::Value& b,
+                   double w) const {
     if (count == 0) return false;
-    for (int k = 0; k < count; ++k) {
-      const Line& l = line[k];
-      const Eigen::Vector2d da = qa - l.a, db = qb - l.a;
-      if (KeepsSide(l.n.dot(da), l.n.dot(db), l.slope_l, l.curve_l, w)) continue;
-      const double pa = l.u.dot(da), pb = l.u.dot(db);
-      if (pa < 0 && KeepsSide(pa, pb, l.slope_p, l.curve_p, w)) continue;
-      if (pa > l.length &&
-          KeepsSide(pa - l.length, pb - l.length, l.slope_p, l.curve_p, w))
-        continue;
-      return false;
-    }
+    for (int k = 0; k < count; ++k)
+      if (!Misses(line[k], a, b, w)) return false;
     return true;
+  }
+  // Whether the trace, from a to b (on opposite sides of the surface, w
+  // apart), crosses the surface once: it misses every edge but one, and
+  // crosses that edge's line once (its line function is monotone there,
+  // CrossesOnce: it has no kink at the profile's corners, as f has). Every
+  // point where f changes sign lies on the surface, so on that edge's line,
+  // and the trace meets the line once. Near a corner f's curvature has no
+  // bound, Monotone cannot tell, and this spares the scan's halvings down to
+  // its finest interval at each end of every arc there.
+  bool OneCrossed(const CircleField::Value& a, const CircleField::Value& b,
+                  double w) const {
+    if (count == 0) return false;
+    const Line* only = nullptr;
+    for (int k = 0; k < count; ++k) {
+      if (Misses(line[k], a, b, w)) continue;
+      if (only) return false;
+      only = &line[k];
+    }
+    return only &&
+           CrossesOnce(only->n.dot(a.q - only->a), only->n.dot(a.dq),
+                       only->n.dot(b.q - only->a), only->n.dot(b.dq), only->curve_l, w);
   }
 };
 
@@ -217,26 +327,46 @@ struct Scan {
     const double w = b.phi - a.phi;
     if (a.inside() != b.inside()) {
       // Ends on opposite sides hold an odd number of crossings: one when f
-      // is monotone over the interval (Monotone), or when the interval
-      // is as fine as the scan goes; otherwise it is halved, so that a
-      // rim leaving the solid and coming back (two contacts a few degrees
-      // apart, as a tilted piston meets a chamfered mouth) is not taken
-      // for one arc through the gap.
-      if (level >= kMaxLevels || Monotone(a, b, bounds.curvature, w)) {
+      // is monotone over the interval (Monotone), or when the trace crosses
+      // the surface once (EdgeLines::OneCrossed: near a corner, where f has
+      // a kink), or when the interval is as fine as the scan goes;
+      // otherwise it is halved, so that a rim leaving the solid and coming
+      // back (two contacts a few degrees apart, as a tilted piston meets a
+      // chamfered mouth) is not taken for one arc through the gap.
+      if (level >= kMaxLevels || Monotone(a, b, bounds.curvature, w) ||
+          lines.OneCrossed(a.v, b.v, w)) {
         Add(Crossing(field, a, b));
         return;
       }
     } else {
       // f cannot leave its side and come back over the interval: by its
       // slope bound, or by its curvature bound (f stays within K w^2 / 8 of
-      // the chord, w the interval's width, K >= |f''| on it: TravelBounds),
+      // the chord, w the interval's width, K >= |f''| on it: TravelBounds,
+      // or within K t^2 / 2 of its tangents at the ends: TangentsKeepSide),
       // or because the trace can cross none of the edges near it (EdgeLines:
       // their lines have no kink where f has one, at a corner).
       if (CannotReachZero(std::abs(a.v.f), std::abs(b.v.f), bounds.slope,
-                          bounds.curvature, w))
+                          bounds.curvature, w) ||
+          TangentsKeepSide(a.v.f, a.v.slope, b.v.f, b.v.slope, bounds.curvature, w))
         return;
-      if (lines.NoneCrossed(a.v.q, b.v.q, w)) return;
-      if (level >= kMaxLevels) return;  // a dip shallower than the bound: left out
+      if (lines.NoneCrossed(a.v, b.v, w)) return;
+      if (level >= kMaxLevels) {
+        // The finest interval. A dip into the solid narrower than it (a
+        // rim crossing a corner's edge tilted 5 deg dips in a V 1 um deep
+        // and 5e-4 rad wide) or a gap out of it, between ends whose slopes
+        // bracket f's least (greatest), is found by the deepest point's
+        // search (Extremum); another is shallower than the slope bound
+        // over the interval, and left out.
+        const double s = a.inside() ? -1.0 : 1.0;
+        if (s * a.v.slope < 0 && s * b.v.slope > 0) {
+          const Sample m = Extremum(field, a, b, s);
+          if (m.inside() != a.inside()) {
+            Add(Crossing(field, a, m));
+            Add(Crossing(field, m, b));
+          }
+        }
+        return;
+      }
     }
     const double h = kScanAngles.half[level];
     const Unit um{(ua.cs + ub.cs) * h, (ua.sn + ub.sn) * h};
@@ -344,49 +474,9 @@ double DeepestAngle(const PlacedCircle& c, const NearEdges& solid, const Arc& ar
     }
     lo = x0 - 2 * M_PI / kSamples, hi = x0 + 2 * M_PI / kSamples;
   }
-  CircleField::Value a = field(lo), b = field(hi);
-  const auto lower = [&] { return a.f <= b.f ? lo : hi; };
-  if (!(a.slope < 0 && b.slope > 0)) return lower();  // no interior minimum bracketed
-  // The slope changes sign at the minimum. Where the rim crosses the solid's
-  // medial axis (equally deep under two faces) f has a kink there, a V;
-  // elsewhere a smooth bowl. A secant of the slope (regula falsi) finds a
-  // bowl's bottom, and the meeting point of the ends' tangents a V's point
-  // once the ends lie on its straight arms; either creeps when an end is
-  // far out on a curved arm. So the steps cycle: a secant, a meeting point,
-  // and a bisection when those two did not halve the bracket (Dekker's
-  // safeguard: the bracket halves at least every third query), else a
-  // second meeting point. A meeting point is kept a hair inside the
-  // bracket: a V's point found at an end, its slope one arm's, is then
-  // bracketed by the probe beside it and the bracket closes to the
-  // tolerance. It stops when f can change by less than kDeepestTolerance
-  // over the bracket (f convex on it, the premise of the search: its slope
-  // lies between the ends').
-  double checkpoint = hi - lo;  // the bracket's width at the cycle's start
-  for (int i = 0; i < kMaxDeepest; ++i) {
-    if ((hi - lo) * std::max(-a.slope, b.slope) < kDeepestTolerance) break;
-    const int phase = i % 3;
-    if (phase == 0) checkpoint = hi - lo;
-    double x;
-    if (phase == 0) {
-      x = lo - a.slope * (hi - lo) / (b.slope - a.slope);
-    } else if (phase == 2 && hi - lo > 0.5 * checkpoint) {
-      x = 0.5 * (lo + hi);
-    } else {
-      const double hair = 0.5 * kDeepestTolerance / std::max(-a.slope, b.slope);
-      const double meet = (b.f - a.f + a.slope * lo - b.slope * hi) / (a.slope - b.slope);
-      x = std::min(std::max(meet, lo + hair), hi - hair);
-    }
-    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
-    const CircleField::Value v = field(x);
-    if (v.slope < 0) {
-      lo = x, a = v;
-    } else if (v.slope > 0) {
-      hi = x, b = v;
-    } else {
-      return x;
-    }
-  }
-  return lower();
+  const Sample a{lo, field(lo)};
+  const Sample b{hi, field(hi)};
+  return Extremum(field, a, b, 1.0).phi;
 }
 
 }  // namespace vahf::contact

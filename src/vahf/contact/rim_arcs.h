@@ -13,18 +13,23 @@
 // (theta the tilt between the circle's axis and the solid's, r_min the least
 // radius of the circle's meridian trace), and f is 1-Lipschitz in (r, z). So
 // f is sampled at kSamples angles; an interval whose ends lie farther from
-// the surface than this bound lets f travel holds no crossing, an interval
+// the surface than this bound lets f travel, or whose ends' tangents keep f
+// on their side within its curvature bound, holds no crossing; an interval
 // whose ends have opposite signs and on which f is monotone (its slopes at
 // the ends and its curvature bound say so) holds one, found by Newton's
-// method inside the bracket (f' = n . P', n the surface normal), and any
-// other interval is halved, at most kMaxLevels times (below that an
-// excursion into or out of the solid is shallower than the bound over the
-// last interval, about 0.2 um at the scenes' tilts, and is left out). The
-// curvature bound adds the bend of the distance near the profile's corners
-// (rim_arcs.cc, TravelBounds); where the trace reaches a corner, f has a
-// kink, and an interval is excluded instead when the trace can cross none of
-// the surface edges near it (the edges' lines have no kink: rim_arcs.cc,
-// EdgeLines). The queries examine only those edges (SignedDistance::Near).
+// method inside the bracket (f' = n . P', n the surface normal); and any
+// other interval is halved, at most kMaxLevels times. In the finest
+// interval a dip into the solid (or a gap out of it) whose ends' slopes
+// bracket it is searched for as an arc's deepest point is (a rim crossing
+// the other part's edge dips in a V narrower than the interval); another
+// is shallower than the bound over the interval, about 0.2 um at the
+// scenes' tilts of a degree, and is left out. The curvature bound adds the
+// bend of the distance near the profile's corners (rim_arcs.cc,
+// TravelBounds); where the trace reaches a corner, f has a kink, and the
+// surface edges near it decide instead (rim_arcs.cc, EdgeLines; their lines
+// have no kink): an interval holds no crossing when the trace can cross none
+// of them, and one when it can cross only one edge, and that edge's line
+// once. The queries examine only those edges (SignedDistance::Near).
 #pragma once
 
 #include <Eigen/Core>
