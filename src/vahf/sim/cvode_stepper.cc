@@ -54,6 +54,7 @@ int Jacobian(realtype, N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, 
   if (!IsFinite(m)) return 1;  // recoverable, as in Rhs
   LoadJacobian dloads;
   const Loads loads = c.model.LoadsAt(m, p.rhs->held(), &c.contact_counters, &dloads);
+  c.Evaluated(m, loads.contact.max_depth);
   const BodyJacobian jacobian =
       DerivativeJacobian(c.model, state, loads, dloads, c.model.gravity);
   for (int j = 0; j < kBodyStateSize; ++j)

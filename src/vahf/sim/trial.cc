@@ -84,6 +84,7 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key,
   c.work = options.initial_work;
   c.record_trace = options.record_trace;
   c.difference_quotient_jacobian = options.difference_quotient_jacobian;
+  c.depth_pass_every_step = options.depth_pass_every_step;
   c.time_phases = options.time_phases;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = ThreadCpuSeconds();

@@ -33,6 +33,10 @@ struct TrialOptions {
   // CVODE only, for comparisons and tests: CVODE's difference-quotient
   // Jacobian (13 right-hand sides each) instead of the analytic one.
   bool difference_quotient_jacobian = false;
+  // For tests and comparisons: a contact pass at every accepted step for its
+  // checks, rather than the bound from the last pass where that settles them
+  // (stepper_driver.cc, Drive::DepthAt). The same checks' decisions.
+  bool depth_pass_every_step = false;
   // For benchmarks: measure where the time goes (TrialResult::phases,
   // phase_seconds.h). Changes no bit of the result.
   bool time_phases = false;

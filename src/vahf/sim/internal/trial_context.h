@@ -72,6 +72,8 @@ struct TrialContext {
   // CVODE: its own difference-quotient Jacobian instead of the analytic one
   // (TrialOptions, for comparisons).
   bool difference_quotient_jacobian = false;
+  // A contact pass at every accepted step (TrialOptions, for comparisons).
+  bool depth_pass_every_step = false;
   // Where the time goes, when asked (TrialOptions::time_phases).
   bool time_phases = false;
   PhaseSeconds phases;
@@ -89,12 +91,27 @@ struct TrialContext {
 
   contact::ContactForces ContactAt(const contact::RigidMotion& m) {
     const PhaseTimer timer(Timing(&PhaseSeconds::contact));
-    return model.ContactAt(m, &contact_counters);
+    contact::ContactForces out = model.ContactAt(m, &contact_counters);
+    Evaluated(m, out.max_depth);
+    return out;
   }
   // TrialModel::LoadsAt with this trial's counters, its contact timed.
   Loads LoadsAt(const contact::RigidMotion& m, const Decision& d) {
-    return model.LoadsAt(m, d, &contact_counters, nullptr,
-                         time_phases ? &phases : nullptr);
+    Loads out =
+        model.LoadsAt(m, d, &contact_counters, nullptr, time_phases ? &phases : nullptr);
+    Evaluated(m, out.contact.max_depth);
+    return out;
+  }
+
+  // The last contact evaluated, whatever asked for it (a right-hand side, a
+  // Jacobian, a check): the part's pose there and its deepest point, m; a
+  // depth below zero: none yet. A bound on the depth nearby
+  // (stepper_driver.cc, Drive::DepthAt).
+  Eigen::Isometry3d evaluated_pose = Eigen::Isometry3d::Identity();
+  double evaluated_depth = -1;
+  void Evaluated(const contact::RigidMotion& m, double depth) {
+    evaluated_pose = m.pose;
+    evaluated_depth = depth;
   }
 
   // V (Eq. 1: cast, given, or 1) and the factors for the part at pose m with
