@@ -79,8 +79,9 @@ int InsideArcs(const PlacedCircle& c, const NearEdges& solid, Arc arcs[kMaxArcs]
 // The angle of an arc's deepest point, the least signed distance: where the
 // distance's slope changes sign, by regula falsi (Illinois) from the arc's
 // ends (a whole circle: from the samples either side of the least of
-// kSamples), which also finds a kink where two faces meet. Counts as
-// InsideArcs.
+// kSamples), which also finds a kink where two faces meet; where the search
+// stops on its tolerance, the zero of the slopes' chord over its last
+// bracket. Counts as InsideArcs.
 double DeepestAngle(const PlacedCircle& c, const NearEdges& solid, const Arc& arc,
                     std::uint64_t* queries, std::uint64_t* edges);
 
