@@ -349,12 +349,6 @@ TEST(RevolvedContact, MixedSceneSumsTheExactAndTheGeneralPath) {
   EXPECT_EQ(counters.evaluations, 1u);
 }
 
-}  // namespace
-}  // namespace vahf::contact
-
-namespace vahf::contact {
-namespace {
-
 // Every rim circle of both passes (the peg's rims in the bore's frame against
 // the bore, the bore's in the peg's against the peg), with its field.
 template <typename Visit>
@@ -568,12 +562,6 @@ TEST(RevolvedContact, LoadTurnsContinuouslyAcrossACornersMedialAxis) {
   EXPECT_GT(std::abs(below - above), 0.9 * line) << below << " " << above;
 }
 
-}  // namespace
-}  // namespace vahf::contact
-
-namespace vahf::contact {
-namespace {
-
 // A rim tilted a few degrees at a bore's mouth can lie in the solid at two
 // places a fraction of a radian apart and leave it in between: the piston of
 // the hydraulic cylinder scene (ISO 6020-2 bore 63, 1 mm chamfers) wedged
@@ -661,12 +649,6 @@ TEST(RevolvedContact, AnArcNeverSpansAGapOutsideTheSolid) {
   EXPECT_GT(split, 10);  // the poses do put two contacts close together
 }
 
-}  // namespace
-}  // namespace vahf::contact
-
-namespace vahf::contact {
-namespace {
-
 // Where a rim crosses the other part's convex edge, it dips into that solid
 // in a V as narrow as its depth over the trace's speed: the piston of the
 // hydraulic cylinder scene striking the barrel's mouth tilted 5 deg (a
@@ -707,12 +689,6 @@ TEST(RevolvedContact, FindsADipNarrowerThanTheScansFinestInterval) {
   EXPECT_EQ(dips, 2);
 }
 
-}  // namespace
-}  // namespace vahf::contact
-
-namespace vahf::contact {
-namespace {
-
 // The scan's cost where rims meet the other part near its corners (the
 // corner and mouth poses above, both ways): an interval is settled by the
 // ends' tangents (the distance and the edge lines within their curvature
@@ -742,12 +718,6 @@ TEST(RevolvedContact, ScansARimNearACornerInFewQueries) {
   std::printf("%d rims in reach, %.1f queries a rim\n", rims, per_rim);
   EXPECT_LT(per_rim, 16.0);
 }
-
-}  // namespace
-}  // namespace vahf::contact
-
-namespace vahf::contact {
-namespace {
 
 // An arc's ends are where its rim crosses the surface. The crossing solve
 // returned its bracket's middle when a Newton step from the bracket's end
@@ -792,12 +762,6 @@ TEST(RevolvedContact, EveryArcEndsOnTheSurface) {
   }
   ASSERT_GT(ends, 1000);
 }
-
-}  // namespace
-}  // namespace vahf::contact
-
-namespace vahf::contact {
-namespace {
 
 // In a flat-bottomed bowl the deepest point's search stops on its
 // tolerance (the depth within 1e-10 m over the bracket) with a bracket that

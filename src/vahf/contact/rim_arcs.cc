@@ -30,24 +30,34 @@ class CircleField {
     double f;            // signed distance, m
     double slope;        // df/dphi, m/rad
     Eigen::Vector2d q;   // the point's meridian coordinates (r, z), m
-    Eigen::Vector2d dq;  // their slopes d(r, z)/dphi, m/rad
+    Eigen::Vector2d dq;  // their slopes d(r, z)/dphi, m/rad (the scan's only)
   };
-  Value operator()(double phi) const { return At(std::cos(phi), std::sin(phi)); }
-  // At the angle whose cosine and sine are cs and sn.
-  Value At(double cs, double sn) const {
+  // At an angle, for the solves (the crossings, the deepest points), which
+  // need no slopes of the trace.
+  Value operator()(double phi) const {
+    return Query(std::cos(phi), std::sin(phi), false);
+  }
+  // At the angle whose cosine and sine are cs and sn, with the trace's slopes
+  // (the scan's tests).
+  Value At(double cs, double sn) const { return Query(cs, sn, true); }
+  const NearEdges& solid() const { return solid_; }
+
+ private:
+  Value Query(double cs, double sn, bool trace_slopes) const {
     const Eigen::Vector3d p = c_.centre + c_.radius * (cs * c_.x + sn * c_.y);
     ++*queries_;
     Eigen::Vector2d q;
     const Distance d = solid_.At(p, edges_, &q);
     const Eigen::Vector3d t = cs * c_.y - sn * c_.x;  // dP/dphi over the radius
-    const Eigen::Vector3d dp = c_.radius * t;
-    // r' = (P_xy . P'_xy) / r; on the axis, where r has no slope, 0.
-    const double dr = q.x() > 0 ? (p.x() * dp.x() + p.y() * dp.y()) / q.x() : 0.0;
-    return {d.distance, c_.radius * d.normal.dot(t), q, {dr, dp.z()}};
+    Value v{d.distance, c_.radius * d.normal.dot(t), q, Eigen::Vector2d::Zero()};
+    if (trace_slopes) {
+      const Eigen::Vector3d dp = c_.radius * t;
+      // r' = (P_xy . P'_xy) / r; on the axis, where r has no slope, 0.
+      v.dq = {q.x() > 0 ? (p.x() * dp.x() + p.y() * dp.y()) / q.x() : 0.0, dp.z()};
+    }
+    return v;
   }
-  const NearEdges& solid() const { return solid_; }
 
- private:
   const PlacedCircle& c_;
   const NearEdges& solid_;
   std::uint64_t* queries_;
@@ -195,14 +205,15 @@ bool TangentsKeepSide(double ga, double sa, double gb, double sb, double k, doub
   return ga > 0 && gb > 0 && ga + 0.5 * w * sa > bend && gb - 0.5 * w * sb > bend;
 }
 
-// Whether g, with values ga and gb of opposite strict signs and slopes sa and
-// sb at the ends of an interval of width w, its curvature at most k on it, is
-// monotone and so crosses zero once: its slope has the crossing's sign at
-// both ends, and it stays above the lower of the lines s_a - k t and
-// s_b - k (w - t), whose meeting point is (s_a + s_b - k w) / 2 over zero.
-bool CrossesOnce(double ga, double sa, double gb, double sb, double k, double w) {
-  if (!((ga < 0 && gb > 0) || (ga > 0 && gb < 0))) return false;
-  if (ga > 0) sa = -sa, sb = -sb;
+// Whether g, with values ga and gb and slopes sa and sb at the ends of an
+// interval of width w, its curvature at most k on it, is monotone there: its
+// slope has the sign of gb - ga at both ends, and it stays above the lower of
+// the lines s_a - k t and s_b - k (w - t), whose meeting point is
+// (s_a + s_b - k w) / 2 over zero. With ends on opposite sides, g then
+// crosses zero once.
+bool Monotone(double ga, double sa, double gb, double sb, double k, double w) {
+  const double s = gb > ga ? 1.0 : -1.0;
+  sa *= s, sb *= s;
   return sa > 0 && sb > 0 && sa + sb > k * w;
 }
 
@@ -286,7 +297,7 @@ struct EdgeLines {
   // Whether the trace, from a to b (on opposite sides of the surface, w
   // apart), crosses the surface once: it misses every edge but one, and
   // crosses that edge's line once (its line function is monotone there,
-  // CrossesOnce: it has no kink at the profile's corners, as f has). Every
+  // Monotone: it has no kink at the profile's corners, as f has). Every
   // point where f changes sign lies on the surface, so on that edge's line,
   // and the trace meets the line once. Near a corner f's curvature has no
   // bound, Monotone cannot tell, and this spares the scan's halvings down to
@@ -300,22 +311,12 @@ struct EdgeLines {
       if (only) return false;
       only = &line[k];
     }
-    return only &&
-           CrossesOnce(only->n.dot(a.q - only->a), only->n.dot(a.dq),
-                       only->n.dot(b.q - only->a), only->n.dot(b.dq), only->curve_l, w);
+    if (!only) return false;
+    const double la = only->n.dot(a.q - only->a), lb = only->n.dot(b.q - only->a);
+    return ((la < 0 && lb > 0) || (la > 0 && lb < 0)) &&
+           Monotone(la, only->n.dot(a.dq), lb, only->n.dot(b.dq), only->curve_l, w);
   }
 };
-
-// Whether f, from a to b (ends on opposite sides, w apart), is monotone and
-// so crosses zero once: its slope has the crossing's sign at both ends, and
-// with |f''| <= K it stays above the lower of the lines s_a - K (phi - a)
-// and s_b - K (b - phi), whose meeting point is (s_a + s_b - K w) / 2 over
-// zero. Never near a profile's corner, where K is infinite.
-bool Monotone(const Sample& a, const Sample& b, double curvature, double w) {
-  const double s = b.v.f > a.v.f ? 1.0 : -1.0;
-  const double sa = s * a.v.slope, sb = s * b.v.slope;
-  return sa > 0 && sb > 0 && sa + sb > curvature * w;
-}
 
 struct Scan {
   Scan(const CircleField& f, const Bounds& b)
@@ -346,7 +347,8 @@ struct Scan {
       // otherwise it is halved, so that a rim leaving the solid and coming
       // back (two contacts a few degrees apart, as a tilted piston meets a
       // chamfered mouth) is not taken for one arc through the gap.
-      if (level >= kMaxLevels || Monotone(a, b, bounds.curvature, w) ||
+      if (level >= kMaxLevels ||
+          Monotone(a.v.f, a.v.slope, b.v.f, b.v.slope, bounds.curvature, w) ||
           lines.OneCrossed(a.v, b.v, w)) {
         Add(Crossing(field, a, b));
         return;
