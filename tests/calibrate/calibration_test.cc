@@ -15,6 +15,7 @@
 
 #include "vahf/calibrate/synthetic_lab.h"
 #include "vahf/core/error.h"
+#include "vahf/human/factor_curves.h"
 #include "vahf/scene/scene_loader.h"
 
 namespace vahf::calibrate {
@@ -162,6 +163,120 @@ TEST(Calibration, NinetyFivePercentIntervalsCoverTheTruthAsOftenAsTheyClaim) {
       "coverage of kappa_true = %.0f N/m: %d of %d 95 %% intervals; mean se %.1f N/m\n",
       kKappaTrue, covered, kDatasets, se_sum / kDatasets);
   EXPECT_GE(covered, env ? static_cast<int>(0.85 * kDatasets) : 17);
+}
+
+// The lab's tallest and shortest operators: GB/T 10000-1988, the P95 man
+// (18-60) and the P5 woman (18-55), as data/synthetic_block has them. At the
+// paper's fractions D1 = 0.85 arm and D2 = 0.39 stature are 0.673 m and
+// 0.692 m for the man: a 5 % step of D1's fraction passes D2.
+SyntheticLabSpec ReachLab(std::uint64_t seed, const human::ReachCurve& reach) {
+  SyntheticLabSpec spec = BlockLab(seed);
+  spec.scene.params.reach = reach;
+  spec.truth.emplace_back("reach/d1_arm_fraction", reach.d1_arm_fraction);
+  spec.truth.emplace_back("reach/d2_height_fraction", reach.d2_height_fraction);
+  spec.truth.emplace_back("reach/d3_height_fraction", reach.d3_height_fraction);
+  spec.operators = {{"male P95", "male", 1.775, 0.792, "GB/T 10000-1988"},
+                    {"female P5", "female", 1.484, 0.614, "GB/T 10000-1988"}};
+  spec.repetitions = 8;
+  return spec;
+}
+
+// D1-D3 (start, lower, upper each) and kappa, to each operator's mean time.
+CalibrationSpec ReachAndKappa(const std::vector<ParameterSpec>& reach) {
+  CalibrationSpec spec = KappaFromTime();
+  std::vector<ParameterSpec> all = reach;
+  all.push_back({"guidance/kappa", 400.0, 50.0, 2000.0, "/parameters/3"});
+  spec.stages[0].parameters = all;
+  spec.stages[0].targets[0].by_operator = true;
+  return spec;
+}
+
+// A joint fit of D1-D3 and kappa runs to its end where a difference step
+// would break D1 < D2 < D3 for the tallest operator: the first Jacobian's
+// step of D1's fraction to 0.8925 does (0.707 m > 0.692 m), and before the
+// feasible differences the fit stopped there with an input error.
+TEST(Calibration, AJointFitOfReachAndKappaRunsToItsEndAtTheRulesEdge) {
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const data::LabDataset lab = GenerateSyntheticLab(ReachLab(31, {}), Quiet());
+  const CalibrationSpec spec =
+      ReachAndKappa({{"reach/d1_arm_fraction", 0.85, 0.5, 1.2, "/parameters/0"},
+                     {"reach/d2_height_fraction", 0.39, 0.3, 0.6, "/parameters/1"},
+                     {"reach/d3_height_fraction", 0.68, 0.5, 0.9, "/parameters/2"}});
+  CalibrationResult r;
+  ASSERT_NO_THROW(r = Fit(scene, lab, spec, "test", 7, 8, Quiet()));
+  EXPECT_GT(r.differences.one_sided, 0) << r.ceres_full;
+  EXPECT_EQ(r.differences.failed, 0);
+  human::ReachCurve fitted;
+  fitted.d1_arm_fraction = r.parameters[0].estimate;
+  fitted.d2_height_fraction = r.parameters[1].estimate;
+  fitted.d3_height_fraction = r.parameters[2].estimate;
+  for (const auto& op : ReachLab(31, {}).operators)
+    EXPECT_EQ(fitted.Violation(op.arm_length, op.height), "") << op.name;
+  EXPECT_GT(r.parameters[3].estimate, 50.0);
+  EXPECT_LT(r.parameters[3].estimate, 2000.0);
+}
+
+// Fractions at which every operator's reach stays on its plateau (D1 beyond
+// the arm's length): no target moves with them.
+human::ReachCurve FlatReach() {
+  human::ReachCurve reach;
+  reach.d1_arm_fraction = 1.1;
+  reach.d2_height_fraction = 0.62;
+  reach.d3_height_fraction = 0.8;
+  return reach;
+}
+
+// D1-D3 that move no target are named as not identified, with no interval;
+// kappa, which the times determine, keeps its interval (with the D's held),
+// and it holds the truth. Before, Ceres' covariance was rank deficient and
+// no parameter had an interval.
+TEST(Calibration, ReachThatMovesNoTargetIsNotIdentifiedAndKappaKeepsItsInterval) {
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const data::LabDataset lab = GenerateSyntheticLab(ReachLab(33, FlatReach()), Quiet());
+  const CalibrationSpec spec =
+      ReachAndKappa({{"reach/d1_arm_fraction", 1.1, 1.0, 1.3, "/parameters/0"},
+                     {"reach/d2_height_fraction", 0.62, 0.6, 0.7, "/parameters/1"},
+                     {"reach/d3_height_fraction", 0.8, 0.75, 0.9, "/parameters/2"}});
+  const CalibrationResult r = Fit(scene, lab, spec, "test", 7, 12, Quiet());
+  EXPECT_EQ(r.rank.rank, 1) << r.rank.singular_values.transpose();
+  for (int i = 0; i < 3; ++i) {
+    const FittedParameter& d = r.parameters[static_cast<std::size_t>(i)];
+    EXPECT_FALSE(d.identified) << d.name;
+    EXPECT_NE(d.not_identified_why.find("null space"), std::string::npos)
+        << d.not_identified_why;
+    EXPECT_TRUE(std::isnan(d.standard_error)) << d.name;
+    EXPECT_TRUE(std::isnan(d.ci.lower) && std::isnan(d.ci.upper)) << d.name;
+  }
+  const FittedParameter& k = r.parameters[3];
+  ASSERT_TRUE(k.identified) << k.not_identified_why;
+  ASSERT_TRUE(r.covariance_ok);
+  EXPECT_GT(k.standard_error, 0.0);
+  EXPECT_LE(k.ci.lower, kKappaTrue) << r.ceres_brief;
+  EXPECT_GE(k.ci.upper, kKappaTrue) << r.ceres_brief;
+  EXPECT_LT(k.ci.upper, 400.0);
+}
+
+// A start that breaks the rule is an input error naming the experiment
+// file, the start and the operator.
+TEST(Calibration, AStartThatBreaksTheReachRuleIsNamed) {
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const data::LabDataset lab = GenerateSyntheticLab(ReachLab(35, {}), Quiet());
+  const CalibrationSpec spec =
+      ReachAndKappa({{"reach/d1_arm_fraction", 0.9, 0.5, 1.2, "/parameters/0"},
+                     {"reach/d2_height_fraction", 0.39, 0.3, 0.6, "/parameters/1"},
+                     {"reach/d3_height_fraction", 0.68, 0.5, 0.9, "/parameters/2"}});
+  try {
+    Calibrate(scene, lab, spec, "calib.json", 1, 2, Quiet());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "calib.json");
+    const std::string what = e.what();
+    EXPECT_NE(what.find("reach/d1_arm_fraction 0.9"), std::string::npos) << what;
+    EXPECT_NE(what.find("operator male P95"), std::string::npos) << what;
+  }
 }
 
 TEST(Calibration, BoundsThatAdmitABrokenSceneAreNamed) {

@@ -13,6 +13,8 @@
 #include <optional>
 
 #include "vahf/calibrate/bracketed_search.h"
+#include "vahf/calibrate/feasible_difference.h"
+#include "vahf/calibrate/identifiability.h"
 #include "vahf/core/error.h"
 #include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
@@ -22,10 +24,7 @@ namespace {
 
 // Two-sided 95 % normal quantile, for intervals from the covariance.
 constexpr double kZ95 = 1.959963984540054;
-// chi^2 with one degree of freedom at 0.95 (3.841459, gsl_cdf_chisq_Pinv),
-// halved: the rise of a cost of 1/2 sum r^2 that bounds the 95 % profile
-// interval.
-const double kProfileRise = 0.5 * gsl_cdf_chisq_Pinv(0.95, 1.0);
+const double kProfileRise = ProfileRise();
 
 std::string VectorText(const std::vector<ParameterSpec>& params, const double* x) {
   std::string out;
@@ -62,12 +61,40 @@ class VirtualModel {
     std::sort(segments_.begin(), segments_.end());
   }
 
+  // Empty when x lies in the valid region: within the parameters' bounds,
+  // a scene whose rules hold (scene::ParameterViolation) and, for a design
+  // of the lab's operators, the reach rule D1 < D2 < D3 for each of them;
+  // else the first rule broken.
+  std::string Violation(const double* x) const {
+    for (std::size_t i = 0; i < stage_.parameters.size(); ++i) {
+      const ParameterSpec& p = stage_.parameters[i];
+      if (!(x[i] >= p.lower && x[i] <= p.upper))
+        return fmt::format("{} = {:.6g} lies outside its bounds [{:.6g}, {:.6g}]", p.name,
+                           x[i], p.lower, p.upper);
+    }
+    const scene::Scene s = Applied(x);
+    std::string violation = scene::ParameterViolation(s);
+    if (violation.empty() && segments_.empty()) violation = LabReachViolation(s, lab_);
+    return violation;
+  }
+
+  // The virtual statistics at x; NaN (no value: the solver steps back)
+  // outside the valid region, where nothing is simulated.
   const std::vector<Statistic>& At(const double* x) {
     std::vector<double> key(x, x + stage_.parameters.size());
     auto found = cache_.find(key);
     if (found != cache_.end()) return found->second;
+    const std::string violation = Violation(x);
+    if (!violation.empty()) {
+      ++refused_;
+      if (progress_)
+        progress_(fmt::format("calibrate: {} refused ({}); the solver steps back",
+                              VectorText(stage_.parameters, x), violation));
+      return cache_.emplace(std::move(key), std::vector<Statistic>(targets_.size()))
+          .first->second;
+    }
     const auto start = std::chrono::steady_clock::now();
-    const scene::Scene s = WithParameters(scene_, stage_.parameters, key, file_);
+    const scene::Scene s = Applied(x);
     std::vector<Statistic> stats;
     if (segments_.empty()) {
       const experiment::DesignRun run = experiment::RunDesign(
@@ -93,8 +120,16 @@ class VirtualModel {
   }
 
   int evaluations() const { return evaluations_; }
+  int refused() const { return refused_; }
 
  private:
+  scene::Scene Applied(const double* x) const {
+    scene::Scene out = scene_;
+    for (std::size_t i = 0; i < stage_.parameters.size(); ++i)
+      scene::FindParam(stage_.parameters[i].name)->real(out.params) = x[i];
+    return out;
+  }
+
   const scene::Scene& scene_;
   const data::LabDataset& lab_;
   const CalibrationSpec& spec_;
@@ -109,18 +144,19 @@ class VirtualModel {
   std::vector<int>
       segments_;  // 0-based segments the targets read; empty: no fatigue design
   int evaluations_ = 0;
+  int refused_ = 0;  // points outside the valid region asked for
 };
 
-// One target's whitened residual at a fixed weight, for Ceres' numeric
-// differentiation. Each target is its own residual block, so that the robust
-// loss weighs each target by its own residual, not by the norm of all.
+// One target's whitened residual at a fixed weight. Each target is its own
+// residual block, so that the robust loss weighs each target by its own
+// residual, not by the norm of all.
 struct Residual {
   VirtualModel* model;
   const Target* target;
   std::size_t index;
   double sigma;
-  bool operator()(double const* const* parameters, double* residual) const {
-    const Statistic& v = model->At(parameters[0])[index];
+  bool operator()(const double* x, double* residual) const {
+    const Statistic& v = model->At(x)[index];
     if (!std::isfinite(v.value)) return false;  // no sample: Ceres steps back
     residual[0] = (v.value - target->lab.value) / sigma;
     return true;
@@ -154,6 +190,8 @@ ceres::LossFunction* MakeLoss(const CalibrationSpec& spec) {
 
 }  // namespace
 
+double ProfileRise() { return 0.5 * gsl_cdf_chisq_Pinv(0.95, 1.0); }
+
 scene::Scene WithParameters(const scene::Scene& scene,
                             const std::vector<ParameterSpec>& params,
                             const std::vector<double>& values,
@@ -182,8 +220,9 @@ namespace {
 // The cost Ceres minimises, 1/2 sum rho(r_i^2), at the stage's one-parameter
 // vector x (the golden_section solver minimises the same).
 double Cost(VirtualModel& model, const std::vector<Target>& targets,
-            const std::vector<double>& sigma, const CalibrationSpec& spec, double x) {
-  const std::vector<Statistic>& v = model.At(&x);
+            const std::vector<double>& sigma, const CalibrationSpec& spec,
+            const double* x) {
+  const std::vector<Statistic>& v = model.At(x);
   const std::unique_ptr<ceres::LossFunction> loss(MakeLoss(spec));
   double cost = 0;
   for (std::size_t i = 0; i < targets.size(); ++i) {
@@ -200,16 +239,17 @@ double Cost(VirtualModel& model, const std::vector<Target>& targets,
 void BuildProblem(ceres::Problem* problem, VirtualModel* model,
                   const CalibrationSpec& spec, const StageSpec& stage,
                   const std::vector<Target>& targets, const std::vector<double>& sigma,
-                  double* x) {
-  ceres::NumericDiffOptions diff;
-  diff.relative_step_size = spec.relative_step;
+                  const std::shared_ptr<DifferenceCounts>& counts, double* x) {
   const int p = static_cast<int>(stage.parameters.size());
+  const auto valid = [model](const double* v) { return model->Violation(v).empty(); };
   for (std::size_t i = 0; i < targets.size(); ++i) {
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<Residual, ceres::CENTRAL>(
-        new Residual{model, &targets[i], i, sigma[i]}, ceres::TAKE_OWNERSHIP, diff);
-    cost->AddParameterBlock(p);
-    cost->SetNumResiduals(1);
-    problem->AddResidualBlock(cost, MakeLoss(spec), x);
+    // The problem takes ownership of the cost function.
+    problem->AddResidualBlock(
+        MakeFeasibleDifferenceCost(p, 1, spec.relative_step,
+                                   Residual{model, &targets[i], i, sigma[i]}, valid,
+                                   counts)
+            .release(),
+        MakeLoss(spec), x);
   }
   for (int i = 0; i < p; ++i) {
     problem->SetParameterLowerBound(x, i,
@@ -230,7 +270,7 @@ std::string GoldenSectionRound(VirtualModel& model, const std::vector<Target>& t
                                CalibrationResult* out) {
   const ParameterSpec& ps = stage.parameters[0];
   const BracketedSearch search = MinimizeBracketed(
-      [&](double v) { return Cost(model, targets, sigma, spec, v); }, ps.lower, ps.upper,
+      [&](double v) { return Cost(model, targets, sigma, spec, &v); }, ps.lower, ps.upper,
       (*x)[0], spec.tolerance, spec.max_iterations, *bracket);
   (*x)[0] = search.estimate;
   *bracket = search.bracket;
@@ -282,29 +322,148 @@ void EstimateCovariance(ceres::Problem* problem, const std::vector<double>& x, i
   }
 }
 
+// The whitened residuals' Jacobian of `problem` at its parameters (m x p,
+// robustified as the solver sees it), differenced as the solver's were;
+// NaN when it cannot be evaluated.
+Eigen::MatrixXd JacobianOf(ceres::Problem* problem, int m, int p) {
+  ceres::CRSMatrix crs;
+  double cost = 0;
+  Eigen::MatrixXd j = Eigen::MatrixXd::Zero(m, p);
+  if (!problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr,
+                         &crs) ||
+      crs.num_rows != m || crs.num_cols != p)
+    return Eigen::MatrixXd::Constant(m, p, std::nan(""));
+  for (int r = 0; r < crs.num_rows; ++r)
+    for (int k = crs.rows[static_cast<std::size_t>(r)];
+         k < crs.rows[static_cast<std::size_t>(r) + 1]; ++k)
+      j(r, crs.cols[static_cast<std::size_t>(k)]) =
+          crs.values[static_cast<std::size_t>(k)];
+  return j;
+}
+
+// How far parameter i may move from the estimate x toward `bound` within
+// the valid region (a rule such as D1 < D2 < D3 may stop it first): the
+// bound, or the valid side of the region's edge found by bisection.
+double EdgeToward(const VirtualModel& model, std::vector<double> x, std::size_t i,
+                  double bound) {
+  const double from = x[i];
+  x[i] = bound;
+  if (model.Violation(x.data()).empty()) return bound;
+  double valid = from, invalid = bound;
+  for (int k = 0; k < 60 && valid != invalid; ++k) {
+    x[i] = 0.5 * (valid + invalid);
+    if (x[i] == valid || x[i] == invalid) break;
+    (model.Violation(x.data()).empty() ? valid : invalid) = x[i];
+  }
+  return valid;
+}
+
+// Points of the cost's scan along each parameter on either side of the
+// estimate (docs/calibration.md, Identifiability): enough to draw its shape.
+constexpr int kScanPoints = 3;
+
+// Which parameters of a Levenberg-Marquardt stage the targets determine
+// (identifiability.h), and the covariance that follows: Ceres' of all when
+// every one is, else that of the identified ones with the others held.
+std::vector<FittedParameter> Identify(VirtualModel& model, ceres::Problem* problem,
+                                      const std::vector<Target>& targets,
+                                      const std::vector<double>& sigma,
+                                      const CalibrationSpec& spec, const StageSpec& stage,
+                                      const std::vector<double>& x,
+                                      CalibrationResult* out) {
+  const int p = static_cast<int>(stage.parameters.size());
+  const Eigen::MatrixXd j = JacobianOf(problem, static_cast<int>(targets.size()), p);
+  Eigen::VectorXd scale(p);
+  for (int i = 0; i < p; ++i) {
+    const ParameterSpec& ps = stage.parameters[static_cast<std::size_t>(i)];
+    const double v = std::abs(x[static_cast<std::size_t>(i)]);
+    scale(i) = v > 0 ? v : ps.upper - ps.lower;
+  }
+  out->rank = RankOf(j, scale);
+  std::vector<FittedParameter> fitted(static_cast<std::size_t>(p));
+  std::vector<bool> identified(static_cast<std::size_t>(p));
+  const double at_estimate = Cost(model, targets, sigma, spec, x.data());
+  for (std::size_t i = 0; i < identified.size(); ++i) {
+    FittedParameter& f = fitted[i];
+    const ParameterSpec& ps = stage.parameters[i];
+    // The cost along parameter i alone, at kScanPoints points from the
+    // estimate to each end of its valid range, the last at the end.
+    const auto rise = [&](double bound, double* edge) {
+      *edge = EdgeToward(model, x, i, bound);
+      if (*edge == x[i]) return 0.0;
+      std::vector<double> at = x;
+      double last = 0;
+      for (int k = 1; k <= kScanPoints; ++k) {
+        at[i] = k == kScanPoints ? *edge : x[i] + (*edge - x[i]) * k / kScanPoints;
+        last = Cost(model, targets, sigma, spec, at.data()) - at_estimate;
+        f.scan.emplace_back(at[i], last);
+      }
+      return last;
+    };
+    f.scan.emplace_back(x[i], 0.0);
+    f.rise_lower = rise(ps.lower, &f.edge_lower);
+    f.rise_upper = rise(ps.upper, &f.edge_upper);
+    std::sort(f.scan.begin(), f.scan.end());
+    if (out->rank.in_null_space[i]) {
+      f.identified = false;
+      f.not_identified_why =
+          "no target moves it within a difference step of the estimate (the whitened "
+          "Jacobian's null space)";
+    } else if (f.rise_lower < kProfileRise && f.rise_upper < kProfileRise) {
+      f.identified = false;
+      f.not_identified_why = fmt::format(
+          "the cost rises by less than {:.2f} from the estimate to either end of its "
+          "range [{:.6g}, {:.6g}] ({:.3g} and {:.3g}): the targets do not bound it there",
+          kProfileRise, f.edge_lower, f.edge_upper, f.rise_lower, f.rise_upper);
+    }
+    identified[i] = f.identified;
+  }
+  if (std::all_of(identified.begin(), identified.end(), [](bool b) { return b; })) {
+    EstimateCovariance(problem, x, p, out);
+    if (out->covariance_ok) return fitted;
+  }
+  out->covariance = ConditionalCovariance(j, scale, identified);
+  out->covariance_ok = false;
+  for (int i = 0; i < p; ++i)
+    out->covariance_ok = out->covariance_ok || std::isfinite(out->covariance(i, i));
+  return fitted;
+}
+
 // Each parameter's estimate with its standard error, Wald interval and, for a
 // golden_section stage, its profile interval.
 void AddFittedParameters(const scene::Scene& scene, const StageSpec& stage,
                          const std::vector<double>& x,
+                         const std::vector<FittedParameter>& identification,
                          const std::optional<ProfileInterval>& profile,
                          CalibrationResult* out) {
   const int p = static_cast<int>(stage.parameters.size());
   for (int i = 0; i < p; ++i) {
     FittedParameter f;
+    if (!identification.empty()) f = identification[static_cast<std::size_t>(i)];
     f.name = stage.parameters[static_cast<std::size_t>(i)].name;
     f.start = stage.parameters[static_cast<std::size_t>(i)].start;
     scene::Parameters before = scene.params;  // the table's accessor takes a mutable set
     f.scene_value = scene::FindParam(f.name)->real(before);
     f.estimate = x[static_cast<std::size_t>(i)];
-    f.standard_error =
-        out->covariance_ok ? std::sqrt(out->covariance(i, i)) : std::nan("");
-    f.ci = {f.estimate - kZ95 * f.standard_error, f.estimate + kZ95 * f.standard_error};
     if (profile) {
       f.has_profile = true;
       f.profile = {profile->lower, profile->upper};
       f.profile_open_lower = profile->open_lower;
       f.profile_open_upper = profile->open_upper;
+      if (f.profile_open_lower && f.profile_open_upper) {
+        f.identified = false;
+        f.not_identified_why =
+            "its 95 % profile interval is open at both bounds: the targets do not "
+            "bound it within them";
+      }
     }
+    // No interval for what the targets do not determine.
+    const double variance = out->covariance(i, i);
+    f.standard_error =
+        f.identified && out->covariance_ok && std::isfinite(variance) && variance > 0
+            ? std::sqrt(variance)
+            : std::nan("");
+    f.ci = {f.estimate - kZ95 * f.standard_error, f.estimate + kZ95 * f.standard_error};
     out->parameters.push_back(f);
   }
 }
@@ -322,6 +481,42 @@ void AddFittedTargets(const std::vector<Target>& targets,
     t.residual = (fitted[k].value - targets[k].lab.value) / sigma[k];
     out->targets.push_back(t);
   }
+}
+
+// The stage's start, an InputError naming the experiment file where it lies
+// outside the valid region.
+std::vector<double> ValidStart(const VirtualModel& model, const StageSpec& stage,
+                               const std::string& experiment_file) {
+  std::vector<double> x;
+  for (const ParameterSpec& s : stage.parameters) x.push_back(s.start);
+  const std::string invalid = model.Violation(x.data());
+  if (!invalid.empty())
+    throw InputError(
+        experiment_file,
+        stage.pointer.empty() ? "/parameters" : stage.pointer + "/parameters",
+        VectorText(stage.parameters, x.data()),
+        "the start must lie where the model is defined: " + invalid);
+  return x;
+}
+
+// The profile interval of a golden_section stage at its estimate, on the
+// last round's weights (those of its search and covariance).
+ProfileInterval GoldenSectionProfile(VirtualModel& model,
+                                     const std::vector<Target>& targets,
+                                     const std::vector<double>& sigma,
+                                     const CalibrationSpec& spec, const StageSpec& stage,
+                                     double estimate, const std::string& prefix,
+                                     const CalibrationProgress& progress,
+                                     CalibrationResult* out) {
+  const ParameterSpec& ps = stage.parameters[0];
+  const ProfileInterval profile = ProfileBounds(
+      [&](double v) { return Cost(model, targets, sigma, spec, &v); }, ps.lower, ps.upper,
+      estimate, out->final_cost, kProfileRise, spec.relative_step, spec.tolerance);
+  out->search_log += profile.log;
+  if (progress)
+    progress(fmt::format("{}: profile interval [{:.6g}, {:.6g}] ({} evaluations)", prefix,
+                         profile.lower, profile.upper, profile.evaluations));
+  return profile;
 }
 
 }  // namespace
@@ -343,8 +538,7 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
   const std::string prefix =
       stage.name.empty() ? "calibrate" : "calibrate (" + stage.name + ")";
 
-  std::vector<double> x;
-  for (const ParameterSpec& s : stage.parameters) x.push_back(s.start);
+  std::vector<double> x = ValidStart(model, stage, experiment_file);
   const std::vector<Statistic> at_start = model.At(x.data());
 
   CalibrationResult out;
@@ -353,10 +547,12 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
   std::vector<double> sigma =
       Weights(targets, at_start, VectorText(stage.parameters, x.data()));
   std::optional<std::array<double, 3>> bracket;
+  std::vector<FittedParameter> identification;
+  const auto differences = std::make_shared<DifferenceCounts>();
   for (int round = 1; round <= kMaxRounds; ++round) {
     out.rounds = round;
     ceres::Problem problem;
-    BuildProblem(&problem, &model, spec, stage, targets, sigma, x.data());
+    BuildProblem(&problem, &model, spec, stage, targets, sigma, differences, x.data());
     const std::string brief = stage.solver == "golden_section"
                                   ? GoldenSectionRound(model, targets, sigma, spec, stage,
                                                        round, &x, &bracket, &out)
@@ -376,25 +572,26 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
       sigma = refit;
       continue;
     }
-    // The covariance of this round's problem, at the estimate.
-    EstimateCovariance(&problem, x, p, &out);
+    // The covariance of this round's problem, at the estimate; which
+    // parameters its targets determine.
+    if (stage.solver == "golden_section") {
+      EstimateCovariance(&problem, x, p, &out);
+      out.rank = RankOf(JacobianOf(&problem, m, p),
+                        Eigen::VectorXd::Constant(1, x[0] != 0 ? std::abs(x[0]) : 1.0));
+    } else {
+      identification = Identify(model, &problem, targets, sigma, spec, stage, x, &out);
+    }
     break;
   }
 
-  // The profile interval of a golden_section stage, on the last round's
-  // weights (those of its search and covariance).
   std::optional<ProfileInterval> profile;
-  if (stage.solver == "golden_section") {
-    const ParameterSpec& ps = stage.parameters[0];
-    profile = ProfileBounds(
-        [&](double v) { return Cost(model, targets, sigma, spec, v); }, ps.lower,
-        ps.upper, x[0], out.final_cost, kProfileRise, spec.relative_step, spec.tolerance);
-    out.search_log += profile->log;
-    if (progress)
-      progress(fmt::format("{}: profile interval [{:.6g}, {:.6g}] ({} evaluations)",
-                           prefix, profile->lower, profile->upper, profile->evaluations));
-  }
-  AddFittedParameters(scene, stage, x, profile, &out);
+  if (stage.solver == "golden_section")
+    profile = GoldenSectionProfile(model, targets, sigma, spec, stage, x[0], prefix,
+                                   progress, &out);
+  AddFittedParameters(scene, stage, x, identification, profile, &out);
+  out.correlation = Correlation(out.covariance);
+  out.differences = *differences;
+  out.refused = model.refused();
   AddFittedTargets(targets, at_start, model.At(x.data()), sigma, &out);
   out.evaluations = model.evaluations();
   out.seconds =

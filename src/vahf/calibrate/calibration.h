@@ -29,12 +29,16 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vahf/calibrate/calibration_input.h"
+#include "vahf/calibrate/feasible_difference.h"
+#include "vahf/calibrate/identifiability.h"
 #include "vahf/calibrate/targets.h"
 #include "vahf/data/lab_dataset.h"
 #include "vahf/experiment/runner.h"
@@ -49,6 +53,10 @@ using CalibrationSpec = CalibrationDesign;
 using StageSpec = CalibrationStage;
 // Rounds of re-weighting (see above).
 inline constexpr int kMaxRounds = 3;
+// chi^2 with one degree of freedom at 0.95 (3.841459, gsl_cdf_chisq_Pinv),
+// halved: the rise of a cost of 1/2 sum r^2 that bounds the 95 % profile
+// interval.
+double ProfileRise();
 
 // The scene with `values` (one per spec parameter) set. Values that break a
 // rule tying parameters together (D1 < D2 < D3, say) are an InputError naming
@@ -72,6 +80,18 @@ struct FittedParameter {
   bool has_profile = false;
   stats::Interval profile;
   bool profile_open_lower = false, profile_open_upper = false;
+  // Whether the targets determine it (identifiability.h); when not, why,
+  // and it has no standard error or interval.
+  bool identified = true;
+  std::string not_identified_why;
+  // Levenberg-Marquardt stages: the cost's rise from the estimate to each
+  // end of the valid region along this parameter (the others held), and
+  // where that end is (the bound, or where a rule stops it first).
+  double rise_lower = std::nan(""), rise_upper = std::nan("");
+  double edge_lower = std::nan(""), edge_upper = std::nan("");
+  // The cost's rise along this parameter alone (value, rise), in increasing
+  // value, the estimate's (0) included: its scan to either end.
+  std::vector<std::pair<double, double>> scan;
 };
 
 struct FittedTarget {
@@ -87,7 +107,13 @@ struct CalibrationResult {
   std::string solver;  // "levenberg_marquardt" or "golden_section"
   std::vector<FittedParameter> parameters;
   Eigen::MatrixXd covariance;  // of the estimate, in the parameters' units
-  bool covariance_ok = false;  // Ceres computed it (the problem is not rank deficient)
+  // A covariance was computed: Ceres' of all parameters, or, when some are
+  // not identified, that of the others with those held (identifiability.h).
+  bool covariance_ok = false;
+  Eigen::MatrixXd correlation;   // of the covariance; NaN where it has none
+  JacobianRank rank;             // of the whitened Jacobian at the estimate
+  DifferenceCounts differences;  // how the Jacobians were differenced
+  int refused = 0;               // points outside the valid region the solver asked for
   std::vector<FittedTarget> targets;
   bool converged = false;  // Ceres reported convergence in the last round
   int rounds = 0;

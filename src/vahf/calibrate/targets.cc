@@ -280,6 +280,17 @@ std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
   return out;
 }
 
+std::string LabReachViolation(const scene::Scene& scene, const data::LabDataset& lab) {
+  for (const data::LabTrial* t : FirstTrialOfEachOperator(lab)) {
+    const std::string reach = scene.params.reach.Violation(t->arm_length, t->height);
+    if (!reach.empty())
+      return fmt::format("{}/{} line {}, operator {} (height {} m, arm_length {} m): {}",
+                         lab.folder, lab.trials_file, t->line, t->operator_id, t->height,
+                         t->arm_length, reach);
+  }
+  return {};
+}
+
 Statistic VirtualStatistic(const Target& target, const experiment::DesignRun& run,
                            const std::vector<int>& segments) {
   return VirtualSamples(target, run, segments).Of(target.spec.quantity);

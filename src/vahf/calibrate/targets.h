@@ -118,6 +118,10 @@ std::vector<Target> LabTargets(const data::LabDataset& lab,
 std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
                                                  const data::LabDataset& lab, int trials);
 
+// Empty when the scene's reach parameters give every lab operator
+// D1 < D2 < D3; else the first operator they fail, with the rule's numbers.
+std::string LabReachViolation(const scene::Scene& scene, const data::LabDataset& lab);
+
 // A target's statistic on a run of LabConditions. A part trial that ended
 // as a numerical failure is left out (it says nothing about the assembly).
 // With no sample (no completed trial for assembly_time), value is NaN.

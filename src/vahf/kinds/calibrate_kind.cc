@@ -66,8 +66,12 @@ int RunCalibration(const scene::ExperimentFile& file, const RunContext& context)
   for (const auto& r : stages) {
     evaluations += r.evaluations;
     for (const auto& p : r.parameters)
-      std::printf("%s = %.6g, standard error %.3g, 95 %% interval [%.6g, %.6g]\n",
-                  p.name.c_str(), p.estimate, p.standard_error, p.ci.lower, p.ci.upper);
+      if (p.identified)
+        std::printf("%s = %.6g, standard error %.3g, 95 %% interval [%.6g, %.6g]\n",
+                    p.name.c_str(), p.estimate, p.standard_error, p.ci.lower, p.ci.upper);
+      else
+        std::printf("%s = %.6g, not identified: %s\n", p.name.c_str(), p.estimate,
+                    p.not_identified_why.c_str());
   }
   const int status = FinishRun(file, context, info.wall_seconds, written,
                                fmt::format("{} evaluations", evaluations));

@@ -19,17 +19,38 @@ std::string Number(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x
 // What every stage adds to: the three tables, the summary's lists and the
 // plot's rows (one per target, numbered across the stages).
 struct CalibrationTables {
-  Table params{{"stage", "parameter", "unit", "scene_value", "start", "lower", "upper",
-                "estimate", "standard_error", "ci_lower", "ci_upper", "at_bound",
-                "profile_lower", "profile_upper", "profile_open_lower",
-                "profile_open_upper"}};
+  Table params{{"stage",
+                "parameter",
+                "unit",
+                "scene_value",
+                "start",
+                "lower",
+                "upper",
+                "estimate",
+                "standard_error",
+                "ci_lower",
+                "ci_upper",
+                "at_bound",
+                "profile_lower",
+                "profile_upper",
+                "profile_open_lower",
+                "profile_open_upper",
+                "identified",
+                "edge_lower",
+                "edge_upper",
+                "rise_lower",
+                "rise_upper"}};
   Table targets{{"stage", "target", "unit", "lab", "lab_se", "lab_n", "virtual_start",
                  "virtual_start_se", "virtual_fitted", "virtual_fitted_se", "virtual_n",
                  "residual"}};
-  Table covariance{{"stage", "row", "column", "covariance"}};
+  Table covariance{{"stage", "row", "column", "covariance", "correlation"}};
   nlohmann::json params_json = nlohmann::json::array();
   nlohmann::json stages_json = nlohmann::json::array();
   std::vector<DataRow> plot_rows;
+  Table scan{{"stage", "parameter", "value", "cost_rise"}};
+  // Per scanned parameter: its label and rows (position from the estimate,
+  // -1 at the lower end of its range and 1 at the upper; the cost's rise).
+  std::vector<std::pair<std::string, std::vector<DataRow>>> scan_rows;
   std::string markdown;
 };
 
@@ -76,6 +97,52 @@ std::string ProfileText(const calibrate::FittedParameter& p) {
                      p.profile_open_upper ? ", open" : "");
 }
 
+// The whitened Jacobian's rank and conditioning, how it was differenced, and
+// the estimates' correlations.
+std::string IdentifiabilityText(const calibrate::CalibrationResult& r) {
+  const std::size_t p = r.parameters.size();
+  std::string values;
+  for (Eigen::Index k = 0; k < r.rank.singular_values.size(); ++k)
+    values += fmt::format("{}{:.3g}", k ? ", " : "", r.rank.singular_values(k));
+  std::string md = fmt::format(
+      "\n\nIdentifiability: the whitened Jacobian at the estimate, its columns scaled by "
+      "the estimates, has rank {} of {} (singular values {}; a direction counts as flat "
+      "below {:g} of the largest){}. Its difference columns (one per target and "
+      "parameter at each Jacobian): {} central, {} one-sided at the edge of the valid "
+      "region, {} with a shortened step; {} point(s) the solver asked for lay outside "
+      "it (bounds or a rule such as D1 < D2 < D3) and were refused.\n",
+      r.rank.rank, p, values, calibrate::kRankTolerance,
+      r.rank.rank > 0 ? fmt::format(", condition number {:.3g}", r.rank.condition) : "",
+      r.differences.central, r.differences.one_sided, r.differences.shortened, r.refused);
+  if (p < 2) return md;
+  std::vector<std::string> header = {"correlation"};
+  for (const calibrate::FittedParameter& f : r.parameters) header.push_back(f.name);
+  MarkdownTable corr{header};
+  for (std::size_t i = 0; i < p; ++i) {
+    std::vector<std::string> row = {"`" + r.parameters[i].name + "`"};
+    for (std::size_t j = 0; j < p; ++j) {
+      const double c =
+          r.correlation(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+      row.push_back(std::isfinite(c) ? fmt::format("{:.2f}", c) : "-");
+    }
+    corr.AddRow(row);
+  }
+  return md + "\n" + ToMarkdown(corr);
+}
+
+// An identified parameter whose cost, alone, rises less than the 95 %
+// profile threshold to one end of its range: the data bound it on one side.
+std::string OpenSide(const calibrate::FittedParameter& p) {
+  const double rise = calibrate::ProfileRise();
+  if (p.rise_lower < rise)
+    return fmt::format("; the cost rises {:.2g} to {}: not bounded below it",
+                       p.rise_lower, Number(p.edge_lower));
+  if (p.rise_upper < rise)
+    return fmt::format("; the cost rises {:.2g} to {}: not bounded above it",
+                       p.rise_upper, Number(p.edge_upper));
+  return "";
+}
+
 // The stage's fitted parameters: table rows, summary entries and Markdown.
 void AddParameters(const std::string& stage, const calibrate::CalibrationResult& r,
                    const calibrate::CalibrationStage& spec, CalibrationTables* t) {
@@ -90,12 +157,27 @@ void AddParameters(const std::string& stage, const calibrate::CalibrationResult&
     const bool at_bound = p.estimate <= ps.lower || p.estimate >= ps.upper;
     const std::string unit = scene::FindParam(p.name)->unit;
     const double nan = std::nan("");
-    t->params.AddRow(
-        {stage, p.name, unit, p.scene_value, p.start, ps.lower, ps.upper, p.estimate,
-         p.standard_error, p.ci.lower, p.ci.upper, std::int64_t{at_bound ? 1 : 0},
-         p.has_profile ? p.profile.lower : nan, p.has_profile ? p.profile.upper : nan,
-         std::int64_t{p.profile_open_lower ? 1 : 0},
-         std::int64_t{p.profile_open_upper ? 1 : 0}});
+    t->params.AddRow({stage,
+                      p.name,
+                      unit,
+                      p.scene_value,
+                      p.start,
+                      ps.lower,
+                      ps.upper,
+                      p.estimate,
+                      p.standard_error,
+                      p.ci.lower,
+                      p.ci.upper,
+                      std::int64_t{at_bound ? 1 : 0},
+                      p.has_profile ? p.profile.lower : nan,
+                      p.has_profile ? p.profile.upper : nan,
+                      std::int64_t{p.profile_open_lower ? 1 : 0},
+                      std::int64_t{p.profile_open_upper ? 1 : 0},
+                      std::int64_t{p.identified ? 1 : 0},
+                      p.edge_lower,
+                      p.edge_upper,
+                      p.rise_lower,
+                      p.rise_upper});
     t->params_json.push_back(
         {{"stage", stage},
          {"name", p.name},
@@ -107,15 +189,24 @@ void AddParameters(const std::string& stage, const calibrate::CalibrationResult&
          {"at_bound", at_bound},
          {"profile_ci", p.has_profile ? nlohmann::json{p.profile.lower, p.profile.upper}
                                       : nlohmann::json(nullptr)},
-         {"profile_open", {p.profile_open_lower, p.profile_open_upper}}});
+         {"profile_open", {p.profile_open_lower, p.profile_open_upper}},
+         {"identified", p.identified},
+         {"not_identified_why", p.not_identified_why}});
     md.AddRow({"`" + p.name + "`", unit, Number(p.scene_value), Number(p.start),
                fmt::format("[{}, {}]", Number(ps.lower), Number(ps.upper)),
                "**" + Number(p.estimate) + "**", Number(p.standard_error),
-               fmt::format("[{}, {}]{}", Number(p.ci.lower), Number(p.ci.upper),
-                           at_bound ? " (at a bound)" : ""),
+               p.identified
+                   ? fmt::format("[{}, {}]{}{}", Number(p.ci.lower), Number(p.ci.upper),
+                                 at_bound ? " (at a bound)" : "", OpenSide(p))
+                   : "**not identified**",
                ProfileText(p)});
   }
   t->markdown += ToMarkdown(md);
+  for (const calibrate::FittedParameter& p : r.parameters)
+    if (!p.identified)
+      t->markdown += fmt::format("\n- `{}` is **not identified**: {}.", p.name,
+                                 p.not_identified_why);
+  t->markdown += IdentifiabilityText(r);
 }
 
 // The stage's targets, lab beside virtual: table rows, Markdown, plot rows.
@@ -174,6 +265,24 @@ constexpr const char* kRankDeficientNote =
     "central-difference step of the estimate, or a parameter they do not "
     "determine): no standard errors.\n";
 
+// Each parameter's scan of the cost (a Levenberg-Marquardt stage's).
+void AddScans(const std::string& stage, const calibrate::CalibrationResult& r,
+              CalibrationTables* t) {
+  for (const calibrate::FittedParameter& p : r.parameters) {
+    if (p.scan.empty()) continue;
+    std::vector<DataRow> rows;
+    for (const auto& [value, rise] : p.scan) {
+      t->scan.AddRow({stage, p.name, value, rise});
+      const double span =
+          value < p.estimate ? p.estimate - p.edge_lower : p.edge_upper - p.estimate;
+      rows.push_back(
+          DataRow().Number(span > 0 ? (value - p.estimate) / span : 0.0).Number(rise));
+    }
+    t->scan_rows.emplace_back((r.stage.empty() ? "" : r.stage + ": ") + p.name,
+                              std::move(rows));
+  }
+}
+
 void AddStage(const calibrate::CalibrationResult& r,
               const calibrate::CalibrationDesign& d,
               const calibrate::CalibrationStage& spec, CalibrationTables* t) {
@@ -183,17 +292,23 @@ void AddStage(const calibrate::CalibrationResult& r,
   if (r.solver == "golden_section") t->markdown += kProfileNote;
   if (!r.covariance_ok) t->markdown += kRankDeficientNote;
   AddTargets(stage, r, t);
+  AddScans(stage, r, t);
   t->markdown += SolverText(r);
   for (std::size_t i = 0; i < r.parameters.size(); ++i)
     for (std::size_t j = 0; j < r.parameters.size(); ++j)
       t->covariance.AddRow(
           {stage, r.parameters[i].name, r.parameters[j].name,
-           static_cast<double>(r.covariance(static_cast<Eigen::Index>(i),
-                                            static_cast<Eigen::Index>(j)))});
+           static_cast<double>(
+               r.covariance(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j))),
+           static_cast<double>(r.correlation(static_cast<Eigen::Index>(i),
+                                             static_cast<Eigen::Index>(j)))});
   t->stages_json.push_back({{"stage", stage},
                             {"solver", r.solver},
                             {"converged", r.converged},
                             {"covariance_ok", r.covariance_ok},
+                            {"jacobian_rank", r.rank.rank},
+                            {"jacobian_condition", r.rank.condition},
+                            {"refused_points", r.refused},
                             {"evaluations", r.evaluations},
                             {"rounds", r.rounds},
                             {"final_cost", r.final_cost}});
@@ -212,6 +327,28 @@ Figure TargetsFigure(const std::vector<DataRow>& rows) {
       .Draw({"$d", "($1-0.15):3:4:xtic(2)", "with yerrorbars pt 7", "lab"})
       .Draw({"''", "1:5:6", "with yerrorbars pt 6", "virtual at start"})
       .Draw({"''", "($1+0.15):7:8", "with yerrorbars pt 5", "virtual at the fit"});
+  return f;
+}
+
+// The cost along each parameter alone, from its estimate (0) to the ends
+// of its valid range (-1 and 1), against the 95 % profile threshold.
+Figure ScanFigure(
+    const std::vector<std::pair<std::string, std::vector<DataRow>>>& scans) {
+  Figure f;
+  for (std::size_t k = 0; k < scans.size(); ++k)
+    f.Data(fmt::format("s{}", k), scans[k].second);
+  // Drawn up to 10: what decides is whether a curve passes 1.92.
+  f.Title("The cost along each parameter, the others at the estimate")
+      .XLabel("from the estimate (0) to the lower (-1) and upper (1) end of its range")
+      .YLabel("rise of the cost (drawn up to 10)")
+      .Set("yrange [0:10]")
+      .Set("grid")
+      .Set("key outside bottom center horizontal");
+  for (std::size_t k = 0; k < scans.size(); ++k)
+    f.Draw({fmt::format("$s{}", k), "1:2", "with linespoints pt 7", scans[k].first});
+  f.Draw({fmt::format("{:.4f}", calibrate::ProfileRise()), "",
+          "with lines dt 2 lc rgb 'black'",
+          "chi^2_1(0.95) / 2: the 95 % profile threshold"});
   return f;
 }
 
@@ -245,6 +382,8 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
   out.tables.emplace_back("calibrate_parameters.csv", std::move(t.params));
   out.tables.emplace_back("calibrate_targets.csv", std::move(t.targets));
   out.tables.emplace_back("calibrate_covariance.csv", std::move(t.covariance));
+  const bool scanned = !t.scan_rows.empty();
+  if (scanned) out.tables.emplace_back("calibrate_scan.csv", std::move(t.scan));
   out.files.emplace_back(kOverridesFile, OverridesJson(file, stages).dump(1) + "\n");
   out.summary = {{"parameters", t.params_json},
                  {"stages", t.stages_json},
@@ -256,6 +395,13 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
        "Each target: the lab's value and the virtual one at the start and "
        "at the fit (95 % intervals)",
        GnuplotScript(TargetsFigure(t.plot_rows))});
+  if (scanned)
+    out.plots.push_back(
+        {"plots/calibrate_scan.png",
+         "The cost along each parameter alone, from its estimate to the ends of its "
+         "valid range: below the dashed line at both ends, the targets do not "
+         "determine it there (docs/calibration.md, Identifiability)",
+         GnuplotScript(ScanFigure(t.scan_rows))});
   return out;
 }
 
