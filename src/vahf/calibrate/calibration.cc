@@ -90,7 +90,9 @@ class VirtualModel {
       if (progress_)
         progress_(fmt::format("calibrate: {} refused ({}); the solver steps back",
                               VectorText(stage_.parameters, x), violation));
-      return cache_.emplace(std::move(key), std::vector<Statistic>(targets_.size()))
+      Statistic none;
+      none.value = std::nan("");
+      return cache_.emplace(std::move(key), std::vector<Statistic>(targets_.size(), none))
           .first->second;
     }
     const auto start = std::chrono::steady_clock::now();
