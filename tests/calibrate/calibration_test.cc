@@ -217,6 +217,25 @@ TEST(Calibration, AJointFitOfReachAndKappaRunsToItsEndAtTheRulesEdge) {
   EXPECT_LT(r.parameters[3].estimate, 2000.0);
 }
 
+// The golden-section search walks D1's fraction up to its bound 1.2, past
+// the rule's edge for the P95 man (0.39 x 1.775 / 0.792 = 0.874): the points
+// beyond count as no cost, and its profile interval closes before the edge.
+TEST(Calibration, AGoldenSectionSearchWalksUpToTheRulesEdgeAndStops) {
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const data::LabDataset lab = GenerateSyntheticLab(ReachLab(37, {}), Quiet());
+  CalibrationSpec spec = KappaFromTime();
+  spec.stages[0].solver = "golden_section";
+  spec.stages[0].parameters = {{"reach/d1_arm_fraction", 0.6, 0.5, 1.2, "/parameters/0"}};
+  spec.stages[0].targets[0].by_operator = true;
+  CalibrationResult r;
+  ASSERT_NO_THROW(r = Fit(scene, lab, spec, "test", 7, 8, Quiet()));
+  const double edge = 0.39 * 1.775 / 0.792;
+  EXPECT_LT(r.parameters[0].estimate, edge) << r.search_log;
+  EXPECT_GT(r.refused, 0) << r.search_log;
+  EXPECT_LT(r.parameters[0].profile.upper, edge) << r.search_log;
+}
+
 // Fractions at which every operator's reach stays on its plateau (D1 beyond
 // the arm's length): no target moves with them.
 human::ReachCurve FlatReach() {
