@@ -87,6 +87,22 @@ TEST(Calibration, RecoversKappaFromASyntheticLabWithinItsInterval) {
   // One target, one parameter: the fit matches the lab's mean time.
   EXPECT_LT(std::abs(r.targets[0].residual), 0.1);
   EXPECT_FALSE(k.has_profile);  // Levenberg-Marquardt: Ceres' interval only
+  // The estimate's Monte Carlo spread over other virtual people: part of its
+  // standard error (the lab's own variance is the rest), not none of it.
+  EXPECT_EQ(r.noise_replicates, 4);
+  EXPECT_GT(k.mc_sd, 0.0);
+  EXPECT_LT(k.mc_sd, k.standard_error);
+}
+
+TEST(Calibration, NoReplicatesNoMonteCarloSpread) {
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const data::LabDataset lab = GenerateSyntheticLab(BlockLab(101), Quiet());
+  CalibrationSpec spec = KappaFromTime();
+  spec.noise_replicates = 0;
+  const CalibrationResult r = Fit(scene, lab, spec, "test", 7, 6, Quiet());
+  EXPECT_EQ(r.noise_replicates, 0);
+  EXPECT_TRUE(std::isnan(r.parameters[0].mc_sd));
 }
 
 // The golden_section solver's stage also gives the profile interval

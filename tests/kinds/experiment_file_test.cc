@@ -176,6 +176,7 @@ json Calibrate() {
   e["loss"] = {{"kind", "cauchy"}, {"scale", 2}};
   e["relative_step"] = 0.1;
   e["max_iterations"] = 12;
+  e["noise_replicates"] = 2;
   return e;
 }
 
@@ -1069,13 +1070,15 @@ TEST(CalibrateTest, ParametersTargetsLossAndStepsLoad) {
   EXPECT_DOUBLE_EQ(d.loss_scale, 2.0);
   EXPECT_DOUBLE_EQ(d.relative_step, 0.1);
   EXPECT_EQ(d.max_iterations, 12);
+  EXPECT_EQ(d.noise_replicates, 2);
   EXPECT_EQ(e.seed, 5u);
   EXPECT_EQ(e.trials, 2);
 }
 
 TEST(CalibrateTest, Defaults) {
   json doc = Calibrate();
-  for (const char* key : {"loss", "relative_step", "max_iterations"}) doc.erase(key);
+  for (const char* key : {"loss", "relative_step", "max_iterations", "noise_replicates"})
+    doc.erase(key);
   doc["targets"][0]["by"] = "all";
   ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
   const CalibrationDesign defaults;
@@ -1083,6 +1086,7 @@ TEST(CalibrateTest, Defaults) {
   EXPECT_DOUBLE_EQ(e.Input<CalibrationDesign>().loss_scale, 3.0);
   EXPECT_DOUBLE_EQ(e.Input<CalibrationDesign>().relative_step, 0.05);
   EXPECT_EQ(e.Input<CalibrationDesign>().max_iterations, 30);
+  EXPECT_EQ(e.Input<CalibrationDesign>().noise_replicates, 4);
   EXPECT_EQ(e.Input<CalibrationDesign>().loss, defaults.loss);
   EXPECT_FALSE(e.Input<CalibrationDesign>().stages[0].targets[0].by_operator);
   // A loss without a scale keeps the default scale.
@@ -1249,6 +1253,9 @@ TEST(CalibrateErrorsTest, LossStepAndIterationsOutOfRange) {
   ExpectError(doc, "/max_iterations", "must lie in [1, 1000]", "0");
   doc["max_iterations"] = 2.5;
   ExpectError(doc, "/max_iterations", "must be an integer", "2.5");
+  doc = Calibrate();
+  doc["noise_replicates"] = 101;
+  ExpectError(doc, "/noise_replicates", "must lie in [0, 100]", "101");
 }
 
 TEST(CalibrateErrorsTest, LabFileMissing) {

@@ -123,6 +123,27 @@ class VirtualModel {
 
   int evaluations() const { return evaluations_; }
   int refused() const { return refused_; }
+  // Whether the design is the lab's operators (not the hour of work).
+  bool lab_design() const { return segments_.empty(); }
+
+  // The statistics at x (valid, of a lab design) on other virtual people:
+  // replicate r >= 1 draws from the cycles r x (operators x trials) on, none
+  // of which the fit used. Not cached.
+  std::vector<Statistic> Replicate(const double* x, int r) {
+    VAHF_CHECK(lab_design() && r >= 1 && Violation(x).empty(),
+               "a replicate of a valid point of a lab design");
+    std::vector<experiment::Condition> conditions =
+        LabConditions(Applied(x), lab_, trials_);
+    const std::uint64_t shift = static_cast<std::uint64_t>(r) * conditions.size() *
+                                static_cast<std::uint64_t>(trials_);
+    for (experiment::Condition& c : conditions) c.cycle_offset += shift;
+    const experiment::DesignRun run =
+        experiment::RunDesign(conditions, trials_, seed_, false, options_);
+    std::vector<Statistic> stats;
+    for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, run));
+    ++evaluations_;
+    return stats;
+  }
 
  private:
   scene::Scene Applied(const double* x) const {
@@ -382,6 +403,7 @@ std::vector<FittedParameter> Identify(VirtualModel& model, ceres::Problem* probl
     scale(i) = v > 0 ? v : ps.upper - ps.lower;
   }
   out->rank = RankOf(j, scale);
+  out->jacobian = j;
   std::vector<FittedParameter> fitted(static_cast<std::size_t>(p));
   std::vector<bool> identified(static_cast<std::size_t>(p));
   const double at_estimate = Cost(model, targets, sigma, spec, x.data());
@@ -429,6 +451,47 @@ std::vector<FittedParameter> Identify(VirtualModel& model, ceres::Problem* probl
   for (int i = 0; i < p; ++i)
     out->covariance_ok = out->covariance_ok || std::isfinite(out->covariance(i, i));
   return fitted;
+}
+
+// The Monte Carlo spread of the estimate: on each of `replicates` other sets
+// of virtual people (VirtualModel::Replicate), the Gauss-Newton step from the
+// estimate that the replicate's residuals call for, -J_I^+ (r_k - r), over
+// the identified parameters I; the root mean square of those steps. Since
+// J^T r = 0 at the estimate, the step is how far the fit would move on those
+// draws. Only for a design of the lab's operators.
+void MonteCarloSpread(VirtualModel& model, const std::vector<double>& sigma,
+                      const std::vector<double>& x, int replicates,
+                      CalibrationResult* out, std::vector<FittedParameter>* fitted) {
+  if (replicates <= 0 || !model.lab_design() || !out->jacobian.allFinite()) return;
+  std::vector<Eigen::Index> keep;
+  for (std::size_t i = 0; i < fitted->size(); ++i)
+    if ((*fitted)[i].identified) keep.push_back(static_cast<Eigen::Index>(i));
+  if (keep.empty()) return;
+  const Eigen::Index m = out->jacobian.rows();
+  Eigen::MatrixXd j(m, static_cast<Eigen::Index>(keep.size()));
+  for (std::size_t c = 0; c < keep.size(); ++c)
+    j.col(static_cast<Eigen::Index>(c)) = out->jacobian.col(keep[c]);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(j,
+                                              Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const std::vector<Statistic> base = model.At(x.data());
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(j.cols());
+  int used = 0;
+  for (int r = 1; r <= replicates; ++r) {
+    const std::vector<Statistic> v = model.Replicate(x.data(), r);
+    Eigen::VectorXd d(m);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const std::size_t t = static_cast<std::size_t>(i);
+      d(i) = (v[t].value - base[t].value) / sigma[t];
+    }
+    if (!d.allFinite()) continue;  // a replicate with no sample of a target
+    sum += svd.solve(d).array().square().matrix();
+    ++used;
+  }
+  out->noise_replicates = used;
+  if (used == 0) return;
+  for (std::size_t c = 0; c < keep.size(); ++c)
+    (*fitted)[static_cast<std::size_t>(keep[c])].mc_sd =
+        std::sqrt(sum(static_cast<Eigen::Index>(c)) / used);
 }
 
 // Each parameter's estimate with its standard error, Wald interval and, for a
@@ -582,6 +645,7 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
                         Eigen::VectorXd::Constant(1, x[0] != 0 ? std::abs(x[0]) : 1.0));
     } else {
       identification = Identify(model, &problem, targets, sigma, spec, stage, x, &out);
+      MonteCarloSpread(model, sigma, x, spec.noise_replicates, &out, &identification);
     }
     break;
   }

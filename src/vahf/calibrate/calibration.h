@@ -92,6 +92,10 @@ struct FittedParameter {
   // The cost's rise along this parameter alone (value, rise), in increasing
   // value, the estimate's (0) included: its scan to either end.
   std::vector<std::pair<double, double>> scan;
+  // The estimate's Monte Carlo spread over other virtual people (a
+  // Levenberg-Marquardt stage of the lab's operators; NaN otherwise): the
+  // part of its uncertainty the virtual trials' noise makes.
+  double mc_sd = std::nan("");
 };
 
 struct FittedTarget {
@@ -113,6 +117,8 @@ struct CalibrationResult {
   Eigen::MatrixXd correlation;   // of the covariance; NaN where it has none
   JacobianRank rank;             // of the whitened Jacobian at the estimate
   DifferenceCounts differences;  // how the Jacobians were differenced
+  Eigen::MatrixXd jacobian;      // whitened, at the estimate (Levenberg-Marquardt)
+  int noise_replicates = 0;      // replicates behind FittedParameter::mc_sd
   int refused = 0;               // points outside the valid region the solver asked for
   std::vector<FittedTarget> targets;
   bool converged = false;  // Ceres reported convergence in the last round

@@ -104,6 +104,8 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
   d.lab_path = ResolvePath(root.Required("lab"), path, "lab dataset");
   if (auto step = root.Optional("relative_step"))
     d.relative_step = step->InRange(1e-4, 0.5);
+  if (auto r = root.Optional("noise_replicates"))
+    d.noise_replicates = static_cast<int>(r->Integer(0, 100));
   if (auto it = root.Optional("max_iterations"))
     d.max_iterations = static_cast<int>(it->Integer(1, 1000));
   if (auto tol = root.Optional("tolerance")) d.tolerance = tol->InRange(1e-4, 0.5);

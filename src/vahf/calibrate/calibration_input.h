@@ -44,6 +44,9 @@ struct CalibrationDesign : scene::KindInputOf<CalibrationDesign> {
   std::string loss = "huber";
   double loss_scale = 3.0;
   double relative_step = 0.05;  // of each parameter's value, central differences
+  // Other sets of virtual people the estimate is re-weighed on, for its
+  // Monte Carlo spread (calibration.h, FittedParameter::mc_sd); 0: none.
+  int noise_replicates = 4;
   int max_iterations =
       30;  // Levenberg-Marquardt (or golden-section) iterations per round
   // golden_section: the search stops when the bracket is narrower than this fraction

@@ -39,7 +39,8 @@ struct CalibrationTables {
                 "edge_lower",
                 "edge_upper",
                 "rise_lower",
-                "rise_upper"}};
+                "rise_upper",
+                "monte_carlo_sd"}};
   Table targets{{"stage", "target", "unit", "lab", "lab_se", "lab_n", "virtual_start",
                  "virtual_start_se", "virtual_fitted", "virtual_fitted_se", "virtual_n",
                  "residual"}};
@@ -114,6 +115,14 @@ std::string IdentifiabilityText(const calibrate::CalibrationResult& r) {
       r.rank.rank, p, values, calibrate::kRankTolerance,
       r.rank.rank > 0 ? fmt::format(", condition number {:.3g}", r.rank.condition) : "",
       r.differences.central, r.differences.one_sided, r.differences.shortened, r.refused);
+  if (r.noise_replicates > 0)
+    md += fmt::format(
+        "\nThe Monte Carlo column is the estimate's spread over {} other sets of "
+        "virtual people (the cycles after the fit's): on each, the Gauss-Newton step "
+        "from the estimate its residuals call for, root mean square. It is the part of "
+        "the standard error the virtual trials' noise makes; more `trials` shrink it "
+        "as their square root.\n",
+        r.noise_replicates);
   if (p < 2) return md;
   std::vector<std::string> header = {"correlation"};
   for (const calibrate::FittedParameter& f : r.parameters) header.push_back(f.name);
@@ -147,7 +156,7 @@ std::string OpenSide(const calibrate::FittedParameter& p) {
 void AddParameters(const std::string& stage, const calibrate::CalibrationResult& r,
                    const calibrate::CalibrationStage& spec, CalibrationTables* t) {
   MarkdownTable md{{"parameter", "unit", "the scene's value", "start", "bounds",
-                    "estimate", "standard error", "95 % interval",
+                    "estimate", "standard error", "of which Monte Carlo", "95 % interval",
                     "95 % profile interval"}};
   for (std::size_t i = 0; i < r.parameters.size(); ++i) {
     const calibrate::FittedParameter& p = r.parameters[i];
@@ -177,7 +186,8 @@ void AddParameters(const std::string& stage, const calibrate::CalibrationResult&
                       p.edge_lower,
                       p.edge_upper,
                       p.rise_lower,
-                      p.rise_upper});
+                      p.rise_upper,
+                      p.mc_sd});
     t->params_json.push_back(
         {{"stage", stage},
          {"name", p.name},
@@ -195,6 +205,7 @@ void AddParameters(const std::string& stage, const calibrate::CalibrationResult&
     md.AddRow({"`" + p.name + "`", unit, Number(p.scene_value), Number(p.start),
                fmt::format("[{}, {}]", Number(ps.lower), Number(ps.upper)),
                "**" + Number(p.estimate) + "**", Number(p.standard_error),
+               Number(p.mc_sd),
                p.identified
                    ? fmt::format("[{}, {}]{}{}", Number(p.ci.lower), Number(p.ci.upper),
                                  at_bound ? " (at a bound)" : "", OpenSide(p))
