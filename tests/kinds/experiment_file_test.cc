@@ -1206,7 +1206,8 @@ TEST(CalibrateErrorsTest, WidenedBoundBreaksTheRule) {
 TEST(CalibrateErrorsTest, UnknownQuantity) {
   json doc = Calibrate();
   doc["targets"][1]["quantity"] = "assembly_tme";
-  ExpectError(doc, "/targets/1/quantity", "must be one of: assembly_time, success_rate",
+  ExpectError(doc, "/targets/1/quantity",
+              "must be one of: assembly_time, success_rate, eta, lambda_c",
               "\"assembly_tme\"");
 }
 
