@@ -5,14 +5,17 @@
 // comparison runs.
 #include "vahf/compare/comparison.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "vahf/core/error.h"
 #include "vahf/data/lab_dataset.h"
 #include "vahf/kinds/kind.h"
+#include "vahf/report/compare_section.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/stats/proportion.h"
 
@@ -24,6 +27,14 @@ std::string Path(const std::string& relative) {
 }
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A scene for LabSide: its curves measure a lab's tracks (none here but in
+// the eta tests below).
+const scene::Scene& BlockScene() {
+  static const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  return scene;
+}
 
 calibrate::Target TimeTarget() {
   calibrate::Target t;
@@ -196,7 +207,7 @@ TEST(CompareReported, ARateAgainstAReportedRateWithItsCount) {
   lab.summaries = {row};
   ComparisonDesign design;
   design.quantities = {{"success_rate", "peg", false, "/quantities/0", 0.3, 1, "real"}};
-  const std::vector<LabQuantity> side = LabSide(lab, design, "e.json");
+  const std::vector<LabQuantity> side = LabSide(BlockScene(), lab, design, "e.json");
   ASSERT_EQ(side.size(), 1u);
   ASSERT_TRUE(side[0].reported);
   EXPECT_NEAR(side[0].target.lab.variance, 0.01875, 1e-15);
@@ -242,7 +253,7 @@ TEST(LabSide, ReadsWhatThePaperReports) {
   const scene::ExperimentFile file =
       kinds::LoadExperiment(Path("experiments/compare_paper.json"));
   const std::vector<LabQuantity> side =
-      LabSide(lab, file.Input<ComparisonDesign>(), file.file);
+      LabSide(file.scene, lab, file.Input<ComparisonDesign>(), file.file);
   ASSERT_EQ(side.size(), 6u);
   for (const LabQuantity& q : side) EXPECT_TRUE(q.reported) << q.target.label;
   // Table 1's 9.2 s: one run without a spread.
@@ -273,7 +284,7 @@ TEST(LabSide, SeveralConditionsAndNoneNamedIsAnInputError) {
   ComparisonDesign design;
   design.quantities = {Spec("success_rate", 4, "", "/quantities/3")};
   try {
-    LabSide(lab, design, "e.json");
+    LabSide(BlockScene(), lab, design, "e.json");
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "e.json");
@@ -289,7 +300,7 @@ TEST(LabSide, NeitherTrialsNorAReportIsAnInputError) {
   ComparisonDesign design;
   design.quantities = {Spec("success_rate", 2, "real")};  // Fig. 16 only: not in the file
   try {
-    LabSide(lab, design, "e.json");
+    LabSide(BlockScene(), lab, design, "e.json");
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where(), "/quantities/0");
@@ -299,7 +310,7 @@ TEST(LabSide, NeitherTrialsNorAReportIsAnInputError) {
   design.quantities = {Spec("assembly_time", 0, "")};
   design.quantities[0].by_operator = true;  // the paper has no trials, so no operators
   try {
-    LabSide(lab, design, "e.json");
+    LabSide(BlockScene(), lab, design, "e.json");
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where(), "/quantities/0/by");
@@ -359,6 +370,115 @@ TEST(Compare, RunsEachDesignOnlyWhenAQuantityNeedsIt) {
   EXPECT_EQ(r.run.conditions.size(), 6u);
   EXPECT_TRUE(r.fatigue.run.conditions.empty());
   EXPECT_TRUE(r.fatigue.pilot.records.empty());
+}
+
+// ---------------------------------------------------------------------------
+// eta at an instant from the lab's sensor tracks, against the virtual
+// trials' decision traces, in the comparison and its report.
+
+// The operator stands facing +x, the head over the left shoulder; the part is
+// lowered 0.4 m from level with the brow, 0.4 m ahead, by t = 0.5 s. The
+// sight line (0.4, 0, -0.4) meets the motion (0, 0, -1) at 45 deg: f = 1 on
+// the default sight curve's plateau (Fig. 3), so eta = 1 - V (Eq. 2) at the
+// sample of 0.5 s, held to the next at 1.0 s (tests/calibrate/
+// track_targets_test.cc has the factors in full).
+data::SensorTrack LoweredPart(int repetition, double V) {
+  data::SensorTrack t;
+  t.file = fmt::format("tracks/{}.csv", repetition);
+  t.operator_id = "male 1";
+  t.condition = "standard";
+  t.repetition = repetition;
+  for (int i = 0; i < 3; ++i) {
+    data::TrackSample s;
+    s.time = 0.5 * i;
+    s.part = Eigen::Vector3d(0, 0, i == 0 ? 0.4 : 0.0);
+    s.brow = Eigen::Vector3d(-0.4, 0, 0.4);
+    s.left_shoulder = Eigen::Vector3d(-0.5, 0, 0.2);
+    s.right_shoulder = Eigen::Vector3d(-0.5, -0.4, 0.2);
+    s.body = Eigen::Vector3d(-0.5, -0.2, -0.2);
+    s.visibility = i == 0 ? 1.0 : V;
+    s.line = i + 2;
+    t.samples.push_back(s);
+  }
+  return t;
+}
+
+TEST(Compare, ReadsEtaFromTracksAndReportsIt) {
+  experiment::RunnerOptions quiet;
+  quiet.threads = 2;
+  quiet.progress = false;
+  const scene::Scene scene = BlockScene();
+  data::LabDataset lab;
+  lab.file = "lab/dataset.json";
+  lab.name = "tracks";
+  lab.provenance = {{"source", "written by hand for this test"}};
+  lab.trials_file = "trials.csv";
+  for (int k = 1; k <= 3; ++k) {
+    data::LabTrial t;
+    t.operator_id = "male 1";
+    t.sex = "male";
+    t.height = 1.75;
+    t.arm_length = 0.74;
+    t.condition = "standard";
+    t.part = "block";
+    t.repetition = k;
+    t.time = 1.0;
+    t.success = 1;
+    t.line = k + 1;
+    lab.trials.push_back(t);
+  }
+  lab.tracks = {LoweredPart(1, 0.9), LoweredPart(2, 0.8), LoweredPart(3, 0.4)};
+  ComparisonDesign design;
+  design.quantities = {{"eta", "block", false, "/quantities/0", 0.2, 0, "", 0.7}};
+  const int trials = 3;
+  const ComparisonResult r =
+      Compare(scene, lab, design, "e.json", 5, trials, quiet, quiet);
+  ASSERT_EQ(r.quantities.size(), 1u);
+  const QuantityComparison& q = r.quantities[0];
+  EXPECT_FALSE(q.reported);
+  EXPECT_TRUE(q.target.from_tracks);
+  EXPECT_EQ(LabBasis(q.target, false), "tracks");
+  EXPECT_EQ(q.target.label, "eta of block at 0.7 s");
+  // The lab: eta = 1 - V at 0.5 s, held at 0.7 s: 0.1, 0.2, 0.6.
+  ASSERT_EQ(q.lab.times.size(), 3u);
+  EXPECT_NEAR(q.lab.times[0], 0.1, 1e-12);
+  EXPECT_NEAR(q.lab.times[1], 0.2, 1e-12);
+  EXPECT_NEAR(q.lab.times[2], 0.6, 1e-12);
+  EXPECT_NEAR(q.target.lab.value, 0.3, 1e-12);
+  EXPECT_NEAR(q.target.lab.variance, 0.07 / 3, 1e-12);  // s^2 = 0.14 / 2
+
+  // The virtual side: each trial's last decision at or before 0.7 s.
+  ASSERT_EQ(r.run.records.size(), 3u);
+  std::vector<double> want;
+  for (const experiment::CycleRecord& c : r.run.records) {
+    const sim::TrialResult& trial = c.result.parts.at(0).trial;
+    ASSERT_FALSE(trial.trace.empty());
+    ASSERT_GE(trial.end_time, 0.7);
+    const sim::TraceRow* last = nullptr;
+    for (const sim::TraceRow& row : trial.trace)
+      if (row.time <= 0.7) last = &row;
+    ASSERT_NE(last, nullptr);
+    EXPECT_LT(0.7 - last->time, 0.1);
+    want.push_back(last->factors.eta);
+  }
+  EXPECT_EQ(q.virt.times, want);
+  ASSERT_TRUE(q.testable) << q.verdict;
+  EXPECT_NEAR(q.difference, q.virtual_stat.value - 0.3, 1e-12);
+
+  // The report: a table of its own for eta and lambda_c.
+  scene::ExperimentFile file;
+  file.file = "e.json";
+  file.scene = scene;
+  file.input =
+      core::ClonePtr<scene::KindInput>(std::make_unique<ComparisonDesign>(design));
+  const report::Section section = report::ComparisonSection(file, lab, r, trials);
+  EXPECT_NE(section.markdown.find("### Human factors at an instant"), std::string::npos)
+      << section.markdown;
+  EXPECT_NE(section.markdown.find("| eta of block at 0.7 s | tracks |"),
+            std::string::npos)
+      << section.markdown;
+  EXPECT_EQ(section.summary["quantities"][0]["lab_basis"], "tracks");
+  EXPECT_NEAR(section.summary["quantities"][0]["lab_value"].get<double>(), 0.3, 1e-12);
 }
 
 }  // namespace

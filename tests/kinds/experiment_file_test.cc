@@ -1210,7 +1210,8 @@ TEST(CalibrateErrorsTest, ABoundMustObeyTheRule) {
 TEST(CalibrateErrorsTest, UnknownQuantity) {
   json doc = Calibrate();
   doc["targets"][1]["quantity"] = "assembly_tme";
-  ExpectError(doc, "/targets/1/quantity", "must be one of: assembly_time, success_rate",
+  ExpectError(doc, "/targets/1/quantity",
+              "must be one of: assembly_time, success_rate, eta, lambda_c",
               "\"assembly_tme\"");
 }
 

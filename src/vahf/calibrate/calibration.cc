@@ -59,6 +59,8 @@ class VirtualModel {
                                           t.spec.segment - 1) == segments_.end())
         segments_.push_back(t.spec.segment - 1);
     std::sort(segments_.begin(), segments_.end());
+    // eta and lambda_c are read off the decision trace.
+    for (const Target& t : targets_) trace_ = trace_ || scene::AtInstant(t.spec.quantity);
   }
 
   // Empty when x lies in the valid region: within the parameters' bounds,
@@ -100,7 +102,7 @@ class VirtualModel {
     std::vector<Statistic> stats;
     if (segments_.empty()) {
       const experiment::DesignRun run = experiment::RunDesign(
-          LabConditions(s, lab_, trials_), trials_, seed_, false, options_);
+          LabConditions(s, lab_, trials_), trials_, seed_, trace_, options_);
       for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, run));
     } else {
       // The scene's operator works the hour; only the segments the targets
@@ -138,7 +140,7 @@ class VirtualModel {
                                 static_cast<std::uint64_t>(trials_);
     for (experiment::Condition& c : conditions) c.cycle_offset += shift;
     const experiment::DesignRun run =
-        experiment::RunDesign(conditions, trials_, seed_, false, options_);
+        experiment::RunDesign(conditions, trials_, seed_, trace_, options_);
     std::vector<Statistic> stats;
     for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, run));
     ++evaluations_;
@@ -165,7 +167,8 @@ class VirtualModel {
   CalibrationProgress progress_;
   std::map<std::vector<double>, std::vector<Statistic>> cache_;
   std::vector<int>
-      segments_;  // 0-based segments the targets read; empty: no fatigue design
+      segments_;        // 0-based segments the targets read; empty: no fatigue design
+  bool trace_ = false;  // a target reads the decision trace (eta, lambda_c)
   int evaluations_ = 0;
   int refused_ = 0;  // points outside the valid region asked for
 };
@@ -564,6 +567,28 @@ std::vector<double> ValidStart(const VirtualModel& model, const StageSpec& stage
   return x;
 }
 
+// A target read from the lab's tracks is measured with the scene's curves f,
+// r and g (Figs. 3-5): a stage that fits one of them would move the lab's
+// side with the virtual one, and its residual would measure nothing. An
+// InputError naming the parameter.
+void RefuseCurvesAgainstTracks(const StageSpec& stage, const std::vector<Target>& targets,
+                               const std::string& experiment_file) {
+  const auto track = std::find_if(targets.begin(), targets.end(),
+                                  [](const Target& t) { return t.from_tracks; });
+  if (track == targets.end()) return;
+  for (const ParameterSpec& p : stage.parameters) {
+    const std::string group = p.name.substr(0, p.name.find('/'));
+    if (group == "sight" || group == "reach" || group == "glance")
+      throw InputError(
+          experiment_file, p.pointer + "/name", p.name,
+          fmt::format("target {} is read from the lab's sensor tracks with the "
+                      "scene's {} curve: fitting the curve would move the lab's "
+                      "value with the virtual one; fit it to targets of their own "
+                      "stage, or to what the lab reports",
+                      track->label, group));
+  }
+}
+
 // The profile interval of a golden_section stage at its estimate, on the
 // last round's weights (those of its search and covariance).
 ProfileInterval GoldenSectionProfile(VirtualModel& model,
@@ -592,7 +617,9 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
                                  int trials, const experiment::RunnerOptions& options,
                                  const CalibrationProgress& progress) {
   const auto started = std::chrono::steady_clock::now();
-  const std::vector<Target> targets = LabTargets(lab, stage.targets, experiment_file);
+  const std::vector<Target> targets =
+      LabTargets(scene, lab, stage.targets, experiment_file);
+  RefuseCurvesAgainstTracks(stage, targets, experiment_file);
   const int p = static_cast<int>(stage.parameters.size());
   const int m = static_cast<int>(targets.size());
   VAHF_CHECK(p >= 1 && m >= 1, "a calibration fits at least one parameter to one target");

@@ -10,6 +10,8 @@
 #include <utility>
 
 #include "vahf/core/error.h"
+#include "vahf/data/track_factors.h"
+#include "vahf/sim/trial_model.h"
 #include "vahf/stats/summary.h"
 
 namespace vahf::calibrate {
@@ -84,12 +86,19 @@ const Row* ReportedRow(const std::vector<Row>& rows, const Fits& fits,
   return any;
 }
 
+// Whether a summary's instant is a target's: the same time up to the
+// rounding of a unit's conversion (3000 ms against 3 s).
+bool SameInstant(double row, double target) {
+  return std::fabs(row - target) <= 1e-9 * std::max(1.0, std::fabs(target));
+}
+
 // A statistic the lab reports without its trials, for a target: a segment's
 // attempts and successes (segments.csv), or a row of summaries.csv with the
 // target's quantity, part ("all" matches a row for the whole assembly),
-// segment and condition (ReportedRow). Its variance: sd^2 / n when the row
-// gives both; for a rate with n, that of a rate of n trials (the Laplace
-// estimate, as for trials); for a time with n = 1 and no sd, a single draw
+// segment and condition (ReportedRow), and for eta and lambda_c instant. Its
+// variance: sd^2 / n when the row gives both; for a rate with n, that of a
+// rate of n trials (the Laplace estimate, as for trials); for a mean (a
+// time, eta, lambda_c) with n = 1 and no sd, a single draw
 // (Statistic::single_draw); else the reading uncertainty's (a half-width
 // taken as 1.96 sd). Nothing found: nullopt. Found without any uncertainty:
 // an InputError, since a residual needs a weight, or with Unweighted::kPoint
@@ -108,7 +117,8 @@ std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab,
       lab.summaries,
       [&](const data::LabSummary& r) {
         return r.quantity == spec.quantity && r.part == spec.part &&
-               r.segment == spec.segment;
+               r.segment == spec.segment &&
+               (!scene::AtInstant(spec.quantity) || SameInstant(r.instant, spec.instant));
       },
       spec, lab.summaries_file, experiment_file);
   if (!found) return std::nullopt;
@@ -118,7 +128,7 @@ std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab,
   out.n = r.n;
   if (std::isfinite(r.sd) && r.n > 0) {
     out.variance = r.sd * r.sd / r.n;
-  } else if (spec.quantity == "assembly_time" && r.n == 1) {
+  } else if (spec.quantity != "success_rate" && r.n == 1) {
     out.single_draw = true;
     out.variance = std::numeric_limits<double>::quiet_NaN();
   } else if (spec.quantity == "success_rate" && r.n > 0) {
@@ -136,6 +146,137 @@ std::optional<Statistic> ReportedStatistic(const data::LabDataset& lab,
                     r.quantity, r.value, lab.summaries_file, r.line));
   }
   return out;
+}
+
+// eta (Eq. 2) or lambda_c (Eq. 3) of a row of factors.
+double FactorOf(const human::FactorValues& v, const std::string& quantity) {
+  return quantity == "eta" ? v.eta : v.lambda_c;
+}
+
+// "operator 'male 1', condition 'good', repetition 1": a track's trial.
+std::string TrackWhere(const data::SensorTrack& track) {
+  return fmt::format("operator '{}', condition '{}', repetition {}", track.operator_id,
+                     track.condition, track.repetition);
+}
+
+// The lab trial a track records: the row of trials.csv with its operator,
+// condition and repetition (of one part). An InputError naming the track's
+// file when there is none, or rows of several parts.
+const data::LabTrial& TrialOfTrack(const data::LabDataset& lab,
+                                   const data::SensorTrack& track) {
+  const data::LabTrial* found = nullptr;
+  for (const data::LabTrial& t : lab.trials) {
+    if (t.operator_id != track.operator_id || t.condition != track.condition ||
+        t.repetition != track.repetition)
+      continue;
+    if (found && found->part != t.part)
+      throw InputError(
+          track.file, TrackWhere(track), track.operator_id,
+          fmt::format("{} has trials of parts '{}' (line {}) and '{}' (line {}) for this "
+                      "operator, condition and repetition: a track records one trial, "
+                      "so its part is ambiguous",
+                      lab.trials_file, found->part, found->line, t.part, t.line));
+    if (!found) found = &t;
+  }
+  if (!found)
+    throw InputError(
+        track.file, TrackWhere(track), track.operator_id,
+        fmt::format("{} has no trial of this operator, condition and repetition: a "
+                    "track's part, and its operator's stature and arm length (r's "
+                    "breakpoints, Fig. 4), come from its trial",
+                    lab.trials_file.empty() ? "the dataset" : lab.trials_file));
+  return *found;
+}
+
+// eta or lambda_c of one virtual cycle at the target's instant
+// (AddAtInstant): the decision trace of its trial of the target's part, or
+// for "all" of every trial on the cycle's clock (a part's rows from its start
+// in the cycle). A trial, or for "all" a cycle, that failed as a computation
+// says nothing (no count); a part the cycle never reached gives no trial.
+void AddCycleAtInstant(const experiment::CycleResult& c, const TargetSpec& spec,
+                       const std::string& op, TargetSamples* samples) {
+  const bool all = spec.part == kAllParts;
+  if (all && c.numerical_failure) return;
+  std::vector<double> times, values;
+  double end = 0;
+  bool found = false;
+  for (const experiment::PartRun& p : c.parts) {
+    if (!all && p.trial.part != spec.part) continue;
+    if (sim::IsComputationFailure(p.trial.status)) return;
+    VAHF_CHECK(!p.trial.trace.empty(),
+               "eta and lambda_c targets read the decision trace: run the design "
+               "with record_trace");
+    const double offset = all ? p.start_time : 0.0;
+    for (const sim::TraceRow& row : p.trial.trace) {
+      // The next part's first decision may fall on the instant the last one ended.
+      if (!times.empty() && !(offset + row.time > times.back())) continue;
+      times.push_back(offset + row.time);
+      values.push_back(FactorOf(row.factors, spec.quantity));
+    }
+    end = offset + p.trial.end_time;
+    found = true;
+  }
+  if (found) AddAtInstant(times, values, end, spec.instant, op, samples);
+}
+
+// "the lab dataset lab.json (operator male 1)"
+std::string LabWhere(const data::LabDataset& lab, const std::string& op) {
+  return "the lab dataset " + lab.file + (op.empty() ? "" : " (operator " + op + ")");
+}
+
+// A target's lab side that is neither trials (tracks) nor a report: the
+// InputError that says what the lab lacks.
+[[noreturn]] void ThrowNothingFor(const data::LabDataset& lab, const TargetSpec& spec,
+                                  const std::string& op,
+                                  const std::string& experiment_file) {
+  const bool instant = scene::AtInstant(spec.quantity);
+  throw InputError(
+      experiment_file, spec.pointer, spec.part,
+      LabWhere(lab, op) + " has no " + (instant ? "sensor tracks" : "trials") +
+          " of this part" +
+          (spec.condition.empty() ? "" : " in condition '" + spec.condition + "'") +
+          (spec.by_operator
+               ? ""
+               : " and reports no " + spec.quantity +
+                     (spec.segment > 0 ? fmt::format(" of segment {}", spec.segment)
+                                       : "") +
+                     (instant ? fmt::format(" at {:g} s", spec.instant) : "") +
+                     " for it"));
+}
+
+// One target's lab statistic (LabTargets): of its trials or tracks, else
+// what the lab reports.
+Target LabTarget(const scene::Scene& scene, const data::LabDataset& lab,
+                 const TargetSpec& spec, const std::string& op,
+                 const std::string& experiment_file, Unweighted unweighted) {
+  const TargetSamples samples = LabSamples(scene, lab, spec, op);
+  Target target = MakeTarget(spec, op);
+  const bool instant = scene::AtInstant(spec.quantity);
+  const bool none = instant ? samples.Read() == 0 : samples.attempts == 0;
+  // Without trials (tracks), what the lab reports: a segment's counts or a summary.
+  if (none && !spec.by_operator)
+    if (std::optional<Statistic> reported =
+            ReportedStatistic(lab, spec, experiment_file, unweighted)) {
+      target.lab = *reported;
+      return target;
+    }
+  if (none) ThrowNothingFor(lab, spec, op, experiment_file);
+  if (instant && samples.times.size() < 2)
+    throw InputError(
+        experiment_file, spec.pointer, spec.part,
+        fmt::format("{} has {} value(s) of {} at {:g} s from its {} track(s) of this "
+                    "part ({} NaN, {} over before the instant or not yet at their "
+                    "first value); a mean and its variance need at least 2",
+                    LabWhere(lab, op), samples.times.size(), spec.quantity, spec.instant,
+                    samples.Read(), samples.nan_values, samples.no_value));
+  if (spec.quantity == "assembly_time" && samples.times.size() < 2)
+    throw InputError(experiment_file, spec.pointer, spec.part,
+                     fmt::format("{} has {} successful trial(s) of this "
+                                 "part; a mean time and its variance need at least 2",
+                                 LabWhere(lab, op), samples.times.size()));
+  target.lab = samples.Of(spec.quantity);
+  target.from_tracks = instant;
+  return target;
 }
 
 }  // namespace
@@ -156,7 +297,7 @@ void TargetSamples::Add(bool success, double time, const std::string& op) {
 }
 
 Statistic TargetSamples::Of(const std::string& quantity) const {
-  if (quantity != "assembly_time") return RateStatistic(successes, attempts);
+  if (quantity == "success_rate") return RateStatistic(successes, attempts);
   Statistic out = MeanStatistic(times);
   double sum = 0;
   for (const auto& [op, t] : by_operator) {
@@ -170,14 +311,62 @@ Statistic TargetSamples::Of(const std::string& quantity) const {
   return out;
 }
 
-TargetSamples LabSamples(const data::LabDataset& lab, const TargetSpec& spec,
-                         const std::string& operator_id) {
+TargetSamples LabSamples(const scene::Scene& scene, const data::LabDataset& lab,
+                         const TargetSpec& spec, const std::string& operator_id) {
+  if (scene::AtInstant(spec.quantity)) return TrackSamples(scene, lab, spec, operator_id);
   TargetSamples samples;
   if (spec.segment > 0) return samples;  // trials carry no segment
   for (const data::LabTrial& t : lab.trials)
     if (t.part == spec.part && Matches(operator_id, t.operator_id) &&
         Matches(spec.condition, t.condition))
       samples.Add(t.success, t.time, t.operator_id);
+  return samples;
+}
+
+void AddAtInstant(const std::vector<double>& times, const std::vector<double>& values,
+                  double end, double instant, const std::string& operator_id,
+                  TargetSamples* samples) {
+  VAHF_CHECK(times.size() == values.size(), "AddAtInstant: one value per row");
+  // The first row after the instant; the one before it is the last at or before.
+  const auto after = std::upper_bound(times.begin(), times.end(), instant);
+  if (end < instant || after == times.begin()) {
+    ++samples->no_value;
+    return;
+  }
+  const double v = values[static_cast<std::size_t>(after - times.begin()) - 1];
+  if (std::isnan(v)) {
+    ++samples->nan_values;
+    return;
+  }
+  samples->Add(true, v, operator_id);
+}
+
+TargetSamples TrackSamples(const scene::Scene& scene, const data::LabDataset& lab,
+                           const TargetSpec& spec, const std::string& operator_id) {
+  TargetSamples samples;
+  for (const data::SensorTrack& track : lab.tracks) {
+    if (!Matches(spec.condition, track.condition) ||
+        !Matches(operator_id, track.operator_id))
+      continue;
+    const data::LabTrial& trial = TrialOfTrack(lab, track);
+    if (trial.part != spec.part || track.samples.empty()) continue;
+    // The operator as the virtual design has them (LabConditions), and the
+    // curves every trial of theirs evaluates.
+    scene::OperatorEntry op;
+    op.name = trial.operator_id;
+    op.sex = trial.sex;
+    op.height = trial.height;
+    op.arm_length = trial.arm_length;
+    const human::FactorCurves curves =
+        sim::OperatorFactorCurves(*experiment::OperatorCondition(scene, op).scene);
+    std::vector<double> times, values;
+    for (const data::TrackFactors& row : data::FactorsFromTrack(track, curves)) {
+      times.push_back(row.time);
+      values.push_back(FactorOf(row.values, spec.quantity));
+    }
+    AddAtInstant(times, values, track.samples.back().time, spec.instant,
+                 track.operator_id, &samples);
+  }
   return samples;
 }
 
@@ -193,19 +382,18 @@ Target MakeTarget(const TargetSpec& spec, const std::string& operator_id) {
   target.spec = spec;
   target.operator_id = operator_id;
   target.unit = UnitOf(spec.quantity);
-  target.label = spec.quantity + " of " + spec.part +
-                 (spec.segment > 0 ? fmt::format(", segment {}", spec.segment) : "") +
-                 (spec.condition.empty() ? "" : ", " + spec.condition) +
-                 (operator_id.empty() ? "" : ", operator " + operator_id);
+  target.label =
+      spec.quantity + " of " + spec.part +
+      (spec.segment > 0 ? fmt::format(", segment {}", spec.segment) : "") +
+      (scene::AtInstant(spec.quantity) ? fmt::format(" at {:g} s", spec.instant) : "") +
+      (spec.condition.empty() ? "" : ", " + spec.condition) +
+      (operator_id.empty() ? "" : ", operator " + operator_id);
   return target;
 }
 
-const std::vector<std::string>& TargetQuantities() {
-  static const std::vector<std::string> kQuantities = {"assembly_time", "success_rate"};
-  return kQuantities;
-}
+const std::vector<std::string>& TargetQuantities() { return scene::FitQuantities(); }
 
-std::vector<Target> LabTargets(const data::LabDataset& lab,
+std::vector<Target> LabTargets(const scene::Scene& scene, const data::LabDataset& lab,
                                const std::vector<TargetSpec>& specs,
                                const std::string& experiment_file,
                                Unweighted unweighted) {
@@ -213,39 +401,8 @@ std::vector<Target> LabTargets(const data::LabDataset& lab,
   for (const TargetSpec& spec : specs) {
     const std::vector<std::string> operators =
         spec.by_operator ? LabOperators(lab) : std::vector<std::string>{""};
-    for (const std::string& op : operators) {
-      const TargetSamples samples = LabSamples(lab, spec, op);
-      Target target = MakeTarget(spec, op);
-      const std::string where = lab.file + (op.empty() ? "" : " (operator " + op + ")");
-      // Without trials, what the lab reports: a segment's counts or a summary.
-      if (samples.attempts == 0 && !spec.by_operator) {
-        if (std::optional<Statistic> reported =
-                ReportedStatistic(lab, spec, experiment_file, unweighted)) {
-          target.lab = *reported;
-          out.push_back(std::move(target));
-          continue;
-        }
-      }
-      if (samples.attempts == 0)
-        throw InputError(
-            experiment_file, spec.pointer, spec.part,
-            "the lab dataset " + where + " has no trials of this part" +
-                (spec.condition.empty() ? "" : " in condition '" + spec.condition + "'") +
-                (spec.by_operator
-                     ? ""
-                     : " and reports no " + spec.quantity +
-                           (spec.segment > 0 ? fmt::format(" of segment {}", spec.segment)
-                                             : "") +
-                           " for it"));
-      if (spec.quantity == "assembly_time" && samples.times.size() < 2)
-        throw InputError(
-            experiment_file, spec.pointer, spec.part,
-            fmt::format("the lab dataset {} has {} successful trial(s) of this "
-                        "part; a mean time and its variance need at least 2",
-                        where, samples.times.size()));
-      target.lab = samples.Of(spec.quantity);
-      out.push_back(std::move(target));
-    }
+    for (const std::string& op : operators)
+      out.push_back(LabTarget(scene, lab, spec, op, experiment_file, unweighted));
   }
   return out;
 }
@@ -308,6 +465,10 @@ TargetSamples VirtualSamples(const Target& target, const experiment::DesignRun& 
       continue;
     const experiment::CycleResult& c = r.result;
     const std::string& op = run.conditions[r.condition].name;
+    if (scene::AtInstant(target.spec.quantity)) {
+      AddCycleAtInstant(c, target.spec, op, &samples);
+      continue;
+    }
     if (target.spec.part == kAllParts) {
       if (!c.numerical_failure) samples.Add(c.completed, c.time, op);
       continue;

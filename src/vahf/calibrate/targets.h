@@ -10,6 +10,15 @@
 //                  a rate of 0 or 1 still carries its sampling uncertainty
 //                  (the Laplace estimate; Agresti and Coull, Am. Stat. 52(2)
 //                  119, 1998, for why the plain p(1 - p) / n fails there)
+//   eta, lambda_c  mean of the vision coefficient (Eq. 2) or the comfort
+//                  coefficient (Eq. 3) at an instant of the part's trials
+//                  (s from the trial's start): on the lab's side from its
+//                  sensor tracks (data::FactorsFromTrack, with the curves
+//                  the simulation builds for the track's operator), on the
+//                  virtual side from each trial's decision trace; the value
+//                  of each is its last row at or before the instant
+//                  (AddAtInstant, one rule for both sides); variance s^2 / n
+//                  as for a time
 #pragma once
 
 #include <string>
@@ -46,7 +55,10 @@ struct Statistic {
 double LabVariance(const Statistic& lab, const Statistic& virt);
 
 // The samples behind a target: the times of its successful trials (each also
-// filed under its operator) and its counts of attempts and successes.
+// filed under its operator) and its counts of attempts and successes. For
+// eta and lambda_c (scene::AtInstant), `times` holds the factor values at the
+// instant, one per track or trial that gave one (attempts = successes = their
+// number), and the two counts below the tracks or trials that gave none.
 // Operators differ in stature and reach, and both the lab and the virtual
 // design hold each operator's share of trials fixed, so the variance of a
 // pooled mean time is the stratified one, sum over operators of n_o s_o^2 /
@@ -58,13 +70,47 @@ struct TargetSamples {
   std::vector<double> times;
   std::vector<std::pair<std::string, std::vector<double>>> by_operator;
   int attempts = 0, successes = 0;
+  // eta and lambda_c: the factor was NaN at the instant (eta and lambda_c
+  // without V, Eqs. 2-3; eta where the part had not yet moved), or the trial
+  // was over before the instant or not yet at its first value there.
+  int nan_values = 0, no_value = 0;
   void Add(bool success, double time, const std::string& operator_id);
+  // The tracks or trials read for eta and lambda_c, with a value or without.
+  int Read() const { return attempts + nan_values + no_value; }
   Statistic Of(const std::string& quantity) const;
 };
 
-// The lab's samples of a target's part, of one operator ("": all).
-TargetSamples LabSamples(const data::LabDataset& lab, const TargetSpec& spec,
-                         const std::string& operator_id);
+// The lab's samples of a target's part, of one operator ("": all): of its
+// trials, or for eta and lambda_c of its tracks (TrackSamples).
+TargetSamples LabSamples(const scene::Scene& scene, const data::LabDataset& lab,
+                         const TargetSpec& spec, const std::string& operator_id);
+
+// The rule both sides of an eta or lambda_c target share, for one track or
+// trial whose rows (sensor samples, decision instants) have strictly
+// increasing `times` (s from the trial's start) and factor `values`, and
+// which ended at `end`: its value at `instant` is that of the last row at or
+// before the instant. The factors are held between rows as the simulation
+// holds the operator's decision between decision instants; interpolating
+// would blend values across a change of V or of the motion's direction that
+// no row measured. Over before the instant (end < instant), or without a row
+// at or before it: no value (no_value). A NaN value is left out and counted
+// (nan_values).
+void AddAtInstant(const std::vector<double>& times, const std::vector<double>& values,
+                  double end, double instant, const std::string& operator_id,
+                  TargetSamples* samples);
+
+// The lab's eta or lambda_c of a target (of one operator, "": all) from its
+// sensor tracks: each track of the target's condition (any when it names
+// none) and operator whose trial, the row of trials.csv with the track's
+// operator, condition and repetition, is of the target's part, evaluated by
+// data::FactorsFromTrack with the curves the simulation builds for that
+// operator (experiment::OperatorCondition, sim::OperatorFactorCurves), read
+// at the instant by AddAtInstant; a track ends at its last sample. An
+// InputError naming the track's file when trials.csv has no trial, or trials
+// of several parts, for it: a track's part and its operator's stature and arm
+// length (r's breakpoints, Fig. 4) come from its trial.
+TargetSamples TrackSamples(const scene::Scene& scene, const data::LabDataset& lab,
+                           const TargetSpec& spec, const std::string& operator_id);
 
 // One residual of a calibration: the lab's statistic for a target (for one
 // operator, or "" for all).
@@ -74,6 +120,9 @@ struct Target {
   std::string label;        // "assembly_time of peg, operator male 1"
   std::string unit;         // "s" or "1"
   Statistic lab;
+  // eta, lambda_c: the lab's statistic is from its sensor tracks, measured
+  // with the scene's factor curves (a fit of those curves would move it).
+  bool from_tracks = false;
 };
 
 // The lab's operators in order of first appearance in its trials.
@@ -97,10 +146,13 @@ enum class Unweighted { kRefuse, kPoint };
 // row answers a target of its quantity, part and segment whose condition is
 // the row's; a target without a condition takes the row without one, else
 // the only condition the lab reports it for (an InputError when there are
-// several: the target must name one). An InputError naming `experiment_file`
-// and the target's pointer when the lab has no trials for it (or, for
-// assembly_time, fewer than two successful ones: no variance).
-std::vector<Target> LabTargets(const data::LabDataset& lab,
+// several: the target must name one; for eta and lambda_c, the row of the
+// target's instant). eta and lambda_c come from the lab's tracks
+// (TrackSamples), and from what it reports only when it has no track for
+// the target. An InputError naming `experiment_file` and the target's
+// pointer when the lab has no trials (tracks) for it (or, for assembly_time,
+// eta and lambda_c, fewer than two values: no variance).
+std::vector<Target> LabTargets(const scene::Scene& scene, const data::LabDataset& lab,
                                const std::vector<TargetSpec>& specs,
                                const std::string& experiment_file,
                                Unweighted unweighted = Unweighted::kRefuse);
@@ -125,6 +177,9 @@ std::string LabReachViolation(const scene::Scene& scene, const data::LabDataset&
 // A target's statistic on a run of LabConditions. A part trial that ended
 // as a numerical failure is left out (it says nothing about the assembly).
 // With no sample (no completed trial for assembly_time), value is NaN.
+// eta and lambda_c come from each part trial's decision trace (recorded:
+// experiment::RunDesign's record_trace), read at the instant by AddAtInstant;
+// for part "all", the cycle's trials on one clock from its start.
 // A segment target reads the conditions whose 0-based segment, in
 // `segments` (experiment::FatigueRun::segments), is its own.
 Statistic VirtualStatistic(const Target& target, const experiment::DesignRun& run,

@@ -28,15 +28,25 @@ std::string Value(double x, const std::string& unit) {
   return unit == "s" ? fmt::format("{:.4g} s", x) : fmt::format("{:.3g}", x);
 }
 
-void CompareTimes(QuantityComparison* q) {
+// What the samples of a mean are: "successful trials" for a time, "values
+// at 3 s" for eta and lambda_c.
+std::string SamplesOf(const calibrate::Target& target) {
+  return scene::AtInstant(target.spec.quantity)
+             ? fmt::format("values at {:g} s", target.spec.instant)
+             : "successful trials";
+}
+
+// A mean (a time, eta or lambda_c) from both sides' samples: Welch, TOST,
+// the area metric and KS.
+void CompareMeans(QuantityComparison* q) {
   const std::vector<double>& a = q->virt.times;
   const std::vector<double>& b = q->lab.times;
   q->lab_ci = MeanInterval(b);
   q->virtual_ci = MeanInterval(a);
   if (a.size() < 2 || b.size() < 2) {
-    q->untestable_reason = fmt::format(
-        "{} virtual and {} lab successful trials; a mean's interval needs 2 on each side",
-        a.size(), b.size());
+    q->untestable_reason =
+        fmt::format("{} virtual and {} lab {}; a mean's interval needs 2 on each side",
+                    a.size(), b.size(), SamplesOf(q->target));
     return;
   }
   stats::TostResult tost;
@@ -111,6 +121,17 @@ void SetVerdict(QuantityComparison* q) {
       q->agree ? "inside" : "not inside", Value(q->margin, u), q->tost_p, basis);
 }
 
+// Why the virtual side gave nothing: no trial of the part, or for eta and
+// lambda_c none with a value at the instant.
+std::string NoVirtualReason(const calibrate::Target& target,
+                            const calibrate::TargetSamples& virt) {
+  if (!scene::AtInstant(target.spec.quantity) || virt.Read() == 0)
+    return "the virtual design attempted this part in no cycle";
+  return fmt::format(
+      "no virtual trial gave {} at {:g} s ({} over before it, {} NaN there)",
+      target.spec.quantity, target.spec.instant, virt.no_value, virt.nan_values);
+}
+
 // A comparison of `target` with its virtual side filled in.
 QuantityComparison WithVirtual(const calibrate::Target& target, double margin,
                                const calibrate::TargetSamples& virt) {
@@ -130,17 +151,17 @@ QuantityComparison CompareSamples(const calibrate::Target& target, double margin
   QuantityComparison q = WithVirtual(target, margin, virt);
   q.lab = lab;
   q.lab_variance = target.lab.variance;
-  const bool time = target.spec.quantity == "assembly_time";
+  const bool mean = target.spec.quantity != "success_rate";
   if (virt.attempts == 0) {
-    q.untestable_reason = "the virtual design attempted this part in no cycle";
-  } else if (time) {
-    CompareTimes(&q);
+    q.untestable_reason = NoVirtualReason(target, virt);
+  } else if (mean) {
+    CompareMeans(&q);
   } else {
     CompareRates(&q);
   }
   if (!q.ks)
     q.ks_unavailable =
-        time ? q.untestable_reason : "a rate is not a distribution of times";
+        mean ? q.untestable_reason : "a rate is not a distribution of times";
   SetVerdict(&q);
   return q;
 }
@@ -151,9 +172,9 @@ QuantityComparison CompareReported(const calibrate::Target& target, double margi
   q.reported = true;
   q.ks_unavailable = "the lab reports a summary, not samples";
   const calibrate::Statistic& l = target.lab;
-  const bool time = target.spec.quantity == "assembly_time";
+  const bool mean = target.spec.quantity != "success_rate";
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  q.virtual_ci = time ? MeanInterval(virt.times)
+  q.virtual_ci = mean ? MeanInterval(virt.times)
                  : virt.attempts > 0
                      ? stats::WilsonInterval({virt.successes, virt.attempts})
                      : stats::Interval{nan, nan};
@@ -162,15 +183,16 @@ QuantityComparison CompareReported(const calibrate::Target& target, double margi
   if (std::isfinite(q.lab_variance)) {
     const double h = gsl_cdf_ugaussian_Pinv(0.975) * std::sqrt(q.lab_variance);
     q.lab_ci = {l.value - h, l.value + h};
-    if (!time) q.lab_ci = {std::max(0.0, q.lab_ci.lower), std::min(1.0, q.lab_ci.upper)};
+    if (q.target.unit == "1")  // a rate, eta or lambda_c lies in [0, 1]
+      q.lab_ci = {std::max(0.0, q.lab_ci.lower), std::min(1.0, q.lab_ci.upper)};
   }
   const double var = q.virtual_stat.variance + q.lab_variance;
   if (virt.attempts == 0) {
-    q.untestable_reason = "the virtual design attempted this part in no cycle";
-  } else if (time && virt.times.size() < 2) {
+    q.untestable_reason = NoVirtualReason(target, virt);
+  } else if (mean && virt.times.size() < 2) {
     q.untestable_reason =
-        fmt::format("{} virtual successful trial(s); the virtual mean's variance needs 2",
-                    virt.times.size());
+        fmt::format("{} virtual {}; the virtual mean's variance needs 2",
+                    virt.times.size(), SamplesOf(target));
   } else if (!l.single_draw && !std::isfinite(l.variance)) {
     q.untestable_reason = fmt::format(
         "the lab reports {} without sd and n or an uncertainty: with no spread on the "
@@ -183,15 +205,15 @@ QuantityComparison CompareReported(const calibrate::Target& target, double margi
     q.difference = q.virtual_stat.value - l.value;
     NormalTest(&q, q.difference, std::sqrt(var));
     // Against a point value x the lab's distribution is a step at x: for a
-    // time the area is the mean |v_i - x|, for a rate |p_v - p_l|.
-    q.area_metric = time ? stats::AreaValidationMetric(virt.times, {l.value})
+    // mean the area is the mean |v_i - x|, for a rate |p_v - p_l|.
+    q.area_metric = mean ? stats::AreaValidationMetric(virt.times, {l.value})
                          : std::fabs(q.difference);
   }
   SetVerdict(&q);
   return q;
 }
 
-std::vector<LabQuantity> LabSide(const data::LabDataset& lab,
+std::vector<LabQuantity> LabSide(const scene::Scene& scene, const data::LabDataset& lab,
                                  const ComparisonDesign& design,
                                  const std::string& experiment_file) {
   std::vector<LabQuantity> out;
@@ -205,19 +227,24 @@ std::vector<LabQuantity> LabSide(const data::LabDataset& lab,
     for (const std::string& op : operators) {
       LabQuantity q;
       q.margin = spec.margin;
-      q.samples = calibrate::LabSamples(lab, spec, op);
-      if (q.samples.attempts > 0) {
+      q.samples = calibrate::LabSamples(scene, lab, spec, op);
+      // eta and lambda_c: the lab's tracks, even when too few give a value
+      // (the comparison then says so).
+      const bool instant = scene::AtInstant(spec.quantity);
+      if (instant ? q.samples.Read() > 0 : q.samples.attempts > 0) {
         q.target = calibrate::MakeTarget(spec, op);
         q.target.lab = q.samples.Of(spec.quantity);
+        q.target.from_tracks = instant;
       } else if (!op.empty()) {
         // What a lab reports is never an operator's.
         throw InputError(experiment_file, spec.pointer, spec.part,
                          "the lab dataset " + lab.file + " (operator " + op +
-                             ") has no trials of this part");
+                             ") has no " + (instant ? "sensor tracks" : "trials") +
+                             " of this part");
       } else {
         // No trials: what the lab reports (an InputError when it reports
         // nothing either).
-        q.target = calibrate::LabTargets(lab, {spec}, experiment_file,
+        q.target = calibrate::LabTargets(scene, lab, {spec}, experiment_file,
                                          calibrate::Unweighted::kPoint)
                        .front();
         q.reported = true;
@@ -229,7 +256,7 @@ std::vector<LabQuantity> LabSide(const data::LabDataset& lab,
 }
 
 std::string LabBasis(const calibrate::Target& target, bool reported) {
-  if (!reported) return "trials";
+  if (!reported) return target.from_tracks ? "tracks" : "trials";
   if (target.lab.single_draw) return "reported once, no spread (a single draw)";
   return std::isfinite(target.lab.variance) ? "reported" : "reported, no spread";
 }
@@ -240,12 +267,14 @@ ComparisonResult Compare(const scene::Scene& scene, const data::LabDataset& lab,
                          int trials, const experiment::RunnerOptions& options,
                          const experiment::RunnerOptions& pilot_options) {
   // The lab's side first: a quantity it cannot supply costs no simulation.
-  const std::vector<LabQuantity> planned = LabSide(lab, design, experiment_file);
-  bool operators = false;
+  const std::vector<LabQuantity> planned = LabSide(scene, lab, design, experiment_file);
+  bool operators = false, trace = false;
   std::vector<int> segments;  // 0-based, increasing
   for (const LabQuantity& p : planned) {
     const int s = p.target.spec.segment;
     if (s == 0) operators = true;
+    // eta and lambda_c are read off the decision trace.
+    if (scene::AtInstant(p.target.spec.quantity)) trace = true;
     if (s > 0 && std::find(segments.begin(), segments.end(), s - 1) == segments.end())
       segments.push_back(s - 1);
   }
@@ -253,7 +282,7 @@ ComparisonResult Compare(const scene::Scene& scene, const data::LabDataset& lab,
   ComparisonResult out;
   if (operators)
     out.run = experiment::RunDesign(calibrate::LabConditions(scene, lab, trials), trials,
-                                    seed, false, options);
+                                    seed, trace, options);
   // The scene's operator works the hour; only the segments the quantities
   // name are run (the pilot, which measures the work rate, always is), as a
   // calibration runs them.

@@ -1,20 +1,22 @@
 // A virtual design against a lab dataset, quantity by quantity (the
 // `compare` kind; docs/experiments.md, "compare"). A quantity is a part's
-// mean assembly time or success rate, over all operators or per operator, of
-// a lab condition and of a segment of the hour of work. The virtual side runs
-// the design that mirrors the lab's operators (calibrate::LabConditions) for
-// quantities without a segment, and the fatigue design (experiment::
-// RunFatigue) for segment quantities, each only when a quantity needs it.
+// mean assembly time or success rate, or its mean eta (Eq. 2) or lambda_c
+// (Eq. 3) at an instant of its trials, over all operators or per operator, of
+// a lab condition and (but eta and lambda_c) of a segment of the hour of work. The
+// virtual side runs the design that mirrors the lab's operators
+// (calibrate::LabConditions) for quantities without a segment, and the fatigue design
+// (experiment:: RunFatigue) for segment quantities, each only when a quantity needs it.
 //
-// Against the lab's trials, each quantity is compared by
-//   - the difference (virtual - lab) with its 95 % interval (Welch for times,
+// Against the lab's trials (tracks for eta and lambda_c), each quantity is
+// compared by
+//   - the difference (virtual - lab) with its 95 % interval (Welch for means,
 //     the normal interval on Laplace-smoothed proportions for rates),
 //   - an equivalence test against the margin the experiment file states
 //     (TOST, Schuirmann 1987; stats/equivalence.h): "agree" only when shown
 //     within it,
 //   - the area validation metric between the two empirical distributions, in
 //     the quantity's unit (Ferson, Oberkampf and Ginzburg 2008),
-//   - the two-sample KS test where both sides have times.
+//   - the two-sample KS test where both sides have samples of a mean.
 // Against what the lab reports without its trials (a summary, a segment's
 // counts: calibrate::LabTargets), by the normal approximation: the difference
 // virtual - lab with se = sqrt(virtual variance + lab variance), the TOST on
@@ -50,13 +52,16 @@ struct LabQuantity {
 // operator, in the order operators first appear in the lab's trials. A
 // quantity the lab has trials for takes them; otherwise what the lab reports
 // (calibrate::LabTargets: a segment's counts or a summary; a value reported
-// without any spread is kept as a point). An InputError naming
-// `experiment_file` and the quantity's pointer when the lab has neither.
-std::vector<LabQuantity> LabSide(const data::LabDataset& lab,
+// without any spread is kept as a point). eta and lambda_c at an instant
+// take the lab's sensor tracks (calibrate::TrackSamples, measured with the
+// curves `scene` builds for each operator) when it has any for the quantity,
+// else what it reports. An InputError naming `experiment_file` and the
+// quantity's pointer when the lab has neither.
+std::vector<LabQuantity> LabSide(const scene::Scene& scene, const data::LabDataset& lab,
                                  const ComparisonDesign& design,
                                  const std::string& experiment_file);
 
-// How the lab's side of `q` was obtained, for reports: "trials", "reported",
+// How the lab's side of `q` was obtained, for reports: "trials", "tracks", "reported",
 // "reported once, no spread (a single draw)", "reported, no spread".
 std::string LabBasis(const calibrate::Target& target, bool reported);
 

@@ -31,7 +31,7 @@ std::string CheckCalibration(const scene::ExperimentFile& e) {
     for (const calibrate::FitParameter& p : stage.parameters)
       out += fmt::format("  fits {} from {:g} within [{:g}, {:g}]\n", p.name, p.start,
                          p.lower, p.upper);
-    for (const auto& t : calibrate::LabTargets(lab, stage.targets, e.file)) {
+    for (const auto& t : calibrate::LabTargets(e.scene, lab, stage.targets, e.file)) {
       if (t.lab.single_draw)
         out += fmt::format(
             "  target {}: lab {:g} (one draw: weighed by the virtual spread)\n", t.label,

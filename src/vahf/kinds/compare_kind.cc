@@ -24,7 +24,7 @@ std::string CheckComparison(const scene::ExperimentFile& e) {
   calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
   bool segments = false;
   for (const auto& q :
-       compare::LabSide(lab, e.Input<compare::ComparisonDesign>(), e.file)) {
+       compare::LabSide(e.scene, lab, e.Input<compare::ComparisonDesign>(), e.file)) {
     const char* unit = q.target.unit == "s" ? " s" : "";
     out += fmt::format("  compares {} within +-{:g}{}: lab {:g}{} from {}\n",
                        q.target.label, q.margin, unit, q.target.lab.value, unit,

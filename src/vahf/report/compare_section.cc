@@ -30,7 +30,8 @@ std::string Side(double value, const stats::Interval& ci, int n) {
 }
 
 // The samples behind a side's value: successful trials for a time, attempts
-// for a rate; for a reported statistic the n the lab states (0: none).
+// for a rate, values at the instant for eta and lambda_c (attempts too); for
+// a reported statistic the n the lab states (0: none).
 int SideN(const compare::QuantityComparison& q, bool lab) {
   const bool time = q.target.spec.quantity == "assembly_time";
   if (lab && q.reported) return q.target.lab.n;
@@ -38,22 +39,34 @@ int SideN(const compare::QuantityComparison& q, bool lab) {
   return time ? static_cast<int>(s.times.size()) : s.attempts;
 }
 
+// The rows that share a table and a plot: times (s), rates, and eta and
+// lambda_c at instants (both in 1, but not shares of attempts).
+std::string GroupOf(const compare::QuantityComparison& q) {
+  if (q.target.unit == "s") return "s";
+  return scene::AtInstant(q.target.spec.quantity) ? "factor" : "rate";
+}
+
 std::string Verdict(const compare::QuantityComparison& q) {
   return !q.testable ? "untestable" : q.agree ? "agree" : "not shown to agree";
 }
 
-// What a unit's rows are, on a plot's axis and a table's heading.
+// What a group's rows are (GroupOf), on a plot's axis and a table's heading.
 struct UnitText {
   const char* heading;  // "Mean assembly times"
   const char* axis;     // "mean assembly time (s)"
   const char* plot;     // "plots/compare_times.png"
+  const char* unit;     // of its values: "s" or "1"
+  const char* column;   // in its table's headings: "s", "rate", "1"
 };
-UnitText TextOf(const std::string& unit) {
-  if (unit == "s")
+UnitText TextOf(const std::string& group) {
+  if (group == "s")
     return {"Mean assembly times (s)", "mean assembly time (s)",
-            "plots/compare_times.png"};
+            "plots/compare_times.png", "s", "s"};
+  if (group == "factor")
+    return {"Human factors at an instant: eta (Eq. 2) and lambda_c (Eq. 3)",
+            "mean eta or lambda_c (1)", "plots/compare_factors.png", "1", "1"};
   return {"Success rates (1: a share of attempts)", "success rate (1)",
-          "plots/compare_rates.png"};
+          "plots/compare_rates.png", "1", "rate"};
 }
 
 // A gnuplot double-quoted string; with `lines`, each ", " starts a new line.
@@ -93,11 +106,11 @@ std::string Tic(const compare::QuantityComparison& q) {
   return Quoted(tic, true);
 }
 
-// Lab beside virtual for the rows of one unit, each with its 95 % interval;
+// Lab beside virtual for the rows of one group, each with its 95 % interval;
 // a value without an interval as a point of its own style.
 Plot UnitPlot(const std::vector<const compare::QuantityComparison*>& rows,
-              const std::string& unit) {
-  const UnitText text = TextOf(unit);
+              const std::string& group) {
+  const UnitText text = TextOf(group);
   std::vector<DataRow> data;
   std::string tics;
   bool lab_point = false, virt_point = false;
@@ -113,7 +126,7 @@ Plot UnitPlot(const std::vector<const compare::QuantityComparison*>& rows,
   f.Data("d", data)
       .Set("title " + Quoted(std::string("Virtual against the lab: ") + text.heading))
       .Set("ylabel " + Quoted(text.axis));
-  if (unit == "s")
+  if (group == "s")
     f.Set("yrange [0:*]").Set("offsets 0, 0, graph 0.08, 0");
   else
     f.Set("yrange [0:1.05]");
@@ -240,15 +253,15 @@ std::vector<std::string> QuantityMarkdown(const compare::QuantityComparison& q) 
           q.verdict};
 }
 
-// The quantities grouped by unit, the units in the order they first appear.
+// The quantities grouped by GroupOf, the groups in the order they first appear.
 std::vector<std::pair<std::string, std::vector<const compare::QuantityComparison*>>>
 ByUnit(const std::vector<compare::QuantityComparison>& quantities) {
   std::vector<std::pair<std::string, std::vector<const compare::QuantityComparison*>>>
       units;
   for (const compare::QuantityComparison& q : quantities) {
     auto it = units.begin();
-    while (it != units.end() && it->first != q.target.unit) ++it;
-    if (it == units.end()) it = units.insert(units.end(), {q.target.unit, {}});
+    while (it != units.end() && it->first != GroupOf(q)) ++it;
+    if (it == units.end()) it = units.insert(units.end(), {GroupOf(q), {}});
     it->second.push_back(&q);
   }
   return units;
@@ -296,9 +309,9 @@ std::string CompareIntro(const scene::ExperimentFile& file, const data::LabDatas
       lab.provenance.value("source", ""), Designs(file, r, trials));
 }
 
-// The Markdown table of one unit's quantities (QuantityMarkdown).
-MarkdownTable UnitTable(const std::string& unit) {
-  const std::string u = unit == "s" ? "s" : "rate";
+// The Markdown table of one group's quantities (QuantityMarkdown).
+MarkdownTable UnitTable(const std::string& group) {
+  const std::string unit = TextOf(group).unit, u = TextOf(group).column;
   return MarkdownTable({"quantity", "lab from", fmt::format("margin ({})", unit),
                         fmt::format("lab ({}, 95 %)", u),
                         fmt::format("virtual ({}, 95 %)", u),
@@ -314,16 +327,16 @@ Section ComparisonSection(const scene::ExperimentFile& file, const data::LabData
   Table t = QuantitiesTable();
   nlohmann::json quantities = nlohmann::json::array();
   std::string md = CompareIntro(file, lab, r, trials);
-  // One table and one plot per unit.
-  for (const auto& [unit, rows] : ByUnit(r.quantities)) {
-    MarkdownTable table = UnitTable(unit);
+  // One table and one plot per group (times, rates, eta and lambda_c).
+  for (const auto& [group, rows] : ByUnit(r.quantities)) {
+    MarkdownTable table = UnitTable(group);
     for (const compare::QuantityComparison* q : rows) {
       t.AddRow(QuantityCells(*q));
       quantities.push_back(QuantityJson(*q));
       table.AddRow(QuantityMarkdown(*q));
     }
-    md += fmt::format("### {}\n\n", TextOf(unit).heading) + ToMarkdown(table) + "\n";
-    out.plots.push_back(UnitPlot(rows, unit));
+    md += fmt::format("### {}\n\n", TextOf(group).heading) + ToMarkdown(table) + "\n";
+    out.plots.push_back(UnitPlot(rows, group));
   }
   const experiment::DesignRun cycles = AllCycles(r);
   out.tables.emplace_back("compare_quantities.csv", std::move(t));

@@ -41,6 +41,35 @@ FatigueDesign ReadFatigue(const JsonNode& root) {
   return out;
 }
 
+const std::vector<std::string>& FitQuantities() {
+  static const std::vector<std::string> kQuantities = {"assembly_time", "success_rate",
+                                                       "eta", "lambda_c"};
+  return kQuantities;
+}
+
+bool AtInstant(const std::string& quantity) {
+  return quantity == "eta" || quantity == "lambda_c";
+}
+
+namespace {
+
+// A target's instant: required of eta and lambda_c (the factors change over a
+// trial; a value without its instant compares nothing), refused elsewhere.
+void ReadInstant(const JsonNode& node, FitTarget* t) {
+  if (!AtInstant(t->quantity)) {
+    if (auto instant = node.Optional("instant"))
+      instant->Fail("only eta and lambda_c are read at an instant");
+    return;
+  }
+  t->instant = node.Required("instant").NonNegative();  // finite, s from the start
+  if (t->segment > 0)
+    node.Required("segment").Fail(
+        "eta and lambda_c at an instant are read from the lab operators' trials, "
+        "not from a segment of the hour of work");
+}
+
+}  // namespace
+
 std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene,
                                    bool margin) {
   std::vector<FitTarget> out;
@@ -48,13 +77,14 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene,
   for (std::size_t k = 0; k < m; ++k) {
     const JsonNode node = list.At(k);
     if (margin) {
-      node.ExpectObject({"quantity", "part", "by", "segment", "condition", "margin"});
+      node.ExpectObject(
+          {"quantity", "part", "by", "segment", "condition", "instant", "margin"});
     } else {
-      node.ExpectObject({"quantity", "part", "by", "segment", "condition"});
+      node.ExpectObject({"quantity", "part", "by", "segment", "condition", "instant"});
     }
     FitTarget t;
     t.pointer = node.path();
-    t.quantity = node.Required("quantity").Choice({"assembly_time", "success_rate"});
+    t.quantity = node.Required("quantity").Choice(FitQuantities());
     std::vector<std::string> parts = {"all"};
     for (int index : scene.sequence) parts.push_back(scene.parts[index].name);
     t.part = node.Required("part").Choice(parts);
@@ -69,7 +99,9 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene,
     }
     if (t.segment > 0 && t.by_operator)
       node.Required("by").Fail("a segment's value is the lab's over all operators");
-    // A margin is in the quantity's unit: at most an hour for a time, 1 for a rate.
+    ReadInstant(node, &t);
+    // A margin is in the quantity's unit: at most an hour for a time, 1 for a
+    // rate, eta or lambda_c.
     if (margin)
       t.margin =
           node.Required("margin").InRange(0, t.quantity == "assembly_time" ? 3600 : 1);

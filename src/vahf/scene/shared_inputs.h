@@ -4,6 +4,7 @@
 // a lab summary to fit or compare (calibrate, compare).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -40,7 +41,7 @@ FatigueDesign ReadFatigue(const JsonNode& root);
 // A lab summary a calibration fits (calibrate/targets.h): a quantity of one
 // part ("all": whole cycles), over all the lab's operators or each one's.
 struct FitTarget {
-  std::string quantity;      // "assembly_time" or "success_rate"
+  std::string quantity;      // one of FitQuantities()
   std::string part;          // a part of the scene's sequence, or "all"
   bool by_operator = false;  // one target per lab operator instead of one over all
   std::string pointer;       // where the experiment file states it
@@ -52,12 +53,25 @@ struct FitTarget {
   int segment = 0;
   // The lab's condition (series) to read, e.g. "real"; empty: any.
   std::string condition;
+  // eta and lambda_c (AtInstant): the instant, s from the trial's start, at
+  // which the factor is read (calibrate/targets.h); NaN for the others.
+  double instant = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The quantities a target may name, the one list (calibrate::TargetQuantities):
+// assembly_time, success_rate, and the vision and comfort coefficients eta
+// (Eq. 2) and lambda_c (Eq. 3) at an instant of the trial.
+const std::vector<std::string>& FitQuantities();
+
+// Whether `quantity` is read at an instant of a trial (eta, lambda_c).
+bool AtInstant(const std::string& quantity);
 
 // Lab summaries as a calibration's targets or a comparison's quantities name
 // them: quantity, part (of the scene's sequence, or "all"), by ("operator" or
 // "all"), segment (1-based) and condition (the lab's, not empty: without it,
-// any), and for a comparison (`margin`) the equivalence margin.
+// any), for eta and lambda_c the instant (s, finite and >= 0; no other
+// quantity takes one, and they take no segment), and for a comparison
+// (`margin`) the equivalence margin.
 std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, bool margin);
 
 // Segment targets or quantities lie within the fatigue design's hour; an

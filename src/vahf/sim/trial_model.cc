@@ -172,6 +172,12 @@ TrialModel::Visibility VisibilityModeOf(const visibility::VisibilityParams& v) {
 
 }  // namespace
 
+human::FactorCurves OperatorFactorCurves(const scene::Scene& scene) {
+  const auto& params = scene.params;
+  return {params.sight.Build(), params.reach.Build(scene.op.arm_length, scene.op.height),
+          params.glance.Build()};
+}
+
 std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
                                                   int sequence_position) {
   const auto& params = scene.params;
@@ -183,9 +189,7 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
   // them here if nowhere else.
   scene::RequireCountableSizes(scene);
   const scene::Part& part = scene.parts[scene.sequence[sequence_position]];
-  auto out = std::make_shared<TrialModel>(human::FactorCurves{
-      params.sight.Build(), params.reach.Build(scene.op.arm_length, scene.op.height),
-      params.glance.Build()});
+  auto out = std::make_shared<TrialModel>(OperatorFactorCurves(scene));
   TrialModel& m = *out;
   m.params = params;
   m.gravity = scene.gravity;

@@ -139,6 +139,12 @@ struct TrialModel {
   double CompletionWitness(const contact::RigidMotion& m) const;
 };
 
+// The factor curves f, r and g (Figs. 3-5) of the scene's operator, as every
+// trial of the scene evaluates them: r's breakpoints from the operator's arm
+// length and stature. A lab track is measured with the same curves
+// (calibrate/targets.h).
+human::FactorCurves OperatorFactorCurves(const scene::Scene& scene);
+
 // The model of the part at `sequence_position` of scene.sequence, against the
 // base, parts with role "assembled" and the parts assembled before it (at
 // their targets). InputError (naming scene.file) for what only building it
