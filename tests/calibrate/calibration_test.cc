@@ -15,6 +15,7 @@
 
 #include "vahf/calibrate/synthetic_lab.h"
 #include "vahf/core/error.h"
+#include "vahf/experiment/design.h"
 #include "vahf/human/factor_curves.h"
 #include "vahf/scene/scene_loader.h"
 
@@ -250,6 +251,70 @@ TEST(Calibration, AGoldenSectionSearchWalksUpToTheRulesEdgeAndStops) {
   EXPECT_LT(r.parameters[0].estimate, edge) << r.search_log;
   EXPECT_GT(r.refused, 0) << r.search_log;
   EXPECT_LT(r.parameters[0].profile.upper, edge) << r.search_log;
+}
+
+// A stage with targets of both kinds, each operator's time and the success
+// rate of two segments of an hour of work, runs both virtual designs at each
+// parameter vector: the lab's operators on the first stream indices, the
+// fatigue design after them, so that the two kinds are independent
+// residuals. Its start statistics are those of the two designs run here.
+TEST(Calibration, AStageOfTimesAndSegmentsRunsBothDesignsOnStreamsOfTheirOwn) {
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  data::LabDataset lab = GenerateSyntheticLab(BlockLab(41), Quiet());
+  for (int s = 1; s <= 2; ++s) {
+    data::LabSegment seg;
+    seg.segment = s;
+    seg.start_min = 5.0 * (s - 1);
+    seg.end_min = 5.0 * s;
+    seg.attempts = 10;
+    seg.successes = s == 1 ? 9 : 7;
+    seg.line = s + 1;
+    lab.segments.push_back(seg);
+  }
+  lab.segments_file = "segments.csv";
+  CalibrationSpec spec = KappaFromTime();
+  spec.stages[0].parameters.push_back(
+      {"fatigue/a_max", 20000.0, 500.0, 1e6, "/parameters/1"});
+  spec.stages[0].targets[0].by_operator = true;
+  for (int s = 1; s <= 2; ++s) {
+    TargetSpec t;
+    t.quantity = "success_rate";
+    t.part = "all";
+    t.segment = s;
+    t.pointer = "/targets/" + std::to_string(s);
+    spec.stages[0].targets.push_back(t);
+  }
+  spec.fatigue = {10.0, 2, 2};
+  spec.max_iterations = 2;
+  spec.noise_replicates = 0;
+  constexpr int kTrials = 4;
+  const CalibrationResult r = Fit(scene, lab, spec, "test", 7, kTrials, Quiet());
+  ASSERT_EQ(r.targets.size(), 4u);  // two operators' times, two segments
+
+  scene::Scene start = scene;
+  start.params.guidance.kappa = 400.0;
+  start.params.fatigue.a_max = 20000.0;
+  const std::vector<Target> targets =
+      LabTargets(scene, lab, spec.stages[0].targets, "test");
+  const std::vector<experiment::Condition> operators = LabConditions(start, lab, kTrials);
+  const experiment::DesignRun run =
+      experiment::RunDesign(operators, kTrials, 7, false, Quiet());
+  const experiment::FatigueRun hour = experiment::RunFatigue(
+      std::make_shared<const scene::Scene>(start), spec.fatigue, kTrials, 7, Quiet(),
+      Quiet(), {0, 1}, operators.size() * kTrials);
+  for (std::size_t i = 0; i < 2; ++i)
+    EXPECT_EQ(r.targets[i].start.value, VirtualStatistic(targets[i], run).value) << i;
+  for (std::size_t i = 2; i < 4; ++i)
+    EXPECT_EQ(r.targets[i].start.value,
+              VirtualStatistic(targets[i], hour.run, hour.segments).value)
+        << i;
+  // On the first stream indices instead, the hour's cycles would repeat the
+  // operators' draws: the pilot's and segments' first cycles are not those.
+  const experiment::FatigueRun shared =
+      experiment::RunFatigue(std::make_shared<const scene::Scene>(start), spec.fatigue,
+                             kTrials, 7, Quiet(), Quiet(), {0, 1});
+  EXPECT_NE(shared.run.records[0].result.time, hour.run.records[0].result.time);
 }
 
 // Fractions at which every operator's reach stays on its plateau (D1 beyond

@@ -60,7 +60,10 @@ class VirtualModel {
         segments_.push_back(t.spec.segment - 1);
     std::sort(segments_.begin(), segments_.end());
     // eta and lambda_c are read off the decision trace.
-    for (const Target& t : targets_) trace_ = trace_ || scene::AtInstant(t.spec.quantity);
+    for (const Target& t : targets_) {
+      trace_ = trace_ || scene::AtInstant(t.spec.quantity);
+      operators_ = operators_ || t.spec.segment == 0;
+    }
   }
 
   // Empty when x lies in the valid region: within the parameters' bounds,
@@ -76,7 +79,7 @@ class VirtualModel {
     }
     const scene::Scene s = Applied(x);
     std::string violation = scene::ParameterViolation(s);
-    if (violation.empty() && segments_.empty()) violation = LabReachViolation(s, lab_);
+    if (violation.empty() && operators_) violation = LabReachViolation(s, lab_);
     return violation;
   }
 
@@ -99,19 +102,28 @@ class VirtualModel {
     }
     const auto start = std::chrono::steady_clock::now();
     const scene::Scene s = Applied(x);
-    std::vector<Statistic> stats;
-    if (segments_.empty()) {
-      const experiment::DesignRun run = experiment::RunDesign(
-          LabConditions(s, lab_, trials_), trials_, seed_, trace_, options_);
-      for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, run));
-    } else {
+    std::vector<Statistic> stats(targets_.size());
+    std::uint64_t cycles = 0;  // the stream indices the lab's design used
+    if (operators_) {
+      const std::vector<experiment::Condition> conditions =
+          LabConditions(s, lab_, trials_);
+      cycles = conditions.size() * static_cast<std::uint64_t>(trials_);
+      const experiment::DesignRun run =
+          experiment::RunDesign(conditions, trials_, seed_, trace_, options_);
+      for (std::size_t i = 0; i < targets_.size(); ++i)
+        if (targets_[i].spec.segment == 0) stats[i] = VirtualStatistic(targets_[i], run);
+    }
+    if (!segments_.empty()) {
       // The scene's operator works the hour; only the segments the targets
-      // name are run (the pilot, which measures the work rate, always is).
+      // name are run (the pilot, which measures the work rate, always is),
+      // beside the lab's design on stream indices of their own, so that the
+      // two kinds of target are independent residuals.
       const experiment::FatigueRun f =
           experiment::RunFatigue(std::make_shared<const scene::Scene>(s), spec_.fatigue,
-                                 trials_, seed_, options_, options_, segments_);
-      for (const Target& t : targets_)
-        stats.push_back(VirtualStatistic(t, f.run, f.segments));
+                                 trials_, seed_, options_, options_, segments_, cycles);
+      for (std::size_t i = 0; i < targets_.size(); ++i)
+        if (targets_[i].spec.segment > 0)
+          stats[i] = VirtualStatistic(targets_[i], f.run, f.segments);
     }
     ++evaluations_;
     if (progress_)
@@ -167,8 +179,9 @@ class VirtualModel {
   CalibrationProgress progress_;
   std::map<std::vector<double>, std::vector<Statistic>> cache_;
   std::vector<int>
-      segments_;        // 0-based segments the targets read; empty: no fatigue design
-  bool trace_ = false;  // a target reads the decision trace (eta, lambda_c)
+      segments_;            // 0-based segments the targets read; empty: no fatigue design
+  bool trace_ = false;      // a target reads the decision trace (eta, lambda_c)
+  bool operators_ = false;  // a target reads the design of the lab's operators
   int evaluations_ = 0;
   int refused_ = 0;  // points outside the valid region asked for
 };

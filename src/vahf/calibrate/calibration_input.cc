@@ -43,7 +43,7 @@ void CheckBound(const ParamSpec& spec, const JsonNode& node, double value) {
 // A stage's parameters, targets and solver, from `node` (a stage of
 // "stages", or the file's root for a file of one stage).
 CalibrationStage ReadStage(const JsonNode& node, const CalibrationDesign& d,
-                           const Scene& scene, const std::string& path) {
+                           const Scene& scene) {
   CalibrationStage stage;
   if (auto solver = node.Optional("solver"))
     stage.solver = solver->Choice({"levenberg_marquardt", "golden_section"});
@@ -83,16 +83,9 @@ CalibrationStage ReadStage(const JsonNode& node, const CalibrationDesign& d,
     CheckBound(spec, upper, p.upper);
     stage.parameters.push_back(p);
   }
+  // Targets of segments and targets without one may share a stage: both
+  // designs then run at each parameter vector (calibration.h).
   stage.targets = ReadTargets(node.Required("targets"), scene, false);
-  // One virtual design per stage: the lab's operators, or the hour of work
-  // in segments.
-  for (const FitTarget& t : stage.targets)
-    if ((t.segment > 0) != (stage.targets[0].segment > 0))
-      throw InputError(
-          path, t.pointer, t.quantity,
-          "targets of segments and targets without a segment cannot be fitted "
-          "in one stage (one runs the fatigue design, the other the lab's "
-          "operators): put them in stages of their own");
   return stage;
 }
 
@@ -124,7 +117,7 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
     for (std::size_t k = 0; k < n; ++k) {
       const JsonNode node = stages->At(k);
       node.ExpectObject({"name", "solver", "parameters", "targets"});
-      CalibrationStage stage = ReadStage(node, d, e->scene, path);
+      CalibrationStage stage = ReadStage(node, d, e->scene);
       stage.pointer = node.path();
       stage.name = node.Required("name").String();
       for (const CalibrationStage& earlier : d.stages)
@@ -134,7 +127,7 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
       d.stages.push_back(std::move(stage));
     }
   } else {
-    d.stages.push_back(ReadStage(root, d, e->scene, path));
+    d.stages.push_back(ReadStage(root, d, e->scene));
   }
   for (const CalibrationStage& stage : d.stages)
     CheckSegments(stage.targets, d.fatigue, path);

@@ -83,12 +83,12 @@ Condition OperatorCondition(const scene::Scene& scene, const scene::OperatorEntr
 FatigueRun RunFatigue(const std::shared_ptr<const scene::Scene>& scene,
                       const scene::FatigueDesign& f, int trials, std::uint64_t seed,
                       const RunnerOptions& options, const RunnerOptions& pilot_options,
-                      const std::vector<int>& only) {
+                      const std::vector<int>& only, std::uint64_t first_cycle) {
   FatigueRun out;
   const int pilot = f.pilot_cycles > 0 ? f.pilot_cycles : trials;
   // The pilot's streams are its own: cycle indices after every segment's.
   out.pilot = RunDesign({{"pilot", "", scene}}, pilot, seed, false, pilot_options,
-                        static_cast<std::uint64_t>(trials));
+                        first_cycle + static_cast<std::uint64_t>(trials));
   double work = 0, time = 0;
   for (const CycleRecord& r : out.pilot.records) {
     work += r.result.work - r.initial_work;
@@ -109,7 +109,7 @@ FatigueRun RunFatigue(const std::shared_ptr<const scene::Scene>& scene,
     conditions.push_back(c);
     out.segments.push_back(s);
   }
-  out.run = RunDesign(conditions, trials, seed, false, options);
+  out.run = RunDesign(conditions, trials, seed, false, options, first_cycle);
   return out;
 }
 

@@ -71,6 +71,9 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
 // the work w * 60 * minute that back-to-back cycles would have accumulated by
 // their minute. `only` lists the 0-based segments to run (empty: all), in
 // increasing order; a segment's cycles are the same whichever others run.
+// Its segments draw from the stream indices first_cycle, first_cycle + 1,
+// ..., the pilot from first_cycle + trials on (a design run beside another
+// shifts them past the other's).
 struct FatigueRun {
   DesignRun pilot;
   double work_rate = 0;
@@ -80,7 +83,7 @@ struct FatigueRun {
 FatigueRun RunFatigue(const std::shared_ptr<const scene::Scene>& scene,
                       const scene::FatigueDesign& design, int trials, std::uint64_t seed,
                       const RunnerOptions& options, const RunnerOptions& pilot_options,
-                      const std::vector<int>& only = {});
+                      const std::vector<int>& only = {}, std::uint64_t first_cycle = 0);
 
 struct RunSettings {
   std::uint64_t seed = 1;
