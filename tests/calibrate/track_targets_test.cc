@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "support/standing_operator.h"
 #include "vahf/calibrate/calibration.h"
 #include "vahf/calibrate/targets.h"
 #include "vahf/core/error.h"
@@ -52,21 +53,6 @@ double ReachShort(double d) {
   return 1.0 - 0.5 * (d - d1) / (d2 - d1);
 }
 
-// The operator stands still facing +x, the head over the left shoulder
-// (tests/data/track_factors_test.cc): brow (-0.4, 0, 0.4), shoulders
-// (-0.5, 0, 0.2) and (-0.5, -0.4, 0.2), body centre (-0.5, -0.2, -0.2).
-data::TrackSample Sample(double time, const Vector3d& part, double V) {
-  data::TrackSample s;
-  s.time = time;
-  s.part = part;
-  s.brow = Vector3d(-0.4, 0, 0.4);
-  s.left_shoulder = Vector3d(-0.5, 0, 0.2);
-  s.right_shoulder = Vector3d(-0.5, -0.4, 0.2);
-  s.body = Vector3d(-0.5, -0.2, -0.2);
-  s.visibility = V;
-  return s;
-}
-
 // The part is lowered 0.4 m by t = 0.5 s, held, then drawn 0.4 m in by
 // t = 1.5 s; V at the samples 1-3 as given. By hand (track_factors_test):
 //   t = 0.5  f = 1, g = 1, shoulder sqrt(0.45) m: eta = 1 - V, lambda_c =
@@ -81,10 +67,12 @@ data::SensorTrack HandTrack(const std::string& op, int repetition, double v1, do
   t.operator_id = op;
   t.condition = "good";
   t.repetition = repetition;
-  t.samples = {Sample(0.0, {0, 0, 0.4}, 1.0), Sample(0.5, {0, 0, 0}, v1),
-               Sample(1.0, {0, 0, 0}, v2), Sample(1.5, {-0.4, 0, 0}, v3)};
-  for (std::size_t i = 0; i < t.samples.size(); ++i)
-    t.samples[i].line = static_cast<int>(i) + 2;
+  // The operator stands still (support/standing_operator.h, the geometry of
+  // tests/data/track_factors_test.cc).
+  t.samples = {testing::StandingSample(2, 0.0, {0, 0, 0.4}, 1.0),
+               testing::StandingSample(3, 0.5, {0, 0, 0}, v1),
+               testing::StandingSample(4, 1.0, {0, 0, 0}, v2),
+               testing::StandingSample(5, 1.5, {-0.4, 0, 0}, v3)};
   return t;
 }
 

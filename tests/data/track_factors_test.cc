@@ -13,6 +13,7 @@
 #include <limits>
 #include <string>
 
+#include "support/standing_operator.h"
 #include "vahf/core/error.h"
 #include "vahf/human/factor_curves.h"
 #include "vahf/human/operator_model.h"
@@ -32,23 +33,10 @@ human::FactorCurves Curves() {
 }
 
 // The operator stands still, facing +x, the head leaning over the left
-// shoulder towards the part (y = 0):
-//   brow E = (-0.4, 0, 0.4)
-//   left shoulder L = (-0.5, 0, 0.2), right shoulder R = (-0.5, -0.4, 0.2)
-//   body centre C = (-0.5, -0.2, -0.2), 0.4 m below the shoulders' midpoint.
-// Body plane x = -0.5; its down axis is -z; forward, (R - L) x (C - mid) =
-// (0, -0.4, 0) x (0, 0, -0.4) = (0.16, 0, 0), is +x.
+// shoulder towards the part (y = 0): support/standing_operator.h, whose
+// geometry the factors below are worked out from.
 TrackSample Sample(int line, double time, const Vector3d& part, double V) {
-  TrackSample s;
-  s.time = time;
-  s.part = part;
-  s.brow = Vector3d(-0.4, 0, 0.4);
-  s.left_shoulder = Vector3d(-0.5, 0, 0.2);
-  s.right_shoulder = Vector3d(-0.5, -0.4, 0.2);
-  s.body = Vector3d(-0.5, -0.2, -0.2);
-  s.visibility = V;
-  s.line = line;
-  return s;
+  return testing::StandingSample(line, time, part, V);
 }
 
 // The part is lowered 0.4 m, pauses, then drawn 0.4 m towards the operator.

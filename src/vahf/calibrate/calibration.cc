@@ -26,6 +26,16 @@ namespace {
 constexpr double kZ95 = 1.959963984540054;
 const double kProfileRise = ProfileRise();
 
+// Sets each of `params` to its value in x in `scene`.
+void SetParameters(const std::vector<ParameterSpec>& params, const double* x,
+                   scene::Scene* scene) {
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    const scene::ParamSpec* spec = scene::FindParam(params[i].name);
+    VAHF_CHECK(spec && spec->real, "fitted parameters are real-valued table entries");
+    spec->real(scene->params) = x[i];
+  }
+}
+
 std::string VectorText(const std::vector<ParameterSpec>& params, const double* x) {
   std::string out;
   for (std::size_t i = 0; i < params.size(); ++i)
@@ -40,15 +50,14 @@ class VirtualModel {
  public:
   VirtualModel(const scene::Scene& scene, const data::LabDataset& lab,
                const CalibrationSpec& spec, const StageSpec& stage,
-               const std::vector<Target>& targets, const std::string& experiment_file,
-               std::uint64_t seed, int trials, const experiment::RunnerOptions& options,
+               const std::vector<Target>& targets, std::uint64_t seed, int trials,
+               const experiment::RunnerOptions& options,
                const CalibrationProgress& progress)
       : scene_(scene),
         lab_(lab),
         spec_(spec),
         stage_(stage),
         targets_(targets),
-        file_(experiment_file),
         seed_(seed),
         trials_(trials),
         options_(options),
@@ -105,11 +114,7 @@ class VirtualModel {
     std::vector<Statistic> stats(targets_.size());
     std::uint64_t cycles = 0;  // the stream indices the lab's design used
     if (operators_) {
-      const std::vector<experiment::Condition> conditions =
-          LabConditions(s, lab_, trials_);
-      cycles = conditions.size() * static_cast<std::uint64_t>(trials_);
-      const experiment::DesignRun run =
-          experiment::RunDesign(conditions, trials_, seed_, trace_, options_);
+      const experiment::DesignRun run = RunOperators(s, 0, &cycles);
       for (std::size_t i = 0; i < targets_.size(); ++i)
         if (targets_[i].spec.segment == 0) stats[i] = VirtualStatistic(targets_[i], run);
     }
@@ -146,13 +151,7 @@ class VirtualModel {
   std::vector<Statistic> Replicate(const double* x, int r) {
     VAHF_CHECK(lab_design() && r >= 1 && Violation(x).empty(),
                "a replicate of a valid point of a lab design");
-    std::vector<experiment::Condition> conditions =
-        LabConditions(Applied(x), lab_, trials_);
-    const std::uint64_t shift = static_cast<std::uint64_t>(r) * conditions.size() *
-                                static_cast<std::uint64_t>(trials_);
-    for (experiment::Condition& c : conditions) c.cycle_offset += shift;
-    const experiment::DesignRun run =
-        experiment::RunDesign(conditions, trials_, seed_, trace_, options_);
+    const experiment::DesignRun run = RunOperators(Applied(x), r, nullptr);
     std::vector<Statistic> stats;
     for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, run));
     ++evaluations_;
@@ -162,9 +161,21 @@ class VirtualModel {
  private:
   scene::Scene Applied(const double* x) const {
     scene::Scene out = scene_;
-    for (std::size_t i = 0; i < stage_.parameters.size(); ++i)
-      scene::FindParam(stage_.parameters[i].name)->real(out.params) = x[i];
+    SetParameters(stage_.parameters, x, &out);
     return out;
+  }
+
+  // The design of the lab's operators on scene `s`, replicate r (0: the
+  // fit's own) drawing from the cycles r x (operators x trials) on; *cycles,
+  // if given, is set to the number of stream indices one replicate takes.
+  experiment::DesignRun RunOperators(const scene::Scene& s, int r,
+                                     std::uint64_t* cycles) {
+    std::vector<experiment::Condition> conditions = LabConditions(s, lab_, trials_);
+    const std::uint64_t span = conditions.size() * static_cast<std::uint64_t>(trials_);
+    for (experiment::Condition& c : conditions)
+      c.cycle_offset += static_cast<std::uint64_t>(r) * span;
+    if (cycles) *cycles = span;
+    return experiment::RunDesign(conditions, trials_, seed_, trace_, options_);
   }
 
   const scene::Scene& scene_;
@@ -172,7 +183,6 @@ class VirtualModel {
   const CalibrationSpec& spec_;
   const StageSpec& stage_;
   const std::vector<Target>& targets_;
-  std::string file_;
   std::uint64_t seed_;
   int trials_;
   experiment::RunnerOptions options_;
@@ -237,11 +247,7 @@ scene::Scene WithParameters(const scene::Scene& scene,
                             const std::string& experiment_file) {
   VAHF_CHECK(params.size() == values.size(), "one value per fitted parameter");
   scene::Scene out = scene;
-  for (std::size_t i = 0; i < params.size(); ++i) {
-    const scene::ParamSpec* spec = scene::FindParam(params[i].name);
-    VAHF_CHECK(spec && spec->real, "fitted parameters are real-valued table entries");
-    spec->real(out.params) = values[i];
-  }
+  SetParameters(params, values.data(), &out);
   const std::string violation = scene::ParameterViolation(out);
   if (!violation.empty()) {
     std::string text;
@@ -638,8 +644,7 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
   VAHF_CHECK(p >= 1 && m >= 1, "a calibration fits at least one parameter to one target");
   VAHF_CHECK(stage.solver != "golden_section" || p == 1,
              "the golden_section solver fits one parameter");
-  VirtualModel model(scene, lab, spec, stage, targets, experiment_file, seed, trials,
-                     options, progress);
+  VirtualModel model(scene, lab, spec, stage, targets, seed, trials, options, progress);
   const std::string prefix =
       stage.name.empty() ? "calibrate" : "calibrate (" + stage.name + ")";
 

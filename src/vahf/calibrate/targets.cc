@@ -32,6 +32,17 @@ std::vector<const data::LabTrial*> FirstTrialOfEachOperator(const data::LabDatas
   return out;
 }
 
+// A lab operator as the virtual design has them: the sex, stature and arm
+// length of their trial.
+scene::OperatorEntry OperatorOf(const data::LabTrial& t) {
+  scene::OperatorEntry op;
+  op.name = t.operator_id;
+  op.sex = t.sex;
+  op.height = t.height;
+  op.arm_length = t.arm_length;
+  return op;
+}
+
 // Mean of times with variance s^2 / n; needs n >= 2.
 Statistic MeanStatistic(const std::vector<double>& times) {
   const stats::Summary s = stats::Summarize(times);
@@ -352,11 +363,7 @@ TargetSamples TrackSamples(const scene::Scene& scene, const data::LabDataset& la
     if (trial.part != spec.part || track.samples.empty()) continue;
     // The operator as the virtual design has them (LabConditions), and the
     // curves every trial of theirs evaluates.
-    scene::OperatorEntry op;
-    op.name = trial.operator_id;
-    op.sex = trial.sex;
-    op.height = trial.height;
-    op.arm_length = trial.arm_length;
+    const scene::OperatorEntry op = OperatorOf(trial);
     const human::FactorCurves curves =
         sim::OperatorFactorCurves(*experiment::OperatorCondition(scene, op).scene);
     std::vector<double> times, values;
@@ -412,11 +419,7 @@ std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
                                                  int trials) {
   std::vector<experiment::Condition> out;
   for (const data::LabTrial* t : FirstTrialOfEachOperator(lab)) {
-    scene::OperatorEntry op;
-    op.name = t->operator_id;
-    op.sex = t->sex;
-    op.height = t->height;
-    op.arm_length = t->arm_length;
+    const scene::OperatorEntry op = OperatorOf(*t);
     // The reach curve needs D1 < D2 < D3 for each operator (as a scene's or an
     // experiment's operators do): a lab operator the scene's reach parameters
     // cannot take is named with the row that introduced them.
