@@ -132,7 +132,7 @@ void ExpectMean(const Statistic& s, const std::vector<double>& x) {
 TEST(TrackTargets, EtaAtASampleByHand) {
   const scene::Scene scene = Block();
   const data::LabDataset lab = Lab();
-  const TargetSamples s = TrackSamples(scene, lab, Spec("eta", 0.5), "");
+  const TargetSamples s = TrackSamples(scene, lab, Spec("eta", 0.5), {});
   EXPECT_EQ(s.nan_values, 0);
   EXPECT_EQ(s.no_value, 0);
   ASSERT_EQ(s.times.size(), 3u);
@@ -161,9 +161,9 @@ TEST(TrackTargets, LambdaUsesEachOperatorsCurves) {
   const double r = ReachShort(std::sqrt(0.45));
   EXPECT_NEAR(r, 0.60916, 1e-5);
   const TargetSpec spec = Spec("lambda_c", 0.5, true);
-  ExpectMean(TrackSamples(scene, lab, spec, "short").Of("lambda_c"),
+  ExpectMean(TrackSamples(scene, lab, spec, {"short"}).Of("lambda_c"),
              {1 - (r + 1) / 2 * 0.5, 1 - (r + 1) / 2 * 1.0});
-  const TargetSamples only = TrackSamples(scene, lab, spec, "long");
+  const TargetSamples only = TrackSamples(scene, lab, spec, {"long"});
   ASSERT_EQ(only.times.size(), 1u);
   EXPECT_NEAR(only.times[0], 1 - 1.0 * 0.4, 1e-12);
   // By operator, "long" has one value: no variance, an InputError.
@@ -186,16 +186,16 @@ TEST(TrackTargets, LambdaUsesEachOperatorsCurves) {
 TEST(TrackTargets, BetweenSamplesTheLastAtOrBefore) {
   const scene::Scene scene = Block();
   const data::LabDataset lab = Lab();
-  const TargetSamples at = TrackSamples(scene, lab, Spec("eta", 0.5), "");
-  const TargetSamples between = TrackSamples(scene, lab, Spec("eta", 0.75), "");
+  const TargetSamples at = TrackSamples(scene, lab, Spec("eta", 0.5), {});
+  const TargetSamples between = TrackSamples(scene, lab, Spec("eta", 0.75), {});
   EXPECT_EQ(between.times, at.times);
-  const TargetSamples later = TrackSamples(scene, lab, Spec("eta", 1.2), "");
+  const TargetSamples later = TrackSamples(scene, lab, Spec("eta", 1.2), {});
   EXPECT_EQ(later.nan_values, 1);
   ASSERT_EQ(later.times.size(), 2u);
   EXPECT_NEAR(later.times[0], 1 - 0.9, 1e-12);
   EXPECT_NEAR(later.times[1], 1 - 0.4, 1e-12);
   // Just before the next sample, still the last one's.
-  EXPECT_EQ(TrackSamples(scene, lab, Spec("eta", 1.4999), "").times, later.times);
+  EXPECT_EQ(TrackSamples(scene, lab, Spec("eta", 1.4999), {}).times, later.times);
 }
 
 // A track that ends before the instant contributes nothing; so does one not
@@ -204,15 +204,15 @@ TEST(TrackTargets, ATrackOverBeforeTheInstantGivesNothing) {
   const scene::Scene scene = Block();
   data::LabDataset lab = Lab();
   lab.tracks[2].samples.pop_back();  // "long" ends at 1.0 s
-  const TargetSamples s = TrackSamples(scene, lab, Spec("eta", 1.5), "");
+  const TargetSamples s = TrackSamples(scene, lab, Spec("eta", 1.5), {});
   EXPECT_EQ(s.no_value, 1);
   ASSERT_EQ(s.times.size(), 2u);
   ExpectMean(LabTargets(scene, lab, {Spec("eta", 1.5)}, "e.json")[0].lab,
              {1 - 0.8 * 2 / 3.0, 1 - 0.6 * 2 / 3.0});
   // At its last sample it still counts.
-  EXPECT_EQ(TrackSamples(scene, lab, Spec("eta", 1.0), "").Read(), 3);
-  EXPECT_EQ(TrackSamples(scene, lab, Spec("eta", 1.0), "").no_value, 0);
-  const TargetSamples early = TrackSamples(scene, lab, Spec("eta", 0.2), "");
+  EXPECT_EQ(TrackSamples(scene, lab, Spec("eta", 1.0), {}).Read(), 3);
+  EXPECT_EQ(TrackSamples(scene, lab, Spec("eta", 1.0), {}).no_value, 0);
+  const TargetSamples early = TrackSamples(scene, lab, Spec("eta", 0.2), {});
   EXPECT_EQ(early.no_value, 3);
   EXPECT_TRUE(early.times.empty());
   // Every track over: fewer than two values, an InputError for a calibration.
@@ -237,15 +237,15 @@ TEST(TrackTargets, TracksOfTheTargetsPartAndCondition) {
   lab.trials[1].part = "all";  // "short" 2 is of the whole assembly
   lab.tracks[2].condition = "poor";
   lab.trials[2].condition = "poor";
-  const TargetSamples s = TrackSamples(scene, lab, Spec("eta", 0.5), "");
+  const TargetSamples s = TrackSamples(scene, lab, Spec("eta", 0.5), {});
   ASSERT_EQ(s.times.size(), 1u);
   EXPECT_NEAR(s.times[0], 0.5, 1e-12);
   TargetSpec all = Spec("eta", 0.5);
   all.part = kAllParts;
-  EXPECT_EQ(TrackSamples(scene, lab, all, "").times, std::vector<double>{0.0});
+  EXPECT_EQ(TrackSamples(scene, lab, all, {}).times, std::vector<double>{0.0});
   TargetSpec any = Spec("eta", 0.5);
   any.condition.clear();  // every condition's
-  EXPECT_EQ(TrackSamples(scene, lab, any, "").times.size(), 2u);
+  EXPECT_EQ(TrackSamples(scene, lab, any, {}).times.size(), 2u);
 }
 
 TEST(TrackTargets, ATrackWithoutItsTrialIsAnInputError) {
@@ -253,7 +253,7 @@ TEST(TrackTargets, ATrackWithoutItsTrialIsAnInputError) {
   data::LabDataset lab = Lab();
   lab.trials.pop_back();  // "long" 1
   try {
-    TrackSamples(scene, lab, Spec("eta", 0.5), "");
+    TrackSamples(scene, lab, Spec("eta", 0.5), {});
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "tracks/long_1.csv");
@@ -263,7 +263,7 @@ TEST(TrackTargets, ATrackWithoutItsTrialIsAnInputError) {
   lab = Lab();
   lab.trials.push_back(Trial("long", 1, "all", 9));
   try {
-    TrackSamples(scene, lab, Spec("eta", 0.5), "");
+    TrackSamples(scene, lab, Spec("eta", 0.5), {});
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "tracks/long_1.csv");
@@ -360,7 +360,7 @@ Target Virtual(const std::string& quantity, double instant, const std::string& p
                const std::string& op = "") {
   TargetSpec spec = Spec(quantity, instant);
   spec.part = part;
-  return MakeTarget(spec, op);
+  return MakeTarget(spec, {op});
 }
 
 TEST(TrackTargets, VirtualSideTheLastDecisionAtOrBefore) {

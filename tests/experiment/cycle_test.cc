@@ -3,9 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
+#include "vahf/human/learning.h"
 #include "vahf/scene/scene_loader.h"
 
 namespace vahf::experiment {
@@ -45,6 +47,35 @@ TEST(Cycle, AFailedPartEndsTheCycle) {
   ASSERT_EQ(c.parts.size(), 1u);
   EXPECT_EQ(c.parts[0].trial.status, sim::Status::kTimeout);
   EXPECT_EQ(c.time, c.parts[0].trial.end_time);
+}
+
+// Learning (human/learning.h): the first repetition is the unpractised
+// operator, bit for bit; without a model the repetition changes nothing; with
+// one, practice shortens the steel block's carry, by about L(n) (a free
+// reach under the operator's impedance is shortened by exactly L(n); the
+// decisions' fixed interval and the final approach make it approximate).
+TEST(Cycle, ARepetitionOfAPractisedOperatorIsShorter) {
+  scene::Scene s = scene::LoadScene(Source("experiments/scenes/steel_block_move.json"));
+  const double none1 = RunCycle(s, 1, 0, 0.0, false, 1).time;
+  EXPECT_EQ(RunCycle(s, 1, 0, 0.0, false, 8).time, none1);
+  s.params.learning.model = "power_law";
+  s.params.learning.exponent = 0.3;
+  EXPECT_EQ(RunCycle(s, 1, 0, 0.0, false, 1).time, none1);
+  double mean1 = 0, mean8 = 0;
+  for (std::uint64_t cycle = 0; cycle < 4; ++cycle) {
+    const CycleResult first = RunCycle(s, 1, cycle, 0.0, false, 1);
+    const CycleResult eighth = RunCycle(s, 1, cycle, 0.0, false, 8);
+    ASSERT_TRUE(first.completed);
+    ASSERT_TRUE(eighth.completed);
+    mean1 += first.time / 4;
+    mean8 += eighth.time / 4;
+  }
+  const double l8 = human::PracticeTimeFactor(s.params.learning, 8);  // 0.536
+  std::printf(
+      "mean time, repetition 1: %.4f s, repetition 8: %.4f s, ratio %.3f, L(8) %.3f\n",
+      mean1, mean8, mean8 / mean1, l8);
+  // Measured 0.570; a gain of L^-1 instead of L^-2 would give about 0.73.
+  EXPECT_NEAR(mean8 / mean1, l8, 0.1);
 }
 
 TEST(Cycle, KeysNeverCollideAcrossCycles) {

@@ -36,9 +36,13 @@ SyntheticLabSpec LoadSyntheticLabSpec(const std::string& path) {
     for (const auto& item : params->json().items()) {
       const scene::JsonNode value = params->Required(item.key());
       const scene::ParamSpec& p = *scene::FindParam(item.key());
-      if (!p.real) value.Fail("a synthetic lab states real-valued parameters");
+      if (!p.real && p.rule != scene::ParamRule::kChoice)
+        value.Fail("a synthetic lab states real-valued parameters and choices");
       scene::ReadParamValue(p, value, &spec.scene.params);
-      spec.truth.emplace_back(item.key(), p.real(spec.scene.params));
+      if (p.real)
+        spec.truth.emplace_back(item.key(), p.real(spec.scene.params));
+      else
+        spec.choices.emplace_back(item.key(), value.String());
     }
     const std::string violation = scene::ParameterViolation(spec.scene);
     if (!violation.empty())
@@ -68,6 +72,7 @@ data::LabDataset GenerateSyntheticLab(const SyntheticLabSpec& spec,
     conditions.push_back(experiment::OperatorCondition(spec.scene, op));
     conditions.back().cycle_offset = static_cast<std::uint64_t>(conditions.size() - 1) *
                                      static_cast<std::uint64_t>(spec.repetitions);
+    conditions.back().repetitions = spec.repetitions;  // cycle j: repetition j + 1
   }
   VAHF_CHECK(!conditions.empty(), "a synthetic lab has operators");
   const experiment::DesignRun run =
@@ -77,6 +82,8 @@ data::LabDataset GenerateSyntheticLab(const SyntheticLabSpec& spec,
   lab.name = spec.name;
   lab.description = spec.description;
   std::string truth;
+  for (const auto& [name, value] : spec.choices)
+    truth += fmt::format("{}{} = {}", truth.empty() ? "" : ", ", name, value);
   for (const auto& [name, value] : spec.truth)
     truth += fmt::format("{}{} = {}", truth.empty() ? "" : ", ", name, value);
   lab.provenance = {
@@ -99,7 +106,7 @@ data::LabDataset GenerateSyntheticLab(const SyntheticLabSpec& spec,
       t.arm_length = s.op.arm_length;
       t.condition = spec.condition;
       t.part = p.trial.part;
-      t.repetition = static_cast<int>(r.cycle - c.cycle_offset) + 1;
+      t.repetition = r.repetition;
       t.success = p.trial.status == sim::Status::kCompleted;
       t.time = std::numeric_limits<double>::quiet_NaN();
       // Each row has its own noise stream: a row's error does not depend on

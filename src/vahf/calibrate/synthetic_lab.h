@@ -31,6 +31,8 @@ struct SyntheticLabSpec {
   scene::Scene scene;  // with `truth` applied
   // The stated parameter values ("group/key", value), in file order.
   std::vector<std::pair<std::string, double>> truth;
+  // The stated choices ("learning/model", "power_law"), in file order.
+  std::vector<std::pair<std::string, std::string>> choices;
   std::vector<scene::OperatorEntry> operators;  // at least one
   int repetitions = 10;
   std::uint64_t seed = 1;

@@ -32,6 +32,11 @@ std::vector<const data::LabTrial*> FirstTrialOfEachOperator(const data::LabDatas
   return out;
 }
 
+// Whether a trial or track of `repetition` is in the scope.
+bool OfRepetition(const TargetScope& scope, int repetition) {
+  return scope.repetition == 0 || scope.repetition == repetition;
+}
+
 // A lab operator as the virtual design has them: the sex, stature and arm
 // length of their trial.
 scene::OperatorEntry OperatorOf(const data::LabTrial& t) {
@@ -258,14 +263,15 @@ std::string LabWhere(const data::LabDataset& lab, const std::string& op) {
 // One target's lab statistic (LabTargets): of its trials or tracks, else
 // what the lab reports.
 Target LabTarget(const scene::Scene& scene, const data::LabDataset& lab,
-                 const TargetSpec& spec, const std::string& op,
+                 const TargetSpec& spec, const TargetScope& scope,
                  const std::string& experiment_file, Unweighted unweighted) {
-  const TargetSamples samples = LabSamples(scene, lab, spec, op);
-  Target target = MakeTarget(spec, op);
+  const std::string& op = scope.operator_id;
+  const TargetSamples samples = LabSamples(scene, lab, spec, scope);
+  Target target = MakeTarget(spec, scope);
   const bool instant = scene::AtInstant(spec.quantity);
   const bool none = instant ? samples.Read() == 0 : samples.attempts == 0;
   // Without trials (tracks), what the lab reports: a segment's counts or a summary.
-  if (none && !spec.by_operator)
+  if (none && !spec.by_operator && !spec.by_repetition)
     if (std::optional<Statistic> reported =
             ReportedStatistic(lab, spec, experiment_file, unweighted)) {
       target.lab = *reported;
@@ -322,14 +328,26 @@ Statistic TargetSamples::Of(const std::string& quantity) const {
   return out;
 }
 
+std::vector<TargetScope> TargetScopes(const TargetSpec& spec,
+                                      const data::LabDataset& lab) {
+  std::vector<TargetScope> out;
+  if (spec.by_operator)
+    for (const std::string& op : LabOperators(lab)) out.push_back({op, 0});
+  else if (spec.by_repetition)
+    for (int r : LabRepetitions(lab)) out.push_back({"", r});
+  else
+    out.push_back({});
+  return out;
+}
+
 TargetSamples LabSamples(const scene::Scene& scene, const data::LabDataset& lab,
-                         const TargetSpec& spec, const std::string& operator_id) {
-  if (scene::AtInstant(spec.quantity)) return TrackSamples(scene, lab, spec, operator_id);
+                         const TargetSpec& spec, const TargetScope& scope) {
+  if (scene::AtInstant(spec.quantity)) return TrackSamples(scene, lab, spec, scope);
   TargetSamples samples;
   if (spec.segment > 0) return samples;  // trials carry no segment
   for (const data::LabTrial& t : lab.trials)
-    if (t.part == spec.part && Matches(operator_id, t.operator_id) &&
-        Matches(spec.condition, t.condition))
+    if (t.part == spec.part && Matches(scope.operator_id, t.operator_id) &&
+        Matches(spec.condition, t.condition) && OfRepetition(scope, t.repetition))
       samples.Add(t.success, t.time, t.operator_id);
   return samples;
 }
@@ -353,11 +371,12 @@ void AddAtInstant(const std::vector<double>& times, const std::vector<double>& v
 }
 
 TargetSamples TrackSamples(const scene::Scene& scene, const data::LabDataset& lab,
-                           const TargetSpec& spec, const std::string& operator_id) {
+                           const TargetSpec& spec, const TargetScope& scope) {
   TargetSamples samples;
   for (const data::SensorTrack& track : lab.tracks) {
     if (!Matches(spec.condition, track.condition) ||
-        !Matches(operator_id, track.operator_id))
+        !Matches(scope.operator_id, track.operator_id) ||
+        !OfRepetition(scope, track.repetition))
       continue;
     const data::LabTrial& trial = TrialOfTrack(lab, track);
     if (trial.part != spec.part || track.samples.empty()) continue;
@@ -377,6 +396,14 @@ TargetSamples TrackSamples(const scene::Scene& scene, const data::LabDataset& la
   return samples;
 }
 
+std::vector<int> LabRepetitions(const data::LabDataset& lab) {
+  std::vector<int> out;
+  for (const data::LabTrial& t : lab.trials) out.push_back(t.repetition);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 std::vector<std::string> LabOperators(const data::LabDataset& lab) {
   std::vector<std::string> out;
   for (const data::LabTrial* t : FirstTrialOfEachOperator(lab))
@@ -384,17 +411,20 @@ std::vector<std::string> LabOperators(const data::LabDataset& lab) {
   return out;
 }
 
-Target MakeTarget(const TargetSpec& spec, const std::string& operator_id) {
+Target MakeTarget(const TargetSpec& spec, const TargetScope& scope) {
+  const std::string& operator_id = scope.operator_id;
   Target target;
   target.spec = spec;
   target.operator_id = operator_id;
+  target.repetition = scope.repetition;
   target.unit = UnitOf(spec.quantity);
   target.label =
       spec.quantity + " of " + spec.part +
       (spec.segment > 0 ? fmt::format(", segment {}", spec.segment) : "") +
       (scene::AtInstant(spec.quantity) ? fmt::format(" at {:g} s", spec.instant) : "") +
       (spec.condition.empty() ? "" : ", " + spec.condition) +
-      (operator_id.empty() ? "" : ", operator " + operator_id);
+      (operator_id.empty() ? "" : ", operator " + operator_id) +
+      (scope.repetition > 0 ? fmt::format(", repetition {}", scope.repetition) : "");
   return target;
 }
 
@@ -406,10 +436,8 @@ std::vector<Target> LabTargets(const scene::Scene& scene, const data::LabDataset
                                Unweighted unweighted) {
   std::vector<Target> out;
   for (const TargetSpec& spec : specs) {
-    const std::vector<std::string> operators =
-        spec.by_operator ? LabOperators(lab) : std::vector<std::string>{""};
-    for (const std::string& op : operators)
-      out.push_back(LabTarget(scene, lab, spec, op, experiment_file, unweighted));
+    for (const TargetScope& scope : TargetScopes(spec, lab))
+      out.push_back(LabTarget(scene, lab, spec, scope, experiment_file, unweighted));
   }
   return out;
 }
@@ -418,6 +446,15 @@ std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
                                                  const data::LabDataset& lab,
                                                  int trials) {
   std::vector<experiment::Condition> out;
+  const std::vector<int> repetitions = LabRepetitions(lab);
+  const int r = repetitions.empty() ? 0 : repetitions.back();
+  if (scene.params.learning.model != "none" && r > 0 && trials % r != 0)
+    throw InputError(lab.folder + "/" + lab.trials_file, "repetition", std::to_string(r),
+                     fmt::format("with learning model '{}' the virtual operators repeat "
+                                 "the task as the lab's did, each repetition 1-{} "
+                                 "equally often: the cycles per operator ({}) must be "
+                                 "a multiple of {}",
+                                 scene.params.learning.model, r, trials, r));
   for (const data::LabTrial* t : FirstTrialOfEachOperator(lab)) {
     const scene::OperatorEntry op = OperatorOf(*t);
     // The reach curve needs D1 < D2 < D3 for each operator (as a scene's or an
@@ -433,6 +470,7 @@ std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
     out.push_back(experiment::OperatorCondition(scene, op));
     out.back().cycle_offset =
         static_cast<std::uint64_t>(out.size() - 1) * static_cast<std::uint64_t>(trials);
+    out.back().repetitions = r;
   }
   if (out.empty())
     out.push_back(
@@ -463,6 +501,7 @@ TargetSamples VirtualSamples(const Target& target, const experiment::DesignRun& 
     if (!target.operator_id.empty() &&
         run.conditions[r.condition].name != target.operator_id)
       continue;
+    if (target.repetition > 0 && r.repetition != target.repetition) continue;
     if (target.spec.segment > 0 && (r.condition >= segments.size() ||
                                     segments[r.condition] != target.spec.segment - 1))
       continue;

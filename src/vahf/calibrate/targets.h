@@ -80,10 +80,24 @@ struct TargetSamples {
   Statistic Of(const std::string& quantity) const;
 };
 
-// The lab's samples of a target's part, of one operator ("": all): of its
-// trials, or for eta and lambda_c of its tracks (TrackSamples).
+// What one target of a spec covers: one operator's trials ("": all) and one
+// repetition's (0: all).
+struct TargetScope {
+  std::string operator_id;
+  int repetition = 0;
+};
+
+// The targets a spec makes on a lab: one per operator in order of first
+// appearance (by operator), one per repetition the lab's trials record, in
+// increasing order (by repetition), else one over all.
+std::vector<TargetScope> TargetScopes(const TargetSpec& spec,
+                                      const data::LabDataset& lab);
+
+// The lab's samples of a target's part, of one operator ("": all) and one
+// repetition (0: all): of its trials, or for eta and lambda_c of its tracks
+// (TrackSamples).
 TargetSamples LabSamples(const scene::Scene& scene, const data::LabDataset& lab,
-                         const TargetSpec& spec, const std::string& operator_id);
+                         const TargetSpec& spec, const TargetScope& scope);
 
 // The rule both sides of an eta or lambda_c target share, for one track or
 // trial whose rows (sensor samples, decision instants) have strictly
@@ -110,13 +124,14 @@ void AddAtInstant(const std::vector<double>& times, const std::vector<double>& v
 // of several parts, for it: a track's part and its operator's stature and arm
 // length (r's breakpoints, Fig. 4) come from its trial.
 TargetSamples TrackSamples(const scene::Scene& scene, const data::LabDataset& lab,
-                           const TargetSpec& spec, const std::string& operator_id);
+                           const TargetSpec& spec, const TargetScope& scope);
 
 // One residual of a calibration: the lab's statistic for a target (for one
 // operator, or "" for all).
 struct Target {
   TargetSpec spec;
   std::string operator_id;  // "" for all operators
+  int repetition = 0;       // > 0: of this repetition only (by repetition)
   std::string label;        // "assembly_time of peg, operator male 1"
   std::string unit;         // "s" or "1"
   Statistic lab;
@@ -127,10 +142,12 @@ struct Target {
 
 // The lab's operators in order of first appearance in its trials.
 std::vector<std::string> LabOperators(const data::LabDataset& lab);
+// The repetitions its trials record, increasing, each once.
+std::vector<int> LabRepetitions(const data::LabDataset& lab);
 
-// A target of `spec` for one operator ("": all) with its label and unit; its
-// lab statistic is left for the caller.
-Target MakeTarget(const TargetSpec& spec, const std::string& operator_id);
+// A target of `spec` over `scope` with its label and unit; its lab statistic
+// is left for the caller.
+Target MakeTarget(const TargetSpec& spec, const TargetScope& scope);
 
 // What a reported value without sd and n or an uncertainty gives: an
 // InputError (a calibration cannot weigh it), or its point alone with a NaN
@@ -167,6 +184,12 @@ std::vector<Target> LabTargets(const scene::Scene& scene, const data::LabDataset
 // independent, and so must the virtual ones' be for the targets of different
 // operators to be independent residuals (with shared streams the six
 // operators of data/synthetic_block gave a standard error 2.5 times too small).
+// Each operator repeats the task as the lab's operators did: cycle j is
+// repetition (j mod R) + 1, R the largest repetition of the lab's trials
+// (experiment::Condition::repetitions), so a learning model (human/learning.h)
+// practises the virtual operators as the lab's were. With a learning model,
+// `trials` must be a multiple of R, every repetition run equally often (an
+// InputError naming the lab's trials file otherwise).
 std::vector<experiment::Condition> LabConditions(const scene::Scene& scene,
                                                  const data::LabDataset& lab, int trials);
 

@@ -218,29 +218,32 @@ std::vector<LabQuantity> LabSide(const scene::Scene& scene, const data::LabDatas
                                  const std::string& experiment_file) {
   std::vector<LabQuantity> out;
   for (const scene::FitTarget& spec : design.quantities) {
-    const std::vector<std::string> operators =
-        spec.by_operator ? calibrate::LabOperators(lab) : std::vector<std::string>{""};
-    if (operators.empty())
-      throw InputError(
-          experiment_file, spec.pointer + "/by", "operator",
-          "the lab dataset " + lab.file + " has no trials, hence no operators");
-    for (const std::string& op : operators) {
+    const std::vector<calibrate::TargetScope> scopes = calibrate::TargetScopes(spec, lab);
+    if (scopes.empty())
+      throw InputError(experiment_file, spec.pointer + "/by",
+                       spec.by_operator ? "operator" : "repetition",
+                       "the lab dataset " + lab.file + " has no trials, hence no " +
+                           (spec.by_operator ? "operators" : "repetitions"));
+    for (const calibrate::TargetScope& scope : scopes) {
+      const std::string& op = scope.operator_id;
       LabQuantity q;
       q.margin = spec.margin;
-      q.samples = calibrate::LabSamples(scene, lab, spec, op);
+      q.samples = calibrate::LabSamples(scene, lab, spec, scope);
       // eta and lambda_c: the lab's tracks, even when too few give a value
       // (the comparison then says so).
       const bool instant = scene::AtInstant(spec.quantity);
       if (instant ? q.samples.Read() > 0 : q.samples.attempts > 0) {
-        q.target = calibrate::MakeTarget(spec, op);
+        q.target = calibrate::MakeTarget(spec, scope);
         q.target.lab = q.samples.Of(spec.quantity);
         q.target.from_tracks = instant;
-      } else if (!op.empty()) {
-        // What a lab reports is never an operator's.
-        throw InputError(experiment_file, spec.pointer, spec.part,
-                         "the lab dataset " + lab.file + " (operator " + op +
-                             ") has no " + (instant ? "sensor tracks" : "trials") +
-                             " of this part");
+      } else if (!op.empty() || scope.repetition > 0) {
+        // What a lab reports is never an operator's or a repetition's.
+        throw InputError(
+            experiment_file, spec.pointer, spec.part,
+            "the lab dataset " + lab.file +
+                (op.empty() ? fmt::format(" (repetition {})", scope.repetition)
+                            : " (operator " + op + ")") +
+                " has no " + (instant ? "sensor tracks" : "trials") + " of this part");
       } else {
         // No trials: what the lab reports (an InputError when it reports
         // nothing either).

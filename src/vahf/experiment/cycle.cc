@@ -10,7 +10,8 @@ rng::StreamKey CycleKey(std::uint64_t seed, std::uint64_t cycle, std::size_t n,
 }
 
 CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed,
-                     std::uint64_t cycle, double initial_work, bool record_trace) {
+                     std::uint64_t cycle, double initial_work, bool record_trace,
+                     int repetition) {
   CycleResult out;
   out.work = initial_work;
   const std::size_t n = models.size();
@@ -18,6 +19,7 @@ CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed,
     sim::TrialOptions options;
     options.initial_work = out.work;
     options.record_trace = record_trace;
+    options.repetition = repetition;
     PartRun run;
     run.start_time = out.time;
     run.start_work = out.work;
@@ -35,9 +37,9 @@ CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed,
 }
 
 CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_t cycle,
-                     double initial_work, bool record_trace) {
+                     double initial_work, bool record_trace, int repetition) {
   return RunCycle(sim::BuildSequenceModels(scene), seed, cycle, initial_work,
-                  record_trace);
+                  record_trace, repetition);
 }
 
 }  // namespace vahf::experiment

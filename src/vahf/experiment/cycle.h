@@ -43,10 +43,13 @@ rng::StreamKey CycleKey(std::uint64_t seed, std::uint64_t cycle, std::size_t n,
 // once per scene of an experiment and shared by all its cycles.
 using SequenceModels = std::vector<std::shared_ptr<const sim::TrialModel>>;
 
+// `repetition` (from 1): the operator's repetition of the task, which every
+// part trial of the cycle is (sim::TrialOptions::repetition).
 CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed,
-                     std::uint64_t cycle, double initial_work, bool record_trace);
+                     std::uint64_t cycle, double initial_work, bool record_trace,
+                     int repetition = 1);
 // Builds the scene's models, then runs the cycle.
 CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_t cycle,
-                     double initial_work, bool record_trace);
+                     double initial_work, bool record_trace, int repetition = 1);
 
 }  // namespace vahf::experiment

@@ -48,8 +48,9 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
     const double u = (static_cast<double>(j) + 0.5) / static_cast<double>(n);
     r.start_minute = c.minute_start + (c.minute_end - c.minute_start) * u;
     r.initial_work = c.work_start + (c.work_end - c.work_start) * u;
-    r.result =
-        RunCycle(*models[r.condition], seed, r.cycle, r.initial_work, record_trace);
+    r.repetition = c.RepetitionOf(j);
+    r.result = RunCycle(*models[r.condition], seed, r.cycle, r.initial_work, record_trace,
+                        r.repetition);
     return r;
   });
   return out;
@@ -147,6 +148,9 @@ ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file,
     conditions.push_back({"scene operator", file.scene.op.sex, Share(file.scene)});
   for (const scene::OperatorEntry& o : operators)
     conditions.push_back(OperatorCondition(file.scene, o));
+  // Each operator assembles the sequence `trials` times over (Sec. 5.2: ten
+  // real assemblies each): cycle j is their repetition j + 1.
+  for (Condition& c : conditions) c.repetitions = out.trials;
   out.run = RunDesign(conditions, out.trials, out.seed, false, Options(file, settings));
   return out;
 }

@@ -39,6 +39,16 @@ struct Condition {
   // operator's working time, with the work A done by then (fatigue; else 0).
   double minute_start = 0, minute_end = 0;
   double work_start = 0, work_end = 0;
+  // > 0: the condition is an operator repeating the task, cycle j of it the
+  // operator's repetition (j mod repetitions) + 1 (human/learning.h; with
+  // `trials` a multiple of it, each repetition has as many cycles). 0: every
+  // cycle is a first repetition.
+  int repetitions = 0;
+  int RepetitionOf(std::size_t j) const {
+    return repetitions > 0
+               ? static_cast<int>(j % static_cast<std::size_t>(repetitions)) + 1
+               : 1;
+  }
 };
 
 // The condition of one operator (Sec. 5.2): the scene with the operator's
@@ -50,6 +60,7 @@ struct CycleRecord {
   std::uint64_t cycle = 0;    // j: the stream index of the cycle
   double start_minute = 0;
   double initial_work = 0;  // J
+  int repetition = 1;       // the operator's repetition (Condition::RepetitionOf)
   CycleResult result;
 };
 

@@ -23,7 +23,8 @@ std::string CheckCalibration(const scene::ExperimentFile& e) {
   const data::LabDataset lab =
       data::LoadLabDataset(e.Input<calibrate::CalibrationDesign>().lab_path);
   std::string out = data::DescribeLabDataset(lab);
-  calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
+  // Its operators, by the reach rule; its repetitions, by the cycles.
+  calibrate::LabConditions(e.scene, lab, e.trials);
   for (const calibrate::CalibrationStage& stage :
        e.Input<calibrate::CalibrationDesign>().stages) {
     if (!stage.name.empty())

@@ -21,7 +21,8 @@ std::string CheckComparison(const scene::ExperimentFile& e) {
   const data::LabDataset lab =
       data::LoadLabDataset(e.Input<compare::ComparisonDesign>().lab_path);
   std::string out = data::DescribeLabDataset(lab);
-  calibrate::LabConditions(e.scene, lab, 1);  // its operators, by the reach rule
+  // Its operators, by the reach rule; its repetitions, by the cycles.
+  calibrate::LabConditions(e.scene, lab, e.trials);
   bool segments = false;
   for (const auto& q :
        compare::LabSide(e.scene, lab, e.Input<compare::ComparisonDesign>(), e.file)) {

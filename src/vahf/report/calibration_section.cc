@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "vahf/report/figure.h"
@@ -52,6 +53,10 @@ struct CalibrationTables {
   // Per scanned parameter: its label and rows (position from the estimate,
   // -1 at the lower end of its range and 1 at the upper; the cost's rise).
   std::vector<std::pair<std::string, std::vector<DataRow>>> scan_rows;
+  // Targets by repetition (the learning curve): repetition, lab value and
+  // half-width, virtual at the fit and half-width (95 %); one series a stage
+  // and target.
+  std::vector<std::pair<std::string, std::vector<DataRow>>> learning_rows;
   std::string markdown;
 };
 
@@ -221,6 +226,25 @@ void AddParameters(const std::string& stage, const calibrate::CalibrationResult&
 }
 
 // The stage's targets, lab beside virtual: table rows, Markdown, plot rows.
+// A target by repetition on its series of the learning curve's plot: the
+// series of its stage and spec (its label without the repetition).
+void AddLearningRow(const std::string& stage, const calibrate::FittedTarget& f,
+                    double lab_sd, CalibrationTables* t) {
+  const calibrate::Target& target = f.target;
+  const std::string series =
+      fmt::format("stage {}: {} of {}", stage, target.spec.quantity, target.spec.part);
+  auto it = std::find_if(t->learning_rows.begin(), t->learning_rows.end(),
+                         [&](const auto& s) { return s.first == series; });
+  if (it == t->learning_rows.end())
+    it = t->learning_rows.insert(t->learning_rows.end(), {series, {}});
+  it->second.push_back(DataRow()
+                           .Integer(target.repetition)
+                           .Number(target.lab.value)
+                           .Number(1.96 * lab_sd)
+                           .Number(f.fitted.value)
+                           .Number(1.96 * Sd(f.fitted.variance)));
+}
+
 void AddTargets(const std::string& stage, const calibrate::CalibrationResult& r,
                 CalibrationTables* t) {
   MarkdownTable md{{"target", "lab (se, n)", "virtual at start (se)",
@@ -239,6 +263,7 @@ void AddTargets(const std::string& stage, const calibrate::CalibrationResult& r,
          fmt::format("{} ({})", Number(f.fitted.value), Number(Sd(f.fitted.variance))),
          fmt::format("{:.2f}", f.residual)});
     // x, label, lab, lab half-width, start, start hw, fit, fit hw (95 %)
+    if (f.target.repetition > 0) AddLearningRow(stage, f, lab_sd, t);
     t->plot_rows.push_back(DataRow()
                                .Integer(static_cast<std::int64_t>(t->plot_rows.size()))
                                .Label(f.target.label)
@@ -341,6 +366,27 @@ Figure TargetsFigure(const std::vector<DataRow>& rows) {
   return f;
 }
 
+// The learning curve: each repetition's lab value against the virtual one at
+// the fit (95 % intervals), per stage and target.
+Figure LearningFigure(
+    const std::vector<std::pair<std::string, std::vector<DataRow>>>& series) {
+  Figure f;
+  for (std::size_t k = 0; k < series.size(); ++k)
+    f.Data(fmt::format("r{}", k), series[k].second);
+  f.Title("Learning over repetitions: lab against virtual at the fit")
+      .XLabel("repetition")
+      .YLabel("value (the target unit: s for times, 1 for rates)")
+      .Set("grid")
+      .Set("key outside bottom center horizontal");
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const std::string data = fmt::format("$r{}", k);
+    f.Draw({data, "($1-0.1):2:3", "with yerrorbars pt 7", "lab, " + series[k].first});
+    f.Draw({data, "($1+0.1):4:5", "with yerrorbars pt 5",
+            "virtual at the fit, " + series[k].first});
+  }
+  return f;
+}
+
 // The cost along each parameter alone, from its estimate (0) to the ends
 // of its valid range (-1 and 1), against the 95 % profile threshold.
 Figure ScanFigure(
@@ -406,6 +452,12 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
        "Each target: the lab's value and the virtual one at the start and "
        "at the fit (95 % intervals)",
        GnuplotScript(TargetsFigure(t.plot_rows))});
+  if (!t.learning_rows.empty())
+    out.plots.push_back(
+        {"plots/calibrate_learning.png",
+         "Learning over repetitions: each repetition's lab value and the virtual one "
+         "at the fitted parameters (95 % intervals)",
+         GnuplotScript(LearningFigure(t.learning_rows))});
   if (scanned)
     out.plots.push_back(
         {"plots/calibrate_scan.png",

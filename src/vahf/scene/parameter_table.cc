@@ -109,6 +109,35 @@ std::vector<ParamSpec> Fatigue() {
   return rows;
 }
 
+// Learning over repetitions (human/learning.h): De Jong's curve on the
+// operator's gain.
+std::vector<ParamSpec> Learning() {
+  using R = ParamRule;
+  std::vector<ParamSpec> rows = {
+      {"learning",
+       "model",
+       "-",
+       R::kChoice,
+       0,
+       0,
+       "none: every repetition is the first; power_law: L(n) = n^-b (Newell and "
+       "Rosenbloom 1981); de_jong: L(n) = M + (1 - M) n^-b (De Jong 1957)",
+       nullptr,
+       nullptr,
+       VAHF_TEXT(learning.model),
+       {"none", "power_law", "de_jong"}},
+      // An exponent of 5 halves the time by the second repetition 30-fold:
+      // far past any practice curve (Wright's 80 % curve is 0.32).
+      {"learning", "exponent", "1", R::kClosed, 0, 5,
+       "b of L(n): repetition n takes L(n) of the first's time (80 % curve: 0.322)",
+       VAHF_REAL(learning.exponent)},
+      {"learning", "floor", "1", R::kClosed, 0, 0.99,
+       "M of De Jong's L(n): the share practice cannot shorten",
+       VAHF_REAL(learning.floor)},
+  };
+  return rows;
+}
+
 // The operator's force: Eq. 7's coefficient and its impedance
 // (docs/design.md decision 2).
 std::vector<ParamSpec> OperatorForce() {
@@ -416,9 +445,9 @@ std::vector<ParamSpec> StepChecksAndBudget() {
 std::vector<ParamSpec> MakeTable() {
   std::vector<ParamSpec> t;
   for (std::vector<ParamSpec> (*rows)() :
-       {SightGlanceReach, Fatigue, OperatorForce, TorqueAndGrasp, ForceInContact,
-        VisionError, ContactLaw, ContactModelAndShells, Lubrication, Visibility,
-        DecisionsAndOutcomes, Integration, StepChecksAndBudget})
+       {SightGlanceReach, Fatigue, Learning, OperatorForce, TorqueAndGrasp,
+        ForceInContact, VisionError, ContactLaw, ContactModelAndShells, Lubrication,
+        Visibility, DecisionsAndOutcomes, Integration, StepChecksAndBudget})
     for (ParamSpec& s : rows()) t.push_back(std::move(s));
   return t;
 }

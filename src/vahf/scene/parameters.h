@@ -10,6 +10,7 @@
 #include "vahf/guidance/assembly_force.h"
 #include "vahf/human/factor_curves.h"
 #include "vahf/human/fatigue.h"
+#include "vahf/human/learning.h"
 #include "vahf/visibility/visibility_params.h"
 
 namespace vahf::scene {
@@ -77,6 +78,7 @@ struct Parameters {
   human::PlateauCurve glance = human::DefaultGlanceCurve();  // g, Fig. 5
   human::ReachCurve reach;                                   // r, Fig. 4
   human::FatigueParams fatigue;
+  human::LearningParams learning;
   guidance::GuidanceParams guidance;
   contact::ContactParams contact;
   visibility::VisibilityParams visibility;

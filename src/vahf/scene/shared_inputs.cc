@@ -88,8 +88,11 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene,
     std::vector<std::string> parts = {"all"};
     for (int index : scene.sequence) parts.push_back(scene.parts[index].name);
     t.part = node.Required("part").Choice(parts);
-    if (auto by = node.Optional("by"))
-      t.by_operator = by->Choice({"operator", "all"}) == "operator";
+    if (auto by = node.Optional("by")) {
+      const std::string b = by->Choice({"operator", "repetition", "all"});
+      t.by_operator = b == "operator";
+      t.by_repetition = b == "repetition";
+    }
     if (auto segment = node.Optional("segment"))
       t.segment = static_cast<int>(segment->Integer(1, 1000));
     if (auto condition = node.Optional("condition")) {
@@ -99,6 +102,10 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene,
     }
     if (t.segment > 0 && t.by_operator)
       node.Required("by").Fail("a segment's value is the lab's over all operators");
+    if (t.segment > 0 && t.by_repetition)
+      node.Required("by").Fail(
+          "a segment's value is the lab's over the hour of work, which has no "
+          "repetitions");
     ReadInstant(node, &t);
     // A margin is in the quantity's unit: at most an hour for a time, 1 for a
     // rate, eta or lambda_c.

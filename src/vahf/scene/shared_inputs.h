@@ -56,6 +56,9 @@ struct FitTarget {
   // eta and lambda_c (AtInstant): the instant, s from the trial's start, at
   // which the factor is read (calibrate/targets.h); NaN for the others.
   double instant = std::numeric_limits<double>::quiet_NaN();
+  // One target per repetition the lab's trials record (1, 2, ...), over all
+  // operators: the learning curve (human/learning.h).
+  bool by_repetition = false;
 };
 
 // The quantities a target may name, the one list (calibrate::TargetQuantities):
@@ -67,10 +70,10 @@ const std::vector<std::string>& FitQuantities();
 bool AtInstant(const std::string& quantity);
 
 // Lab summaries as a calibration's targets or a comparison's quantities name
-// them: quantity, part (of the scene's sequence, or "all"), by ("operator" or
-// "all"), segment (1-based) and condition (the lab's, not empty: without it,
-// any), for eta and lambda_c the instant (s, finite and >= 0; no other
-// quantity takes one, and they take no segment), and for a comparison
+// them: quantity, part (of the scene's sequence, or "all"), by ("operator",
+// "repetition" or "all"), segment (1-based) and condition (the lab's, not empty: without
+// it, any), for eta and lambda_c the instant (s, finite and >= 0; no other quantity takes
+// one, and they take no segment), and for a comparison
 // (`margin`) the equivalence margin.
 std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene, bool margin);
 

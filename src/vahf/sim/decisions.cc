@@ -98,6 +98,7 @@ std::optional<Decision> DecideNow(TrialContext& c, double time,
   // current contact at every evaluation, not this one).
   Decision d;
   d.psi = psi;
+  d.practice_gain = c.practice_gain;
   const contact::ContactForces cf = c.ContactAt(m);
   const bool in_contact = cf.in_contact() && cf.normal_force.norm() > 0;
   CheckOutcomes(c, i, time, m, f, psi, in_contact);

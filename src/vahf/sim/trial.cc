@@ -8,6 +8,7 @@
 
 #include "vahf/core/thread_cpu.h"
 #include "vahf/core/warnings.h"
+#include "vahf/human/learning.h"
 #include "vahf/sim/internal/simbody_trial.h"
 #include "vahf/sim/internal/stepper_driver.h"
 #include "vahf/sim/internal/stepping.h"
@@ -82,6 +83,7 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key,
   const auto& params = model.params;
   TrialContext c(model, key);
   c.work = options.initial_work;
+  c.practice_gain = human::PracticeGain(params.learning, options.repetition);
   c.record_trace = options.record_trace;
   c.difference_quotient_jacobian = options.difference_quotient_jacobian;
   c.depth_pass_every_step = options.depth_pass_every_step;

@@ -40,6 +40,9 @@ struct TrialOptions {
   // For benchmarks: measure where the time goes (TrialResult::phases,
   // phase_seconds.h). Changes no bit of the result.
   bool time_phases = false;
+  // The operator's repetition of the task, from 1 (human/learning.h: with a
+  // learning model, the n-th repetition's operator is practised).
+  int repetition = 1;
 };
 
 // Runs one trial with the integrator and accuracy of scene.params.simulation.

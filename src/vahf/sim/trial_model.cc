@@ -254,12 +254,13 @@ void TrialModel::OperatorLoad(const contact::RigidMotion& m, const Decision& d,
   // guidance says.
   const guidance::FeltContact felt{cf.normal_force, cf.friction_force.norm()};
   const Vector3d push = guidance::ImpedanceForce(
-      g, d.psi, mass, m.pose.translation(), d.estimated_target, v_c, felt, blend_force,
-      part_mass * gravity, params.simulation.completion_distance);
+      g, d.Vigour(), mass, m.pose.translation(), d.estimated_target, v_c, felt,
+      blend_force, part_mass * gravity, params.simulation.completion_distance);
   *force = push - hand_mass * gravity;
   const Matrix3d inertia_world = R * torque_inertia_body * R.transpose();
-  const Vector3d turn = guidance::AssemblyTorque(torque_params, d.psi, inertia_world, R,
-                                                 d.held_orientation, m.angular_velocity);
+  const Vector3d turn =
+      guidance::AssemblyTorque(torque_params, d.Vigour(), inertia_world, R,
+                               d.held_orientation, m.angular_velocity);
   if (compliance_at_leading_end)
     *torque = r_c.cross(push) - r_grasp.cross(hand_mass * gravity) + turn;
   else

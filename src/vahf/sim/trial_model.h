@@ -34,6 +34,11 @@ struct Decision {
   Eigen::Vector3d estimated_target = Eigen::Vector3d::Zero();  // T' of Eq. 5
   Eigen::Matrix3d held_orientation = Eigen::Matrix3d::Identity();
   double psi = 1.0;
+  // The practice gain G(n) of the trial's repetition (human/learning.h):
+  // the force and torque laws take Psi G(n) where Eq. 5 takes Psi.
+  double practice_gain = 1.0;
+  // Psi as the operator's force and torque laws take it.
+  double Vigour() const { return psi * practice_gain; }
 };
 
 // The loads on the moving body at one state, world frame.

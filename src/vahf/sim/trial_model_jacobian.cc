@@ -45,7 +45,7 @@ LoadJacobian TrialModel::LoadJacobianAt(const contact::RigidMotion& m, const Dec
   const Matrix3d r_x = CrossMatrix(r_c);
   const double friction = cf.friction_force.norm();
   const guidance::ImpedancePartials p = guidance::ImpedanceForceJacobian(
-      g, d.psi, mass, m.pose.translation(), d.estimated_target, v_c,
+      g, d.Vigour(), mass, m.pose.translation(), d.estimated_target, v_c,
       {cf.normal_force, friction}, blend_force, part_mass * gravity,
       params.simulation.completion_distance);
   // dr_c = dtheta x r_c + u dw (u turns with the part: dtheta x (w u) is in
@@ -73,8 +73,9 @@ LoadJacobian TrialModel::LoadJacobianAt(const contact::RigidMotion& m, const Dec
               CrossMatrix(hand_weight) * dr_grasp;
   }
   const Matrix3d inertia_world = R * torque_inertia_body * R.transpose();
-  const guidance::TorquePartials t = guidance::AssemblyTorqueJacobian(
-      torque_params, d.psi, inertia_world, R, d.held_orientation, m.angular_velocity);
+  const guidance::TorquePartials t =
+      guidance::AssemblyTorqueJacobian(torque_params, d.Vigour(), inertia_world, R,
+                                       d.held_orientation, m.angular_velocity);
   torque.block<3, 3>(0, 3) += t.rotation;
   torque.block<3, 3>(0, 9) += t.omega;
   out.topRows<3>() += force;

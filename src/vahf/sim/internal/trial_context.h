@@ -56,6 +56,7 @@ struct TrialContext {
   // Accumulators, updated at decision instants.
   std::int64_t last_decision = -1;
   double work = 0;
+  double practice_gain = 1;  // G(n) of the trial's repetition (human/learning.h)
   Vector3d last_position = Vector3d::Zero();
   Vector3d last_centre = Vector3d::Zero();  // of the part, at the last decision
   double last_force = 0;
