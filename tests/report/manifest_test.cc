@@ -103,8 +103,8 @@ TEST(ParametersToJson, ReadsBackAsASceneSetsThem) {
   p.visibility.grid = 17;
   p.simulation.integrator = "CPodes";
   const nlohmann::json params = ParametersToJson(p);
-  EXPECT_EQ(params.size(), 8u);  // sight, glance, reach, fatigue, guidance, contact,
-                                 // visibility, simulation
+  EXPECT_EQ(params.size(), 9u);  // sight, glance, reach, fatigue, learning, guidance,
+                                 // contact, visibility, simulation
   std::ifstream in(std::string(VAHF_SOURCE_DIR) + "/experiments/scenes/free_move.json");
   nlohmann::json scene_doc = nlohmann::json::parse(in);
   scene_doc["parameters"] = params;
