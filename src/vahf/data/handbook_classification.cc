@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <variant>
 
 #include "vahf/core/error.h"
+#include "vahf/geometry/clearance.h"
 
 namespace vahf::data {
 namespace {
@@ -80,7 +82,54 @@ BdClass BdOf(const InsertionFit& fit, double ratio, const BdInsertionTable& tabl
   return c;
 }
 
+// Whether a shape's profile has a conical edge (both r and z change): a
+// chamfer or another lead-in.
+bool HasConicalEdge(const geometry::Shape& shape) {
+  const auto* p = std::get_if<geometry::RevolvedProfile>(&shape);
+  if (!p) return false;
+  const auto& v = p->vertices;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const geometry::ProfilePoint a = v[k], b = v[(k + 1) % v.size()];
+    if (a.r != b.r && a.z != b.z) return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+std::optional<InsertionFit> InsertionFitOf(const scene::Scene& scene,
+                                           std::size_t position, std::string* why) {
+  const scene::Part& part =
+      scene.parts.at(static_cast<std::size_t>(scene.sequence.at(position)));
+  std::optional<geometry::RadialFit> best;
+  const scene::Part* other = nullptr;
+  for (const scene::FixedPart& f : scene::FixedPartsAt(scene, position))
+    if (const auto fit = geometry::SmallestRadialFit(part.shape, part.target.Transform(),
+                                                     f.part->shape, f.pose))
+      if (!best || fit->clearance < best->clearance) {
+        best = fit;
+        other = f.part;
+      }
+  if (!best) {
+    *why = fmt::format(
+        "{} has no radial fit with a fixed part at its target (no coaxial cylindrical "
+        "faces facing each other)",
+        part.name);
+    return std::nullopt;
+  }
+  InsertionFit fit;
+  fit.radial_clearance = best->clearance;
+  fit.diameter = 2 * best->bore_radius;
+  fit.chamfered = HasConicalEdge(part.shape) || HasConicalEdge(other->shape);
+  fit.rotationally_symmetric =
+      std::holds_alternative<geometry::RevolvedProfile>(part.shape);
+  fit.lubricated = scene.params.contact.lubricant_viscosity > 0;
+  *why = fmt::format("{} in the {}: {:.1f} um radial clearance at {:.1f} mm{}{}",
+                     part.name, other->name, 1e6 * fit.radial_clearance,
+                     1e3 * fit.diameter, fit.chamfered ? ", chamfered" : ", no chamfer",
+                     fit.lubricated ? ", oiled" : ", dry");
+  return fit;
+}
 
 HandbookClasses ClassifyInsertion(const InsertionFit& fit, const MtmPositionTable& mtm,
                                   const BdInsertionTable& bd) {

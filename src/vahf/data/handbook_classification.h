@@ -9,6 +9,7 @@
 #include <string>
 
 #include "vahf/data/handbook.h"
+#include "vahf/scene/scene.h"
 
 namespace vahf::data {
 
@@ -61,5 +62,16 @@ struct HandbookClasses {
 // not positive and finite or a clearance that is not finite.
 HandbookClasses ClassifyInsertion(const InsertionFit& fit, const MtmPositionTable& mtm,
                                   const BdInsertionTable& bd);
+
+// The fit of the part at `position` of the scene's sequence, as the scene
+// gives it: the smallest radial clearance between the part at its target and
+// a part fixed during its trial (geometry::SmallestRadialFit), that fit's bore
+// diameter; chamfered when the part's or that fixed part's profile has an
+// edge changing both radius and height (a conical lead-in); symmetric when the
+// part is revolved; lubricated when contact/lubricant_viscosity > 0; never a
+// press fit (a clearance was found). Nothing, with `why` saying so, when the
+// part has no radial fit (a box, or no coaxial facing faces).
+std::optional<InsertionFit> InsertionFitOf(const scene::Scene& scene,
+                                           std::size_t position, std::string* why);
 
 }  // namespace vahf::data
