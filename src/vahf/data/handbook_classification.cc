@@ -124,7 +124,7 @@ std::optional<InsertionFit> InsertionFitOf(const scene::Scene& scene,
   fit.rotationally_symmetric =
       std::holds_alternative<geometry::RevolvedProfile>(part.shape);
   fit.lubricated = scene.params.contact.lubricant_viscosity > 0;
-  *why = fmt::format("{} in the {}: {:.1f} um radial clearance at {:.1f} mm{}{}",
+  *why = fmt::format("{} with the {}: {:.1f} um radial clearance at {:.1f} mm{}{}",
                      part.name, other->name, 1e6 * fit.radial_clearance,
                      1e3 * fit.diameter, fit.chamfered ? ", chamfered" : ", no chamfer",
                      fit.lubricated ? ", oiled" : ", dry");
