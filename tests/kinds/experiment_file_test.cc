@@ -1580,5 +1580,15 @@ TEST(WrongKindTest, AKeyNoKindReadsIsUnknown) {
   ExpectError(doc, "/operator", "did you mean 'operators'?");
 }
 
+// A paper file's "handbooks" names existing tables: a missing one is an
+// InputError at its key.
+TEST(PaperHandbooksTest, AMissingTableIsAnInputErrorAtItsKey) {
+  json doc = Paper({SourcePath("experiments/table1.json")});
+  doc["handbooks"] = {{"boothroyd_dewhurst", "no_such.csv"},
+                      {"mtm1_position", SourcePath("data/handbooks/mtm1_position.csv")}};
+  ExpectError(doc, "/handbooks/boothroyd_dewhurst",
+              "no Boothroyd-Dewhurst insertion table file at");
+}
+
 }  // namespace
 }  // namespace vahf::scene

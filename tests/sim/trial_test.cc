@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -148,6 +149,7 @@ TEST(Trial, FinalRowIsTheCompletionInstant) {
   EXPECT_EQ(r.work, r.final_row.work);
   EXPECT_LT((r.final_row.position - s.parts[s.sequence[0]].target.position).norm(),
             s.params.simulation.completion_distance * (1 + 1e-6));
+  EXPECT_EQ(r.first_contact_time, -1);  // nothing fixed to touch
 }
 
 TEST(Trial, BlockSlidesDownInclineWithCoulombFriction) {
@@ -228,6 +230,14 @@ TEST(Trial, FrictionlessPegFallsIntoChamferedBore) {
   // It falls 45 mm: no faster than free fall.
   EXPECT_GT(r.completion_time, std::sqrt(2 * 0.044 / kG));
   EXPECT_GT(r.counters.contact_evaluations, 0);
+  // The insertion's start: the first decision that found a contact force, as
+  // the trace recorded it, before the completion.
+  const auto touched =
+      std::find_if(r.trace.begin(), r.trace.end(),
+                   [](const TraceRow& row) { return row.contact_force.norm() > 0; });
+  ASSERT_NE(touched, r.trace.end());
+  EXPECT_EQ(r.first_contact_time, touched->time);
+  EXPECT_LT(r.first_contact_time, r.completion_time);
 }
 
 TEST(Trial, PegInHoleCompletesAndIsDeterministic) {

@@ -41,6 +41,15 @@ std::optional<double> SmallestRadialClearance(const Shape& a_shape,
                                               const Eigen::Isometry3d& a,
                                               const Shape& b_shape,
                                               const Eigen::Isometry3d& b) {
+  const std::optional<RadialFit> fit = SmallestRadialFit(a_shape, a, b_shape, b);
+  if (!fit) return std::nullopt;
+  return fit->clearance;
+}
+
+std::optional<RadialFit> SmallestRadialFit(const Shape& a_shape,
+                                           const Eigen::Isometry3d& a,
+                                           const Shape& b_shape,
+                                           const Eigen::Isometry3d& b) {
   const auto* pa = std::get_if<RevolvedProfile>(&a_shape);
   const auto* pb = std::get_if<RevolvedProfile>(&b_shape);
   if (!pa || !pb) return std::nullopt;
@@ -52,7 +61,7 @@ std::optional<double> SmallestRadialClearance(const Shape& a_shape,
   const std::vector<CylindricalFace> ca =
       Cylinders(*pa, d.dot(axis_b), axis_a.dot(axis_b) > 0 ? 1.0 : -1.0);
   const std::vector<CylindricalFace> cb = Cylinders(*pb, 0.0, 1.0);
-  std::optional<double> best;
+  std::optional<RadialFit> best;
   for (const CylindricalFace& x : ca) {
     for (const CylindricalFace& y : cb) {
       const double overlap = std::min(x.z_hi, y.z_hi) - std::max(x.z_lo, y.z_lo);
@@ -60,7 +69,7 @@ std::optional<double> SmallestRadialClearance(const Shape& a_shape,
       const CylindricalFace& shaft = x.faces_out ? x : y;
       const CylindricalFace& bore = x.faces_out ? y : x;
       const double gap = bore.r - shaft.r;
-      if (gap > 0 && (!best || gap < *best)) best = gap;
+      if (gap > 0 && (!best || gap < best->clearance)) best = RadialFit{gap, bore.r};
     }
   }
   return best;

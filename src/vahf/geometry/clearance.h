@@ -36,4 +36,15 @@ std::optional<double> SmallestRadialClearance(const Shape& a_shape,
                                               const Shape& b_shape,
                                               const Eigen::Isometry3d& b);
 
+// The fit SmallestRadialClearance finds: its clearance and the radius of its
+// bore (the fit's nominal radius), m.
+struct RadialFit {
+  double clearance = 0;
+  double bore_radius = 0;
+};
+std::optional<RadialFit> SmallestRadialFit(const Shape& a_shape,
+                                           const Eigen::Isometry3d& a,
+                                           const Shape& b_shape,
+                                           const Eigen::Isometry3d& b);
+
 }  // namespace vahf::geometry

@@ -15,7 +15,24 @@ void PaperInput::ApplyOverrides(const scene::ParameterOverrides& o,
   for (scene::ExperimentFile& sub : experiments) scene::ApplyOverrides(o, &sub);
 }
 
+std::vector<std::string> PaperInput::InputFiles() const {
+  if (!handbooks) return {};
+  return {handbooks->boothroyd_dewhurst.file, handbooks->mtm1_position.file};
+}
+
 namespace {
+
+// "handbooks": the two tables, each file relative to the experiment file.
+PaperInput::Handbooks ReadHandbooks(const scene::JsonNode& node,
+                                    const std::string& path) {
+  node.ExpectObject({"boothroyd_dewhurst", "mtm1_position"});
+  PaperInput::Handbooks out;
+  out.boothroyd_dewhurst = data::ReadBdInsertion(scene::ResolvePath(
+      node.Required("boothroyd_dewhurst"), path, "Boothroyd-Dewhurst insertion table"));
+  out.mtm1_position = data::ReadMtmPosition(
+      scene::ResolvePath(node.Required("mtm1_position"), path, "MTM-1 Position table"));
+  return out;
+}
 
 // "table1, assembly_time, ...": the kinds a paper run may list, the designs of
 // cycles with an analysis of their own (the paper run itself has none).
@@ -48,6 +65,8 @@ void ParsePaper(const scene::JsonNode& root, const std::string& path,
           sub, x.kind, DesignNames()));
     input->experiments.push_back(std::move(x));
   }
+  if (const auto h = root.Optional("handbooks"))
+    input->handbooks = ReadHandbooks(*h, path);
   e->input = core::ClonePtr<scene::KindInput>(std::move(input));
 }
 

@@ -8,6 +8,7 @@
 
 #include "vahf/kinds/kind.h"
 #include "vahf/kinds/paper_input.h"
+#include "vahf/report/handbook_section.h"
 
 namespace vahf::kinds {
 namespace {
@@ -35,6 +36,14 @@ experiment::ExperimentRun PaperRun(const scene::ExperimentFile& file,
   return out;
 }
 
+// The handbooks section, when the file names the tables.
+std::vector<report::Section> PaperSections(const experiment::ExperimentRun& run) {
+  const PaperInput& in = run.file->Input<PaperInput>();
+  if (!in.handbooks) return {};
+  return {report::HandbookSection(run, in.handbooks->boothroyd_dewhurst,
+                                  in.handbooks->mtm1_position)};
+}
+
 }  // namespace
 
 Kind PaperKind() {
@@ -42,11 +51,12 @@ Kind PaperKind() {
   k.name = "paper";
   k.summary = "the paper's experiments, one report";
   k.doc = "experiments.md";
-  k.keys = {"experiments"};
+  k.keys = {"experiments", "handbooks"};
   k.scene_elsewhere = "a paper experiment takes its scenes from the experiments it lists";
   k.parse = ParsePaper;
   k.check = CheckPaper;
   k.design = PaperRun;
+  k.sections_after_parts = PaperSections;
   k.cycles_per_condition = false;  // each listed experiment has its own
   return k;
 }

@@ -114,6 +114,9 @@ std::vector<report::Section> Sections(const experiment::ExperimentRun& run) {
   };
   if (run.parts.empty()) add(run);
   for (const experiment::ExperimentRun& part : run.parts) add(part);
+  if (!run.parts.empty())
+    if (const auto after = FindKind(run.file->kind).sections_after_parts)
+      for (report::Section& s : after(run)) out.push_back(std::move(s));
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -72,5 +73,15 @@ struct Scene {
   std::vector<int> sequence;  // indices into parts, in assembly order
   Parameters params;
 };
+
+// A part that stays where it is while the part at `position` of the
+// sequence is assembled: the base, parts with role "assembled", and the parts
+// assembled earlier in the sequence (at their targets). Later parts are not
+// in that trial at all.
+struct FixedPart {
+  const Part* part;
+  Eigen::Isometry3d pose;
+};
+std::vector<FixedPart> FixedPartsAt(const Scene& scene, std::size_t position);
 
 }  // namespace vahf::scene

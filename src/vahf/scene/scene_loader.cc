@@ -189,6 +189,22 @@ void ReadParameters(const JsonNode& node, Parameters* p) {
 
 }  // namespace
 
+std::vector<FixedPart> FixedPartsAt(const Scene& scene, std::size_t position) {
+  std::vector<FixedPart> out;
+  for (std::size_t k = 0; k < scene.parts.size(); ++k) {
+    const Part& p = scene.parts[k];
+    const auto seq =
+        std::find(scene.sequence.begin(), scene.sequence.end(), static_cast<int>(k));
+    const bool assembled_earlier =
+        seq != scene.sequence.end() &&
+        static_cast<std::size_t>(seq - scene.sequence.begin()) < position;
+    if (p.role == Role::kAssembling && !assembled_earlier) continue;
+    const Pose& pose = p.role == Role::kAssembling ? p.target : p.initial;
+    out.push_back({&p, pose.Transform()});
+  }
+  return out;
+}
+
 const char* RoleName(Role role) {
   switch (role) {
     case Role::kBase:

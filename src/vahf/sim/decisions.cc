@@ -101,6 +101,7 @@ std::optional<Decision> DecideNow(TrialContext& c, double time,
   d.practice_gain = c.practice_gain;
   const contact::ContactForces cf = c.ContactAt(m);
   const bool in_contact = cf.in_contact() && cf.normal_force.norm() > 0;
+  if (in_contact && c.first_contact_time < 0) c.first_contact_time = time;
   CheckOutcomes(c, i, time, m, f, psi, in_contact);
   Draw(c, i, m, centre, f, &d);
 

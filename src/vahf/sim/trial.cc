@@ -104,6 +104,7 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key,
   result.detail = c.detail;
   result.end_time = result.status == Status::kCompleted ? c.completion_time : end_time;
   result.completion_time = c.completion_time;
+  result.first_contact_time = c.first_contact_time;
   result.part = model.part_name;
   result.integrator = params.simulation.integrator;
   result.accuracy = params.simulation.accuracy;

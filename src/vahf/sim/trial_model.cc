@@ -22,27 +22,7 @@ using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
 // A part that stands still during a trial, where it stands.
-struct FixedPart {
-  const scene::Part* part;
-  Eigen::Isometry3d pose;
-};
-
-// The base, parts with role "assembled", and the parts assembled earlier in
-// the sequence (at their targets). Later parts are not in the trial at all.
-std::vector<FixedPart> FixedParts(const scene::Scene& scene, int position) {
-  std::vector<FixedPart> out;
-  for (std::size_t k = 0; k < scene.parts.size(); ++k) {
-    const scene::Part& p = scene.parts[k];
-    const auto seq =
-        std::find(scene.sequence.begin(), scene.sequence.end(), static_cast<int>(k));
-    const bool assembled_earlier =
-        seq != scene.sequence.end() && seq - scene.sequence.begin() < position;
-    if (p.role == scene::Role::kAssembling && !assembled_earlier) continue;
-    const scene::Pose& pose = p.role == scene::Role::kAssembling ? p.target : p.initial;
-    out.push_back({&p, pose.Transform()});
-  }
-  return out;
-}
+using scene::FixedPart;
 
 // Eq. 1's casters, on the part's and the fixed parts' meshes at the scene's
 // tolerance.
@@ -211,7 +191,8 @@ std::shared_ptr<const TrialModel> BuildTrialModel(const scene::Scene& scene,
   // standard gravity (ISO 80000-3), whatever the scene's gravity.
   m.blend_force = params.guidance.contact_blend * part.mass * scene::kStandardGravity;
 
-  const std::vector<FixedPart> fixed = FixedParts(scene, sequence_position);
+  const std::vector<FixedPart> fixed =
+      scene::FixedPartsAt(scene, static_cast<std::size_t>(sequence_position));
   SetContact(scene, part, fixed, &m);
   // Eq. 1 by ray casting only when the scene asks for it and something could
   // hide the part; a scene with V given or switched off tessellates nothing.

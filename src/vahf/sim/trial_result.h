@@ -75,7 +75,12 @@ struct TrialResult {
   std::string detail;           // why it ended; where, for a failure
   double end_time = 0;          // simulated s
   double completion_time = -1;  // s, for status completed
-  std::string part;             // the assembling part
+  // s: the first decision instant (simulation/decision_interval apart) at
+  // which the part touched a fixed part with a normal force; -1 if it never
+  // did. From it to completion_time is the insertion proper, the part at the
+  // hole (docs/handbooks.md, "Virtual insertion time").
+  double first_contact_time = -1;
+  std::string part;  // the assembling part
   std::string integrator;
   double accuracy = 0;
   rng::StreamKey key;

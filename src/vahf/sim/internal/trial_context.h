@@ -64,6 +64,9 @@ struct TrialContext {
   std::optional<Status> ended;
   std::string detail;
   double completion_time = -1;
+  // The first decision instant at which the part touched a fixed part (-1:
+  // none yet).
+  double first_contact_time = -1;
   std::optional<TraceRow> completion_row;
   std::vector<TraceRow> trace;
   std::vector<TraceRow> samples;  // every sample_interval of simulated time
