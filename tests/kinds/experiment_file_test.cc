@@ -1224,7 +1224,8 @@ TEST(CalibrateErrorsTest, PartNotInTheScenesSequence) {
 TEST(CalibrateErrorsTest, TargetsShapeAndBy) {
   json doc = Calibrate();
   doc["targets"][0]["by"] = "sex";
-  ExpectError(doc, "/targets/0/by", "must be one of: operator, repetition, all", "\"sex\"");
+  ExpectError(doc, "/targets/0/by", "must be one of: operator, repetition, all",
+              "\"sex\"");
   doc = Calibrate();
   doc["targets"][0]["parts"] = "block";
   ExpectError(doc, "/targets/0/parts", "did you mean 'part'?");

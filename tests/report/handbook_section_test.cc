@@ -61,8 +61,9 @@ class HandbookSectionTest : public ::testing::Test {
       experiment::CycleRecord r;
       r.cycle = j;
       for (std::size_t p = 0; p < s.sequence.size(); ++p) {
-        const double touch = (j == 1 && p == 2) ? -1 : 1.0 + p + 0.25 * j;
-        r.result.parts.push_back(Completed(s, p, touch, 3.0 + 2 * p + 0.5 * j));
+        const double pd = static_cast<double>(p), jd = static_cast<double>(j);
+        const double touch = (j == 1 && p == 2) ? -1 : 1.0 + pd + 0.25 * jd;
+        r.result.parts.push_back(Completed(s, p, touch, 3.0 + 2 * pd + 0.5 * jd));
       }
       r.result.completed = true;
       part.run.records.push_back(r);

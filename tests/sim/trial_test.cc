@@ -217,6 +217,21 @@ TEST(Trial, RestingPenetrationIsWeightOverStiffness) {
   EXPECT_NEAR(r.trace.back().contact_force.z(), mass * kG, 1e-3 * mass * kG);
 }
 
+// The insertion's start (TrialResult::first_contact_time): the first decision
+// that found a contact force, as the trace recorded it, before the end; -1
+// when no decision did.
+void ExpectFirstContactAsTraced(const TrialResult& r) {
+  const auto touched =
+      std::find_if(r.trace.begin(), r.trace.end(),
+                   [](const TraceRow& row) { return row.contact_force.norm() > 0; });
+  if (touched == r.trace.end()) {
+    EXPECT_EQ(r.first_contact_time, -1.0);
+    return;
+  }
+  EXPECT_EQ(r.first_contact_time, touched->time);
+  EXPECT_LE(r.first_contact_time, r.end_time);
+}
+
 TEST(Trial, FrictionlessPegFallsIntoChamferedBore) {
   scene::Scene s = LoadExample("peg_in_hole_shell.json");
   for (scene::Part& p : s.parts) p.friction = 0.0;
@@ -230,14 +245,17 @@ TEST(Trial, FrictionlessPegFallsIntoChamferedBore) {
   // It falls 45 mm: no faster than free fall.
   EXPECT_GT(r.completion_time, std::sqrt(2 * 0.044 / kG));
   EXPECT_GT(r.counters.contact_evaluations, 0);
-  // The insertion's start: the first decision that found a contact force, as
-  // the trace recorded it, before the completion.
-  const auto touched =
-      std::find_if(r.trace.begin(), r.trace.end(),
-                   [](const TraceRow& row) { return row.contact_force.norm() > 0; });
-  ASSERT_NE(touched, r.trace.end());
-  EXPECT_EQ(r.first_contact_time, touched->time);
+  ExpectFirstContactAsTraced(r);
+}
+
+TEST(Trial, TheFirstContactIsTheFirstDecisionInContact) {
+  // The piston rod under the operator meets the barrel's mouth at a decision
+  // some time before it completes.
+  const TrialResult r = RunTrial(LoadExample("hydraulic_cylinder.json"), {1, 0});
+  ASSERT_EQ(r.status, Status::kCompleted) << r.detail;
+  EXPECT_GT(r.first_contact_time, 0.0);
   EXPECT_LT(r.first_contact_time, r.completion_time);
+  ExpectFirstContactAsTraced(r);
 }
 
 TEST(Trial, PegInHoleCompletesAndIsDeterministic) {
