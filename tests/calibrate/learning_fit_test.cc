@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "vahf/calibrate/calibration.h"
@@ -107,6 +108,46 @@ TEST(LearningFit, RecoversThePowerLawsExponentAndKappaWithinTheirIntervals) {
   ASSERT_EQ(r.targets.size(), static_cast<std::size_t>(kRepetitions));
   for (int n = 1; n <= kRepetitions; ++n)
     EXPECT_EQ(r.targets[static_cast<std::size_t>(n - 1)].target.repetition, n);
+}
+
+// Coverage over many labs, for the figures of docs/calibration.md: with
+// VAHF_LEARNING_DATASETS=N, N labs (lab seeds 1000 + k, calibration seeds
+// 7 + k); skipped without it (each fit is some 7 s). The share of 95 %
+// intervals holding b and kappa must be at least the exact binomial 1 %
+// lower bound of 0.95 over N, roughly 0.95 - 2.33 sqrt(0.95 0.05 / N).
+TEST(LearningFit, IntervalsCoverTheStatedValuesOverManyLabs) {
+  const char* env = std::getenv("VAHF_LEARNING_DATASETS");
+  if (!env) GTEST_SKIP() << "set VAHF_LEARNING_DATASETS=N to run N labs";
+  const int n = std::atoi(env);
+  ASSERT_GE(n, 1);
+  int cover_b = 0, cover_k = 0;
+  double sum_b = 0, sum_b2 = 0, sum_se = 0;
+  for (int k = 0; k < n; ++k) {
+    const data::LabDataset lab =
+        GenerateSyntheticLab(PractisedLab(1000 + static_cast<std::uint64_t>(k)), Quiet());
+    const CalibrationResult r =
+        Calibrate(PractisedBlock(), lab, ExponentAndKappa(), "test",
+                  7 + static_cast<std::uint64_t>(k), 2 * kRepetitions, Quiet())
+            .at(0);
+    const FittedParameter& b = r.parameters[0];
+    const FittedParameter& kappa = r.parameters[1];
+    cover_b += b.ci.lower <= kExponentTrue && kExponentTrue <= b.ci.upper;
+    cover_k += kappa.ci.lower <= kKappaTrue && kKappaTrue <= kappa.ci.upper;
+    sum_b += b.estimate;
+    sum_b2 += b.estimate * b.estimate;
+    sum_se += b.standard_error;
+    std::printf("lab %d: b %.4f [%.4f, %.4f], kappa %.1f [%.1f, %.1f]\n", k, b.estimate,
+                b.ci.lower, b.ci.upper, kappa.estimate, kappa.ci.lower, kappa.ci.upper);
+  }
+  const double mean = sum_b / n;
+  const double sd = n > 1 ? std::sqrt((sum_b2 - n * mean * mean) / (n - 1)) : 0.0;
+  std::printf(
+      "%d labs: b covered %d, kappa covered %d; mean b %.4f (true %.2f), "
+      "mean se %.4f, sd of estimates %.4f\n",
+      n, cover_b, cover_k, mean, kExponentTrue, sum_se / n, sd);
+  const double floor = 0.95 - 2.33 * std::sqrt(0.95 * 0.05 / n);
+  EXPECT_GE(cover_b, floor * n);
+  EXPECT_GE(cover_k, floor * n);
 }
 
 // The virtual operators repeat the task as the lab's did: with a learning
