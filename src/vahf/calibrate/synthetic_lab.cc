@@ -31,10 +31,8 @@ void ReadStatedValues(const scene::JsonNode& params, scene::Scene* scene,
   for (const auto& item : params.json().items()) {
     const scene::JsonNode value = params.Required(item.key());
     const scene::ParamSpec& p = *scene::FindParam(item.key());
-    const bool choice = choices && p.rule == scene::ParamRule::kChoice;
-    if (!p.real && !choice)
-      value.Fail(choices ? "a synthetic lab states real-valued parameters and choices"
-                         : "a synthetic lab's condition states real-valued parameters");
+    if (!p.real && p.rule != scene::ParamRule::kChoice)
+      value.Fail("a synthetic lab states real-valued parameters and choices");
     scene::ReadParamValue(p, value, &scene->params);
     if (p.real)
       values->emplace_back(item.key(), p.real(scene->params));
@@ -71,11 +69,18 @@ std::vector<SyntheticCondition> ReadConditions(const scene::JsonNode& list,
       // The stated values hold in every condition; its own come after them.
       for (const auto& [key, value] : spec.truth)
         scene::FindParam(key)->real(entry.scene.params) = value;
+      for (const auto& [key, value] : spec.choices)
+        scene::FindParam(key)->text(entry.scene.params) = value;
       const std::string violation = scene::ParameterViolation(entry.scene);
       if (!violation.empty()) own->Fail("with the generator's parameters: " + violation);
     }
-    if (auto params = c.Optional("parameters"))
-      ReadStatedValues(*params, &entry.scene, &entry.parameters, nullptr);
+    if (auto params = c.Optional("parameters")) {
+      std::vector<std::pair<std::string, std::string>> choices;
+      ReadStatedValues(*params, &entry.scene, &entry.parameters, &choices);
+      if (!choices.empty())
+        params->Required(choices.front().first)
+            .Fail("a condition states real-valued parameters; a choice is the scene's");
+    }
     for (const scene::OperatorEntry& op : spec.operators) {
       const std::string reach =
           entry.scene.params.reach.Violation(op.arm_length, op.height);
