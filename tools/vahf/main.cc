@@ -223,8 +223,12 @@ int Synthesize(const SynthesizeArgs& a) {
   vahf::experiment::InstallInterruptHandler();
   const vahf::data::LabDataset lab = vahf::calibrate::GenerateSyntheticLab(spec, options);
   vahf::data::WriteLabDataset(lab, a.out);
-  std::printf("%s: %zu trials of %zu operator(s) written to %s/dataset.json\n",
-              spec.name.c_str(), lab.trials.size(), spec.operators.size(), a.out.c_str());
+  std::string segments;
+  if (!lab.segments.empty())
+    segments = " and " + std::to_string(lab.segments.size()) + " segment row(s)";
+  std::printf("%s: %zu trials of %zu operator(s)%s written to %s/dataset.json\n",
+              spec.name.c_str(), lab.trials.size(), spec.operators.size(),
+              segments.c_str(), a.out.c_str());
   return 0;
 }
 
