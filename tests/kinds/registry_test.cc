@@ -107,6 +107,15 @@ std::vector<std::string> DocumentedKinds() {
 
 // Every registered kind has a shipped example and a line in docs/kinds.md, in
 // the registry's order; no shipped experiment names a kind that is not there.
+TEST(KindRegistryTest, TheHandbooksReadTheOneKindThatTimesThePartsForOperators) {
+  std::vector<std::string> timing;
+  for (const Kind& k : Kinds())
+    if (k.times_the_parts) timing.push_back(k.name);
+  EXPECT_EQ(timing, std::vector<std::string>{"assembly_time"});
+  // Only a design of cycles has cycles to time.
+  EXPECT_NE(FindKind("assembly_time").design, nullptr);
+}
+
 TEST(KindRegistryTest, TheShippedExperimentsAndTheDocsNameTheRegisteredKinds) {
   const std::vector<std::string> names = KindNames();
   EXPECT_EQ(ShippedKinds(), std::set<std::string>(names.begin(), names.end()));

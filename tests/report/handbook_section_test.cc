@@ -78,7 +78,7 @@ class HandbookSectionTest : public ::testing::Test {
 };
 
 TEST_F(HandbookSectionTest, EachPartHasItsClassesTimesAndTheSources) {
-  const Section s = HandbookSection(run_, bd_, mtm_);
+  const Section s = HandbookSection(&run_.parts[0], bd_, mtm_);
   EXPECT_EQ(s.kind, "handbooks");
   EXPECT_TRUE(s.summary.at("claims").empty());
   for (const char* id : {"**S1**", "**S2**", "**S3**"})
@@ -115,7 +115,7 @@ TEST_F(HandbookSectionTest, EachPartHasItsClassesTimesAndTheSources) {
 
 TEST_F(HandbookSectionTest, AnEmptyMtmTableShowsNoTimeAndSaysWhy) {
   ASSERT_TRUE(mtm_.rows.empty());  // as shipped
-  const Section s = HandbookSection(run_, bd_, mtm_);
+  const Section s = HandbookSection(&run_.parts[0], bd_, mtm_);
   EXPECT_THAT(s.markdown, HasSubstr("No MTM-1 time is shown"));
   EXPECT_THAT(s.markdown, HasSubstr("Unverified"));
 }
@@ -129,16 +129,15 @@ TEST_F(HandbookSectionTest, AnMtmRowShowsItsTimeAndSource) {
       "code,fit_class,symmetry,handling,tmu,source\n" + code + "," + code.substr(1, 1) +
           "," + code.substr(2, code.size() - 3) + ",easy,10,T1\n",
       "test.csv");
-  const Section s = HandbookSection(run_, bd_, mtm);
+  const Section s = HandbookSection(&run_.parts[0], bd_, mtm);
   EXPECT_THAT(s.markdown,
               HasSubstr(fmt::format("{:.2f} (T1)", 10 * data::kSecondsPerTmu)));
   EXPECT_THAT(s.markdown, Not(HasSubstr("No MTM-1 time is shown")));
 }
 
 TEST_F(HandbookSectionTest, WithoutAnAssemblyTimeExperimentItSaysSo) {
-  run_.parts[0].file = &paper_;  // not an assembly_time experiment
-  const Section s = HandbookSection(run_, bd_, mtm_);
-  EXPECT_THAT(s.markdown, HasSubstr("no assembly_time experiment"));
+  const Section s = HandbookSection(nullptr, bd_, mtm_);
+  EXPECT_THAT(s.markdown, HasSubstr("no experiment that times the parts"));
   EXPECT_THAT(s.markdown, HasSubstr("**S2**"));
 }
 

@@ -18,6 +18,7 @@ Kind AssemblyTimeKind() {
   k.check = CheckOneScene;
   k.design = experiment::AssemblyTimeRun;
   k.analyse = report::AssemblyTimeSection;
+  k.times_the_parts = true;
   return k;
 }
 

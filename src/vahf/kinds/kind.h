@@ -66,6 +66,10 @@ struct Kind {
   // so); false for a kind whose cycles are set otherwise (a paper run: each
   // listed experiment's; stability: each case's seeds).
   bool cycles_per_condition = true;
+  // Its cycles time each part of the scene's sequence for operators as a lab
+  // records them (assembly_time): a paper run's handbooks section reads the
+  // first such experiment it lists.
+  bool times_the_parts = false;
 };
 
 // Every kind, in the order of kinds.def (docs/kinds.md's).

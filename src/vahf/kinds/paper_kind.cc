@@ -40,7 +40,10 @@ experiment::ExperimentRun PaperRun(const scene::ExperimentFile& file,
 std::vector<report::Section> PaperSections(const experiment::ExperimentRun& run) {
   const PaperInput& in = run.file->Input<PaperInput>();
   if (!in.handbooks) return {};
-  return {report::HandbookSection(run, in.handbooks->boothroyd_dewhurst,
+  const experiment::ExperimentRun* times = nullptr;
+  for (const experiment::ExperimentRun& part : run.parts)
+    if (!times && FindKind(part.file->kind).times_the_parts) times = &part;
+  return {report::HandbookSection(times, in.handbooks->boothroyd_dewhurst,
                                   in.handbooks->mtm1_position)};
 }
 

@@ -66,12 +66,6 @@ std::string Spread(const stats::Summary& s) {
                           : std::string("-"));
 }
 
-const experiment::ExperimentRun* AssemblyTimePart(const experiment::ExperimentRun& run) {
-  for (const experiment::ExperimentRun& p : run.parts)
-    if (p.file->kind == "assembly_time") return &p;
-  return nullptr;
-}
-
 // One part's row in the Markdown, the CSV and the summary.
 void DescribePart(const experiment::ExperimentRun& at, std::size_t position,
                   const data::BdInsertionTable& bd, const data::MtmPositionTable& mtm,
@@ -130,7 +124,7 @@ void DescribePart(const experiment::ExperimentRun& at, std::size_t position,
 
 }  // namespace
 
-Section HandbookSection(const experiment::ExperimentRun& run,
+Section HandbookSection(const experiment::ExperimentRun* times,
                         const data::BdInsertionTable& bd,
                         const data::MtmPositionTable& mtm) {
   Section out;
@@ -139,10 +133,11 @@ Section HandbookSection(const experiment::ExperimentRun& run,
       "## Handbooks: virtual insertion time beside Boothroyd-Dewhurst and "
       "MTM-1\n\n";
   nlohmann::json parts = nlohmann::json::array();
-  const experiment::ExperimentRun* at = AssemblyTimePart(run);
+  const experiment::ExperimentRun* at = times;
   if (!at) {
     out.markdown +=
-        "The run has no assembly_time experiment: no part's virtual "
+        "The run has no experiment that times the parts (assembly_time): no part's "
+        "virtual "
         "insertion time to set beside the handbooks.\n\n";
   } else {
     out.markdown += fmt::format(

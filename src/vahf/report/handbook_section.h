@@ -1,5 +1,5 @@
 // The handbooks beside the model (docs/handbooks.md): each part of a paper
-// run's assembly_time experiment classed by Boothroyd-Dewhurst's manual
+// run's experiment that times the parts (assembly_time) classed by Boothroyd-Dewhurst's manual
 // insertion chart and MTM-1's Position element from the scene's geometry
 // (data/handbook_classification.h), with the handbook's time and its source,
 // beside the part's virtual insertion time in the run: from the part's first
@@ -14,9 +14,10 @@
 
 namespace vahf::report {
 
-// `run` is a paper run: the section reads its first part of kind
-// "assembly_time" (and says so when there is none).
-Section HandbookSection(const experiment::ExperimentRun& run,
+// `times`: the experiment of a paper run whose cycles time each part for its
+// operators (an assembly_time experiment; the kind registry says which);
+// null when the run has none, which the section says.
+Section HandbookSection(const experiment::ExperimentRun* times,
                         const data::BdInsertionTable& bd,
                         const data::MtmPositionTable& mtm);
 
