@@ -1,6 +1,6 @@
 // The handbooks beside the model (docs/handbooks.md): each part of a paper
-// run's experiment that times the parts (assembly_time) classed by Boothroyd-Dewhurst's manual
-// insertion chart and MTM-1's Position element from the scene's geometry
+// run's experiment that times the parts (assembly_time) classed by Boothroyd-Dewhurst's
+// manual insertion chart and MTM-1's Position element from the scene's geometry
 // (data/handbook_classification.h), with the handbook's time and its source,
 // beside the part's virtual insertion time in the run: from the part's first
 // contact with a fixed part to its completion (sim::TrialResult), mean and
