@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "support/quiet_runner.h"
 #include "vahf/calibrate/synthetic_lab.h"
 #include "vahf/core/error.h"
 #include "vahf/experiment/design.h"
@@ -64,12 +65,7 @@ CalibrationResult Fit(const scene::Scene& scene, const data::LabDataset& lab,
   return stages.at(0);
 }
 
-experiment::RunnerOptions Quiet() {
-  experiment::RunnerOptions o;
-  o.threads = 2;
-  o.progress = false;
-  return o;
-}
+experiment::RunnerOptions Quiet() { return testing::QuietRunner(); }
 
 TEST(Calibration, RecoversKappaFromASyntheticLabWithinItsInterval) {
   const scene::Scene scene =

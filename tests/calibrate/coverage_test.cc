@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "support/quiet_runner.h"
 #include "vahf/calibrate/calibration.h"
 #include "vahf/calibrate/synthetic_lab.h"
 #include "vahf/scene/parameter_table.h"
@@ -67,12 +68,7 @@ constexpr int kLabSegmentCycles = 10;  // per segment of the lab's hour
 constexpr int kVirtualTrials = 10;     // per operator and segment, per evaluation
 const scene::FatigueDesign kHour = {60.0, 4, 4};
 
-experiment::RunnerOptions Quiet() {
-  experiment::RunnerOptions o;
-  o.threads = 2;
-  o.progress = false;
-  return o;
-}
+experiment::RunnerOptions Quiet() { return testing::QuietRunner(); }
 
 SyntheticLabSpec CoverageLab(std::uint64_t seed) {
   SyntheticLabSpec spec;

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "support/quiet_runner.h"
 #include "vahf/calibrate/calibration.h"
 #include "vahf/calibrate/synthetic_lab.h"
 #include "vahf/core/error.h"
@@ -65,12 +66,7 @@ CalibrationSpec ExponentAndKappa() {
   return spec;
 }
 
-experiment::RunnerOptions Quiet() {
-  experiment::RunnerOptions o;
-  o.threads = 2;
-  o.progress = false;
-  return o;
-}
+experiment::RunnerOptions Quiet() { return testing::QuietRunner(); }
 
 TEST(LearningFit, TheLabRecordsItsOperatorsPractice) {
   const data::LabDataset lab = GenerateSyntheticLab(PractisedLab(3), Quiet());

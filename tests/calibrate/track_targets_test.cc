@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "support/quiet_runner.h"
 #include "support/standing_operator.h"
 #include "vahf/calibrate/calibration.h"
 #include "vahf/calibrate/targets.h"
@@ -419,12 +420,7 @@ TEST(TrackTargets, AddAtInstant) {
 
 // --------------------------------------------------------------- calibrate
 
-experiment::RunnerOptions Quiet() {
-  experiment::RunnerOptions o;
-  o.threads = 2;
-  o.progress = false;
-  return o;
-}
+experiment::RunnerOptions Quiet() { return testing::QuietRunner(); }
 
 CalibrationSpec FitTo(const std::string& parameter, double start, double lower,
                       double upper, const TargetSpec& target) {

@@ -94,13 +94,8 @@ std::vector<SyntheticCondition> ReadConditions(const scene::JsonNode& list,
 // "fatigue": the hour of work's design, as the fatigue kind reads it, and
 // the cycles each segment records.
 SyntheticFatigue ReadSyntheticFatigue(const scene::JsonNode& f) {
-  f.ExpectObject({"duration_min", "segments", "pilot_cycles", "trials"});
   SyntheticFatigue out;
-  if (auto d = f.Optional("duration_min")) out.design.duration_min = d->Positive();
-  if (auto s = f.Optional("segments"))
-    out.design.segments = static_cast<int>(s->Integer(1, 1000));
-  if (auto p = f.Optional("pilot_cycles"))
-    out.design.pilot_cycles = static_cast<int>(p->Integer(0, 10'000'000));
+  out.design = scene::ReadFatigueObject(f, {"trials"});
   out.trials = static_cast<int>(f.Required("trials").Integer(1, 100'000));
   return out;
 }

@@ -8,6 +8,7 @@
 
 #include "vahf/data/handbook_classification.h"
 #include "vahf/report/markdown.h"
+#include "vahf/report/section.h"
 #include "vahf/stats/summary.h"
 
 namespace vahf::report {
@@ -57,13 +58,10 @@ std::string Seconds(const std::optional<double>& s, const std::string& source) {
   return s ? fmt::format("{:.2f} ({})", *s, source) : std::string("none");
 }
 
-// "mean ± sd (n = N), 95 % [lo, hi]".
+// "mean [lo, hi] (sd s, n = N)": MeanCi with the spread and the count.
 std::string Spread(const stats::Summary& s) {
   if (!s.mean) return "- (n = 0)";
-  return fmt::format("{:.3f} ± {:.3f} (n = {}), 95 % {}", *s.mean, s.sd.value_or(0.0),
-                     s.n,
-                     s.ci ? fmt::format("[{:.3f}, {:.3f}]", s.ci->lower, s.ci->upper)
-                          : std::string("-"));
+  return fmt::format("{} (sd {:.3f}, n = {})", MeanCi(s), s.sd.value_or(0.0), s.n);
 }
 
 // One part's row in the Markdown, the CSV and the summary.
@@ -147,8 +145,9 @@ Section HandbookSection(const experiment::ExperimentRun* times,
         "virtual insertion time is that of the handbooks' insertion: from the first "
         "decision instant at which the part touches a fixed part (the part at the hole; "
         "acquisition and transport, the handbooks' handling and Move/Reach, are left "
-        "out) to its completion, mean ± sample sd (n completed trials that touched), "
-        "95 % t interval, over all operators and cycles of the experiment; the whole "
+        "out) to its completion: mean [95 % t interval] (sample sd, n completed "
+        "trials that touched), over all operators and cycles of the experiment; the "
+        "whole "
         "part trial (start to completion) beside it. Times in seconds; each handbook "
         "time with its source id.\n\n",
         at->file->name, at->file->scene_path);

@@ -28,17 +28,22 @@ std::vector<OperatorEntry> ReadOperators(const JsonNode& node, const Scene& scen
   return out;
 }
 
-FatigueDesign ReadFatigue(const JsonNode& root) {
+FatigueDesign ReadFatigueObject(const JsonNode& f, const std::vector<std::string>& also) {
+  std::vector<std::string> keys = {"duration_min", "segments", "pilot_cycles"};
+  keys.insert(keys.end(), also.begin(), also.end());
+  f.ExpectObject(keys);
   FatigueDesign out;
-  const auto f = root.Optional("fatigue");
-  if (!f) return out;
-  f->ExpectObject({"duration_min", "segments", "pilot_cycles"});
-  if (auto d = f->Optional("duration_min")) out.duration_min = d->Positive();
-  if (auto s = f->Optional("segments"))
+  if (auto d = f.Optional("duration_min")) out.duration_min = d->Positive();
+  if (auto s = f.Optional("segments"))
     out.segments = static_cast<int>(s->Integer(1, 1000));
-  if (auto p = f->Optional("pilot_cycles"))
+  if (auto p = f.Optional("pilot_cycles"))
     out.pilot_cycles = static_cast<int>(p->Integer(0, 10'000'000));
   return out;
+}
+
+FatigueDesign ReadFatigue(const JsonNode& root) {
+  const auto f = root.Optional("fatigue");
+  return f ? ReadFatigueObject(*f, {}) : FatigueDesign{};
 }
 
 const std::vector<std::string>& FitQuantities() {

@@ -37,6 +37,9 @@ struct FatigueDesign {
 
 // "fatigue" of the file's root object; the defaults when it has none.
 FatigueDesign ReadFatigue(const JsonNode& root);
+// A fatigue object {"duration_min", "segments", "pilot_cycles"}, which may
+// also hold the keys `also` (read by the caller).
+FatigueDesign ReadFatigueObject(const JsonNode& f, const std::vector<std::string>& also);
 
 // A lab summary a calibration fits (calibrate/targets.h): a quantity of one
 // part ("all": whole cycles), over all the lab's operators or each one's.
