@@ -101,16 +101,9 @@ std::optional<InsertionFit> InsertionFitOf(const scene::Scene& scene,
                                            std::size_t position, std::string* why) {
   const scene::Part& part =
       scene.parts.at(static_cast<std::size_t>(scene.sequence.at(position)));
-  std::optional<geometry::RadialFit> best;
-  const scene::Part* other = nullptr;
-  for (const scene::FixedPart& f : scene::FixedPartsAt(scene, position))
-    if (const auto fit = geometry::SmallestRadialFit(part.shape, part.target.Transform(),
-                                                     f.part->shape, f.pose))
-      if (!best || fit->clearance < best->clearance) {
-        best = fit;
-        other = f.part;
-      }
-  if (!best) {
+  const std::optional<scene::TightFit> tight =
+      scene::TightestFit(part, scene::FixedPartsAt(scene, position));
+  if (!tight) {
     *why = fmt::format(
         "{} has no radial fit with a fixed part at its target (no coaxial cylindrical "
         "faces facing each other)",
@@ -118,8 +111,10 @@ std::optional<InsertionFit> InsertionFitOf(const scene::Scene& scene,
     return std::nullopt;
   }
   InsertionFit fit;
-  fit.radial_clearance = best->clearance;
-  fit.diameter = 2 * best->bore_radius;
+  const geometry::RadialFit& best = tight->fit;
+  const scene::Part* other = tight->with;
+  fit.radial_clearance = best.clearance;
+  fit.diameter = 2 * best.bore_radius;
   fit.chamfered = HasConicalEdge(part.shape) || HasConicalEdge(other->shape);
   fit.rotationally_symmetric =
       std::holds_alternative<geometry::RevolvedProfile>(part.shape);

@@ -7,9 +7,11 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "vahf/geometry/clearance.h"
 #include "vahf/geometry/shape.h"
 #include "vahf/human/operator_model.h"
 #include "vahf/scene/parameters.h"
@@ -83,5 +85,14 @@ struct FixedPart {
   Eigen::Isometry3d pose;
 };
 std::vector<FixedPart> FixedPartsAt(const Scene& scene, std::size_t position);
+
+// The tightest radial fit (geometry::SmallestRadialFit) of `part` at its
+// target with one of `fixed`, and that part; none when no fixed part fits it.
+struct TightFit {
+  geometry::RadialFit fit;
+  const Part* with = nullptr;
+};
+std::optional<TightFit> TightestFit(const Part& part,
+                                    const std::vector<FixedPart>& fixed);
 
 }  // namespace vahf::scene

@@ -205,6 +205,16 @@ std::vector<FixedPart> FixedPartsAt(const Scene& scene, std::size_t position) {
   return out;
 }
 
+std::optional<TightFit> TightestFit(const Part& part,
+                                    const std::vector<FixedPart>& fixed) {
+  std::optional<TightFit> best;
+  for (const FixedPart& f : fixed)
+    if (const auto fit = geometry::SmallestRadialFit(part.shape, part.target.Transform(),
+                                                     f.part->shape, f.pose))
+      if (!best || fit->clearance < best->fit.clearance) best = TightFit{*fit, f.part};
+  return best;
+}
+
 const char* RoleName(Role role) {
   switch (role) {
     case Role::kBase:

@@ -112,10 +112,8 @@ void SetContact(const scene::Scene& scene, const scene::Part& part,
   const auto& params = scene.params;
   // The penetration bound: a fraction of the smallest radial clearance
   // between the part at its target and a fixed part (none: no bound).
-  for (const FixedPart& f : fixed)
-    if (const auto gap = geometry::SmallestRadialClearance(
-            part.shape, part.target.Transform(), f.part->shape, f.pose))
-      if (m->clearance == 0 || *gap < m->clearance) m->clearance = *gap;
+  if (const auto tight = scene::TightestFit(part, fixed))
+    m->clearance = tight->fit.clearance;
   m->penetration_bound = params.contact.penetration_fraction * m->clearance;
   if (fixed.empty()) return;
   contact::ContactSetup setup;
