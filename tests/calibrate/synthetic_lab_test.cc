@@ -124,6 +124,9 @@ TEST(SyntheticLab, EachBadValueIsOneInputErrorNamingItsKey) {
        "/conditions/0/parameters/guidance~1kappa"},
       {R"(, "conditions": [{"name": "y", "scene": "nowhere.json"}])",
        "/conditions/0/scene"},
+      // A choice (a learning model) is the generator's, for every condition.
+      {R"(, "conditions": [{"name": "y", "parameters": {"learning/model": "de_jong"}}])",
+       "/conditions/0/parameters/learning~1model"},
       // The rule D1 < D2 < D3 for operator b (arm 0.76 m, stature 1.75 m:
       // D1 = 0.684 m, D2 = 0.6825 m), which the scene's own operator keeps.
       {R"(, "conditions": [{"name": "y", "parameters": {"reach/d1_arm_fraction": 0.9}}])",

@@ -1447,6 +1447,9 @@ TEST(CompareErrorsTest, BadSegmentsAndConditions) {
   ExpectError(doc, "/quantities/2/by",
               "a segment's value is the lab's over all operators");
   doc = ComparePaper();
+  doc["quantities"][2]["by"] = "repetition";
+  ExpectError(doc, "/quantities/2/by", "which has no repetitions");
+  doc = ComparePaper();
   doc["quantities"][1]["condition"] = "";
   ExpectError(doc, "/quantities/1/condition", "leave the key out to read any");
   doc["quantities"][1]["condition"] = 3;
