@@ -354,6 +354,38 @@ TEST(Calibration, ReachThatMovesNoTargetIsNotIdentifiedAndKappaKeepsItsInterval)
   EXPECT_LT(k.ci.upper, 400.0);
 }
 
+// With "intervals": "profile" the same fit gives kappa its profile interval
+// too, the D's none (not identified, so not re-fitted either): the cost of
+// kappa alone is nearly quadratic here, so the profile lies within a few
+// percent of the Wald interval's ends and holds the truth, and no re-fit
+// found a cost below the estimate's.
+TEST(Calibration, AProfileStageGivesTheIdentifiedTheirProfileIntervalsOnly) {
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const data::LabDataset lab = GenerateSyntheticLab(ReachLab(33, FlatReach()), Quiet());
+  CalibrationSpec spec =
+      ReachAndKappa({{"reach/d1_arm_fraction", 1.1, 1.0, 1.3, "/parameters/0"},
+                     {"reach/d2_height_fraction", 0.62, 0.6, 0.7, "/parameters/1"},
+                     {"reach/d3_height_fraction", 0.8, 0.75, 0.9, "/parameters/2"}});
+  spec.intervals = "profile";
+  const CalibrationResult r = Fit(scene, lab, spec, "test", 7, 12, Quiet());
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_FALSE(r.parameters[static_cast<std::size_t>(i)].identified);
+    EXPECT_FALSE(r.parameters[static_cast<std::size_t>(i)].has_profile);
+  }
+  const FittedParameter& k = r.parameters[3];
+  ASSERT_TRUE(k.has_profile);
+  EXPECT_TRUE(k.profile_reached);
+  EXPECT_FALSE(k.profile_open_lower || k.profile_open_upper);
+  EXPECT_LE(k.profile.lower, kKappaTrue);
+  EXPECT_GE(k.profile.upper, kKappaTrue);
+  const double half = k.ci.upper - k.estimate;
+  EXPECT_NEAR(k.profile.upper - k.estimate, half, 0.15 * half);
+  EXPECT_NEAR(k.estimate - k.profile.lower, half, 0.15 * half);
+  EXPECT_GE(k.profile_points.size(), 3u);
+  EXPECT_GE(r.profile_least_rise, -0.1);
+}
+
 // A start that breaks the rule is an input error naming the experiment
 // file, the start and the operator.
 TEST(Calibration, AStartThatBreaksTheReachRuleIsNamed) {

@@ -127,6 +127,7 @@ CalibrationSpec JointFit() {
   // The model is the lab: no outliers to down-weight, and a robust loss
   // would bend the covariance away from the least-squares one under test.
   spec.loss = "none";
+  spec.intervals = "profile";
   return spec;
 }
 
@@ -147,7 +148,9 @@ int BinomialLowerBound(int n, double p, double alpha) {
 
 struct Tally {
   int identified = 0, not_identified = 0, covered = 0, no_interval = 0;
-  std::vector<double> estimates, standard_errors;
+  int wald_covered = 0;  // by the Wald interval, for comparison
+  // The profile interval's half-width / 1.96: the standard error it implies.
+  std::vector<double> estimates, standard_errors, wald_standard_errors;
 };
 
 double Mean(const std::vector<double>& v) {
@@ -207,13 +210,18 @@ TEST(Coverage, DISABLED_JointIntervalsOfReachKappaAndAmaxHoldTheTruth) {
   const char* env = std::getenv("VAHF_COVERAGE_DATASETS");
   const bool full = env != nullptr;
   const int datasets = full ? std::max(1, std::atoi(env)) : 3;
+  // VAHF_COVERAGE_FIRST=K starts at dataset K, so that a full run can be
+  // split (its CSVs concatenated; the checks then need the whole).
+  const char* first_env = std::getenv("VAHF_COVERAGE_FIRST");
+  const int first = first_env ? std::max(0, std::atoi(first_env)) : 0;
   const char* csv_path = std::getenv("VAHF_COVERAGE_CSV");
   const bool verbose = std::getenv("VAHF_COVERAGE_VERBOSE") != nullptr;
   std::ofstream csv;
   if (csv_path) {
     csv.open(csv_path);
-    csv << "dataset,parameter,truth,estimate,standard_error,lower,upper,identified,"
-           "covers,evaluations,seconds\n";
+    csv << "dataset,parameter,truth,estimate,standard_error,wald_lower,wald_upper,"
+           "profile_lower,profile_upper,identified,covers,wald_covers,evaluations,"
+           "seconds\n";
   }
   const scene::Scene scene =
       scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
@@ -222,7 +230,7 @@ TEST(Coverage, DISABLED_JointIntervalsOfReachKappaAndAmaxHoldTheTruth) {
   double seconds = 0;
   double distance = 0;  // sum of the datasets' squared Mahalanobis distances
   int dof = 0, bad_covariance = 0;
-  for (int d = 0; d < datasets; ++d) {
+  for (int d = first; d < first + datasets; ++d) {
     const data::LabDataset lab =
         GenerateSyntheticLab(CoverageLab(5000 + static_cast<std::uint64_t>(d)), Quiet());
     ASSERT_EQ(lab.segments.size(), static_cast<std::size_t>(kHour.segments));
@@ -241,6 +249,12 @@ TEST(Coverage, DISABLED_JointIntervalsOfReachKappaAndAmaxHoldTheTruth) {
             "  %-45s lab %.4g (sd %.3g)  start %.4g  fit %.4g (sd %.3g)  r %.2f\n",
             t.target.label.c_str(), t.target.lab.value, std::sqrt(t.target.lab.variance),
             t.start.value, t.fitted.value, std::sqrt(t.fitted.variance), t.residual);
+      for (const FittedParameter& f : r.parameters) {
+        std::printf("  profile of %s:", f.name.c_str());
+        for (const auto& [v, rise] : f.profile_points)
+          std::printf(" (%.5g, %.3g)", v, rise);
+        std::printf("\n");
+      }
     }
     int k = 0;
     const double d2 = Mahalanobis(r, &k);
@@ -256,27 +270,37 @@ TEST(Coverage, DISABLED_JointIntervalsOfReachKappaAndAmaxHoldTheTruth) {
     for (std::size_t i = 0; i < kTruth.size(); ++i) {
       const FittedParameter& f = r.parameters[i];
       const double truth = kTruth[i].value;
-      const bool has_interval = f.identified && std::isfinite(f.standard_error);
-      const bool covers = has_interval && f.ci.lower <= truth && truth <= f.ci.upper;
+      const bool has_interval = f.identified && f.has_profile && f.profile_reached;
+      const bool covers =
+          has_interval && f.profile.lower <= truth && truth <= f.profile.upper;
+      const bool wald_covers = f.identified && f.ci.lower <= truth && truth <= f.ci.upper;
       Tally& t = tally[i];
       if (!f.identified) {
         ++t.not_identified;
       } else {
         ++t.identified;
         t.covered += covers;
+        t.wald_covered += wald_covers;
         t.no_interval += !has_interval;
         t.estimates.push_back(f.estimate);
-        if (has_interval) t.standard_errors.push_back(f.standard_error);
+        if (has_interval)
+          t.standard_errors.push_back((f.profile.upper - f.profile.lower) / (2 * 1.96));
+        if (std::isfinite(f.standard_error))
+          t.wald_standard_errors.push_back(f.standard_error);
       }
-      std::printf("  %-26s %10.5g  se %9.3g  [%10.5g, %10.5g]  %s\n", f.name.c_str(),
-                  f.estimate, f.standard_error, f.ci.lower, f.ci.upper,
-                  !f.identified ? "not identified"
-                  : covers      ? "holds"
-                                : "misses");
+      std::printf(
+          "  %-26s %10.5g  se %9.3g  Wald [%10.5g, %10.5g]  profile [%10.5g, %10.5g]  "
+          "%s\n",
+          f.name.c_str(), f.estimate, f.standard_error, f.ci.lower, f.ci.upper,
+          f.profile.lower, f.profile.upper,
+          !f.identified ? "not identified"
+          : covers      ? "holds"
+                        : "misses");
       if (csv_path)
         csv << d << ',' << f.name << ',' << truth << ',' << f.estimate << ','
             << f.standard_error << ',' << f.ci.lower << ',' << f.ci.upper << ','
-            << f.identified << ',' << covers << ',' << r.evaluations << ',' << r.seconds
+            << f.profile.lower << ',' << f.profile.upper << ',' << f.identified << ','
+            << covers << ',' << wald_covers << ',' << r.evaluations << ',' << r.seconds
             << '\n';
     }
     csv.flush();
@@ -284,27 +308,26 @@ TEST(Coverage, DISABLED_JointIntervalsOfReachKappaAndAmaxHoldTheTruth) {
   }
   std::printf("\n%d datasets, %.1f s of fitting (%.1f s per fit)\n", datasets, seconds,
               seconds / datasets);
-  std::printf("%-26s %9s %7s %9s %10s %10s %10s %10s\n", "parameter", "truth", "not id.",
-              "covered", "coverage", "mean est.", "mean se", "sd of est.");
+  std::printf("%-26s %9s %7s %9s %10s %10s %10s %10s %10s %12s\n", "parameter", "truth",
+              "not id.", "covered", "coverage", "mean est.", "profile se", "sd of est.",
+              "Wald se", "Wald covered");
   for (std::size_t i = 0; i < kTruth.size(); ++i) {
     const Tally& t = tally[i];
-    std::printf("%-26s %9.5g %7d %4d of %-2d %9.1f%% %10.5g %10.4g %10.4g\n",
+    std::printf("%-26s %9.5g %7d %4d of %-2d %9.1f%% %10.5g %10.4g %10.4g %10.4g %12d\n",
                 kTruth[i].name, kTruth[i].value, t.not_identified, t.covered,
                 t.identified,
                 t.identified ? 100.0 * t.covered / t.identified : std::nan(""),
-                Mean(t.estimates), Mean(t.standard_errors), Sd(t.estimates));
+                Mean(t.estimates), Mean(t.standard_errors), Sd(t.estimates),
+                Mean(t.wald_standard_errors), t.wald_covered);
   }
-  // Jointly: too narrow a covariance makes the sum of squared distances
-  // too large, too wide a one too small; each side fails with probability
-  // 0.1 % with a right one (z = 3.09).
+  // The Wald covariance's joint check, printed, not asserted: on this
+  // design it is too narrow (the ridge; docs/calibration.md, Joint
+  // coverage), which is why the intervals under test are the profile ones.
   const double low = ChiSquareQuantile(dof, -3.09), high = ChiSquareQuantile(dof, 3.09);
   std::printf(
-      "sum of squared Mahalanobis distances %.2f on %d degrees of freedom "
-      "(99.8 %% of chi^2: [%.1f, %.1f])\n",
-      distance, dof, low, high);
-  EXPECT_EQ(bad_covariance, 0);
-  EXPECT_GT(distance, low);
-  EXPECT_LT(distance, high);
+      "Wald covariance: sum of squared Mahalanobis distances %.2f on %d degrees of "
+      "freedom (99.8 %% of chi^2: [%.1f, %.1f]); %d without a positive covariance\n",
+      distance, dof, low, high, bad_covariance);
   for (std::size_t i = 0; i < kTruth.size(); ++i) {
     const Tally& t = tally[i];
     const std::string name = kTruth[i].name;
@@ -319,8 +342,8 @@ TEST(Coverage, DISABLED_JointIntervalsOfReachKappaAndAmaxHoldTheTruth) {
                           : BinomialLowerBound(t.identified, 0.95, 0.01);
     EXPECT_GE(t.covered, need) << name << ": " << t.covered << " of " << t.identified;
     EXPECT_EQ(t.no_interval, 0) << name;
-    // The standard errors are the estimates' spread: a reported interval
-    // that is too narrow or too wide by a factor of two fails.
+    // The profile intervals' implied standard errors are the estimates'
+    // spread: intervals too narrow or too wide by a factor of two fail.
     if (t.estimates.size() >= 5) {
       const double ratio = Mean(t.standard_errors) / Sd(t.estimates);
       EXPECT_GT(ratio, 0.5) << name << ": mean se against the estimates' sd";

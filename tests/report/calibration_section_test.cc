@@ -95,5 +95,36 @@ TEST(CalibrationSection, NamesWhatTheTargetsDoNotDetermineAndDrawsTheScan) {
   EXPECT_TRUE(s.summary["parameters"][3]["identified"].get<bool>());
 }
 
+// With "intervals": "profile", each identified parameter's profile points
+// are a table and a plot of their own, an end not reached says so, and a
+// re-fit that found a lower cost than the estimate's is named.
+TEST(CalibrationSection, AProfileStageDrawsTheProfileAndNamesAFitStoppedShort) {
+  scene::ExperimentFile file =
+      kinds::LoadExperiment(Path("experiments/calibrate_reach_synthetic.json"));
+  calibrate::CalibrationDesign& design = file.UpdInput<calibrate::CalibrationDesign>();
+  design.intervals = "profile";
+  const data::LabDataset lab =
+      data::LoadLabDataset(Path("data/synthetic_block/dataset.json"));
+  calibrate::CalibrationResult r = Result();
+  for (calibrate::FittedParameter& p : r.parameters) {
+    if (!p.identified) continue;
+    p.has_profile = true;
+    p.profile = {p.estimate * 0.95, p.estimate * 1.08};
+    p.profile_points = {
+        {p.estimate * 0.95, 1.92}, {p.estimate, 0}, {p.estimate * 1.08, 1.9}};
+  }
+  r.parameters[3].profile_reached = false;
+  r.profile_least_rise = -0.8;
+  const Section s = CalibrationSection(file, lab, {r});
+  EXPECT_EQ(TableNamed(s, "calibrate_profile.csv").rows(), 9u);  // 3 points, 3 identified
+  bool profile_plot = false;
+  for (const Plot& p : s.plots)
+    profile_plot = profile_plot || p.file == "plots/calibrate_profile.png";
+  EXPECT_TRUE(profile_plot);
+  for (const char* text : {"the others re-fitted", "(an end not reached: wider)",
+                           "A re-fit of the profile found a cost 0.8 below"})
+    EXPECT_NE(s.markdown.find(text), std::string::npos) << text << "\n" << s.markdown;
+}
+
 }  // namespace
 }  // namespace vahf::report

@@ -57,6 +57,8 @@ inline constexpr int kMaxRounds = 3;
 // halved: the rise of a cost of 1/2 sum r^2 that bounds the 95 % profile
 // interval.
 double ProfileRise();
+// Two-sided 95 % normal quantile, for intervals from the covariance.
+inline constexpr double kZ95 = 1.959963984540054;
 
 // The scene with `values` (one per spec parameter) set. Values that break a
 // rule tying parameters together (D1 < D2 < D3, say) are an InputError naming
@@ -77,9 +79,17 @@ struct FittedParameter {
   // gives the profile interval (ProfileBounds, rise chi^2_1(0.95) / 2), each
   // end open (the parameter's bound) when the cost stays within the rise up
   // to it.
+  // A Levenberg-Marquardt stage with "intervals": "profile" gives each
+  // identified parameter its profile interval too, the others re-fitted
+  // (profile_likelihood.h); `profile_points` are the (value, rise) it
+  // evaluated, the estimate's (0) included, in increasing value, and
+  // `profile_reached` is false where an end's search ran out of calls
+  // inside the rise (that end is then too near the estimate).
   bool has_profile = false;
   stats::Interval profile;
   bool profile_open_lower = false, profile_open_upper = false;
+  bool profile_reached = true;
+  std::vector<std::pair<double, double>> profile_points;
   // Whether the targets determine it (identifiability.h); when not, why,
   // and it has no standard error or interval.
   bool identified = true;
@@ -120,6 +130,10 @@ struct CalibrationResult {
   Eigen::MatrixXd jacobian;      // whitened, at the estimate (Levenberg-Marquardt)
   int noise_replicates = 0;      // replicates behind FittedParameter::mc_sd
   int refused = 0;               // points outside the valid region the solver asked for
+  // The least rise a profile re-fit found above the estimate's cost: below
+  // 0, a point of lower cost than the estimate, which the fit stopped short
+  // of (its intervals are then measured from too high a cost).
+  double profile_least_rise = 0;
   std::vector<FittedTarget> targets;
   bool converged = false;  // Ceres reported convergence in the last round
   int rounds = 0;

@@ -47,6 +47,12 @@ struct CalibrationDesign : scene::KindInputOf<CalibrationDesign> {
   // Other sets of virtual people the estimate is re-weighed on, for its
   // Monte Carlo spread (calibration.h, FittedParameter::mc_sd); 0: none.
   int noise_replicates = 4;
+  // Levenberg-Marquardt stages: "wald" gives each identified parameter the
+  // interval of the covariance at the estimate only; "profile" also gives
+  // its profile-likelihood interval, the others re-fitted at each value
+  // (profile_likelihood.h), which follows a curved valley where the Wald
+  // interval does not, at the cost of a few re-fits per end.
+  std::string intervals = "wald";
   int max_iterations =
       30;  // Levenberg-Marquardt (or golden-section) iterations per round
   // golden_section: the search stops when the bracket is narrower than this fraction

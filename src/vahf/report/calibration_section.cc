@@ -53,6 +53,10 @@ struct CalibrationTables {
   // Per scanned parameter: its label and rows (position from the estimate,
   // -1 at the lower end of its range and 1 at the upper; the cost's rise).
   std::vector<std::pair<std::string, std::vector<DataRow>>> scan_rows;
+  // The same for the profile points ("intervals": "profile"), the others
+  // re-fitted at each.
+  Table profile{{"stage", "parameter", "value", "cost_rise"}};
+  std::vector<std::pair<std::string, std::vector<DataRow>>> profile_rows;
   // Targets by repetition (the learning curve): repetition, lab value and
   // half-width, virtual at the fit and half-width (95 %); one series a stage
   // and target.
@@ -98,9 +102,10 @@ std::string StageHeading(const calibrate::CalibrationResult& r,
 
 std::string ProfileText(const calibrate::FittedParameter& p) {
   if (!p.has_profile) return "-";
-  return fmt::format("[{}{}, {}{}]", p.profile_open_lower ? "open at " : "",
+  return fmt::format("[{}{}, {}{}]{}", p.profile_open_lower ? "open at " : "",
                      Number(p.profile.lower), Number(p.profile.upper),
-                     p.profile_open_upper ? ", open" : "");
+                     p.profile_open_upper ? ", open" : "",
+                     p.profile_reached ? "" : " (an end not reached: wider)");
 }
 
 // The whitened Jacobian's rank and conditioning, how it was differenced, and
@@ -296,26 +301,46 @@ constexpr const char* kProfileNote =
     "of the estimate's: it needs no slope, so it holds where the cost is a step "
     "function and the standard error, from Ceres' slope at the estimate, does not; an "
     "end that reaches the parameter's bound is open there (docs/calibration.md).\n";
+constexpr const char* kProfileRefitNote =
+    "\nThe profile interval holds the values whose profile, the least cost (1/2 the sum "
+    "of the whitened squared residuals, on common random numbers) with the parameter "
+    "held there and the others re-fitted, is within chi^2_1(0.95) / 2 = 1.92 of the "
+    "estimate's: unlike the standard error, from the curvature at the estimate, it "
+    "follows a curved valley in which parameters trade against each other "
+    "(docs/calibration.md, Profile intervals).\n";
 constexpr const char* kRankDeficientNote =
     "\nThe covariance is rank deficient (the targets do not move within a "
     "central-difference step of the estimate, or a parameter they do not "
     "determine): no standard errors.\n";
 
-// Each parameter's scan of the cost (a Levenberg-Marquardt stage's).
+// Points (value, rise) of a parameter's cost into `table` and, as a series
+// of (position between the estimate and the ends of its valid range, rise),
+// into `series`.
+void AddCostPoints(const std::string& stage, const std::string& stage_label,
+                   const calibrate::FittedParameter& p,
+                   const std::vector<std::pair<double, double>>& points, Table* table,
+                   std::vector<std::pair<std::string, std::vector<DataRow>>>* series) {
+  if (points.empty()) return;
+  std::vector<DataRow> rows;
+  for (const auto& [value, rise] : points) {
+    table->AddRow({stage, p.name, value, rise});
+    const double span =
+        value < p.estimate ? p.estimate - p.edge_lower : p.edge_upper - p.estimate;
+    rows.push_back(
+        DataRow().Number(span > 0 ? (value - p.estimate) / span : 0.0).Number(rise));
+  }
+  series->emplace_back(stage_label + p.name, std::move(rows));
+}
+
+// Each parameter's scan of the cost and its profile (a Levenberg-Marquardt
+// stage's).
 void AddScans(const std::string& stage, const calibrate::CalibrationResult& r,
               CalibrationTables* t) {
+  const std::string label = r.stage.empty() ? "" : r.stage + ": ";
   for (const calibrate::FittedParameter& p : r.parameters) {
-    if (p.scan.empty()) continue;
-    std::vector<DataRow> rows;
-    for (const auto& [value, rise] : p.scan) {
-      t->scan.AddRow({stage, p.name, value, rise});
-      const double span =
-          value < p.estimate ? p.estimate - p.edge_lower : p.edge_upper - p.estimate;
-      rows.push_back(
-          DataRow().Number(span > 0 ? (value - p.estimate) / span : 0.0).Number(rise));
-    }
-    t->scan_rows.emplace_back((r.stage.empty() ? "" : r.stage + ": ") + p.name,
-                              std::move(rows));
+    AddCostPoints(stage, label, p, p.scan, &t->scan, &t->scan_rows);
+    if (r.solver != "golden_section")
+      AddCostPoints(stage, label, p, p.profile_points, &t->profile, &t->profile_rows);
   }
 }
 
@@ -326,6 +351,15 @@ void AddStage(const calibrate::CalibrationResult& r,
   t->markdown += StageHeading(r, d);
   AddParameters(stage, r, spec, t);
   if (r.solver == "golden_section") t->markdown += kProfileNote;
+  if (r.solver != "golden_section" && d.intervals == "profile") {
+    t->markdown += kProfileRefitNote;
+    if (r.profile_least_rise < -0.1)
+      t->markdown += fmt::format(
+          "\n**A re-fit of the profile found a cost {:.3g} below the estimate's**: the "
+          "fit stopped short of the minimum, and the profile intervals are measured "
+          "from too high a cost (raise max_iterations).\n",
+          -r.profile_least_rise);
+  }
   if (!r.covariance_ok) t->markdown += kRankDeficientNote;
   AddTargets(stage, r, t);
   AddScans(stage, r, t);
@@ -389,13 +423,13 @@ Figure LearningFigure(
 
 // The cost along each parameter alone, from its estimate (0) to the ends
 // of its valid range (-1 and 1), against the 95 % profile threshold.
-Figure ScanFigure(
-    const std::vector<std::pair<std::string, std::vector<DataRow>>>& scans) {
+Figure ScanFigure(const std::vector<std::pair<std::string, std::vector<DataRow>>>& scans,
+                  const std::string& title) {
   Figure f;
   for (std::size_t k = 0; k < scans.size(); ++k)
     f.Data(fmt::format("s{}", k), scans[k].second);
   // Drawn up to 10: what decides is whether a curve passes 1.92.
-  f.Title("The cost along each parameter, the others at the estimate")
+  f.Title(title)
       .XLabel("from the estimate (0) to the lower (-1) and upper (1) end of its range")
       .YLabel("rise of the cost (drawn up to 10)")
       .Set("yrange [0:10]")
@@ -441,6 +475,8 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
   out.tables.emplace_back("calibrate_covariance.csv", std::move(t.covariance));
   const bool scanned = !t.scan_rows.empty();
   if (scanned) out.tables.emplace_back("calibrate_scan.csv", std::move(t.scan));
+  const bool profiled = !t.profile_rows.empty();
+  if (profiled) out.tables.emplace_back("calibrate_profile.csv", std::move(t.profile));
   out.files.emplace_back(kOverridesFile, OverridesJson(file, stages).dump(1) + "\n");
   out.summary = {{"parameters", t.params_json},
                  {"stages", t.stages_json},
@@ -464,7 +500,17 @@ Section CalibrationSection(const scene::ExperimentFile& file, const data::LabDat
          "The cost along each parameter alone, from its estimate to the ends of its "
          "valid range: below the dashed line at both ends, the targets do not "
          "determine it there (docs/calibration.md, Identifiability)",
-         GnuplotScript(ScanFigure(t.scan_rows))});
+         GnuplotScript(ScanFigure(
+             t.scan_rows, "The cost along each parameter, the others at the estimate"))});
+  if (profiled)
+    out.plots.push_back(
+        {"plots/calibrate_profile.png",
+         "The profile of the cost along each parameter, the others re-fitted at each "
+         "point: where it crosses the dashed line are the ends of the 95 % profile "
+         "interval (docs/calibration.md, Profile intervals)",
+         GnuplotScript(ScanFigure(t.profile_rows,
+                                  "The profile of the cost along each parameter, the "
+                                  "others re-fitted"))});
   return out;
 }
 

@@ -1,0 +1,147 @@
+#include "vahf/calibrate/profile_likelihood.h"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "vahf/core/error.h"
+
+namespace vahf::calibrate {
+namespace {
+
+// Extrapolation beyond the farthest inside point goes at most this many
+// times its distance from the estimate, so that one flat stretch of a noisy
+// profile does not throw the next point to the edge.
+constexpr double kMaxGrowth = 4.0;
+// Regula falsi stays this fraction of the bracket away from its ends, so
+// that a profile far from linear still shrinks the bracket each call.
+constexpr double kBracketMargin = 0.1;
+// Halvings of a Gauss-Newton step that does not lower the cost before the
+// re-fit stops where it is.
+constexpr int kMaxHalvings = 3;
+
+}  // namespace
+
+ProfileEnd ProfileEndToward(const std::function<double(double)>& rise, double estimate,
+                            double edge, double first, double target_rise, int max_calls,
+                            double z_tolerance) {
+  VAHF_CHECK(target_rise > 0 && max_calls >= 1 && z_tolerance > 0,
+             "a profile end needs a positive target, calls and tolerance");
+  ProfileEnd out;
+  if (edge == estimate) {  // the estimate is at the end of its range
+    out.bound = edge;
+    out.open = true;
+    return out;
+  }
+  const double dir = edge > estimate ? 1.0 : -1.0;
+  const auto toward_edge = [&](double v) {
+    return dir > 0 ? std::min(v, edge) : std::max(v, edge);
+  };
+  const double target_z = std::sqrt(2 * target_rise);
+  // The farthest point inside (z below the target) and the nearest beyond,
+  // as distances from the estimate along the side.
+  double in_d = 0, in_z = 0, prev_in_d = 0, prev_in_z = 0;
+  double out_d = 0, out_z = 0;
+  bool beyond = false;
+  double v = toward_edge(first);
+  if (!((v - estimate) * dir > 0)) v = edge;  // a first guess on the wrong side
+  for (int call = 0; call < max_calls; ++call) {
+    const double r = rise(v);
+    out.points.emplace_back(v, r);
+    const double z = std::isfinite(r) ? std::sqrt(2 * std::max(r, 0.0))
+                                      : std::numeric_limits<double>::infinity();
+    const double d = (v - estimate) * dir;
+    if (std::abs(z - target_z) <= z_tolerance * target_z) {
+      out.bound = v;
+      return out;
+    }
+    if (z < target_z) {
+      prev_in_d = in_d;
+      prev_in_z = in_z;
+      in_d = d;
+      in_z = z;
+      if (v == edge) {
+        out.bound = edge;
+        out.open = true;
+        return out;
+      }
+    } else {
+      out_d = d;
+      out_z = z;
+      beyond = true;
+    }
+    double next = 0;
+    if (beyond) {
+      const double width = out_d - in_d;
+      next = std::isfinite(out_z) ? in_d + (target_z - in_z) * width / (out_z - in_z)
+                                  : in_d + 0.5 * width;
+      next =
+          std::clamp(next, in_d + kBracketMargin * width, out_d - kBracketMargin * width);
+    } else {
+      const double slope = (in_z - prev_in_z) / (in_d - prev_in_d);
+      next = slope > 0 ? in_d + (target_z - in_z) / slope : kMaxGrowth * in_d;
+      next = std::min(next, kMaxGrowth * in_d);
+    }
+    v = toward_edge(estimate + dir * next);
+  }
+  if (beyond) {  // the last regula falsi point of the bracket
+    const double width = out_d - in_d;
+    const double d = std::isfinite(out_z)
+                         ? in_d + (target_z - in_z) * width / (out_z - in_z)
+                         : in_d + 0.5 * width;
+    out.bound = estimate + dir * d;
+  } else {
+    out.bound = estimate + dir * in_d;
+    out.reached = false;
+  }
+  return out;
+}
+
+SecantFit SecantLeastSquares(const ResidualVector& f, const Eigen::VectorXd& start,
+                             Eigen::MatrixXd* jacobian, const Eigen::VectorXd& lower,
+                             const Eigen::VectorXd& upper, int max_evaluations,
+                             double cost_tolerance) {
+  VAHF_CHECK(jacobian->cols() == start.size() && max_evaluations >= 1,
+             "a secant re-fit needs a Jacobian of its parameters and an evaluation");
+  SecantFit out;
+  out.y = start;
+  Eigen::VectorXd r;
+  ++out.evaluations;
+  if (!f(out.y, &r)) {
+    out.cost = std::nan("");
+    return out;
+  }
+  out.cost = 0.5 * r.squaredNorm();
+  int halvings = 0;
+  while (out.evaluations < max_evaluations && start.size() > 0) {
+    Eigen::MatrixXd& b = *jacobian;
+    // The Gauss-Newton step, least squares in b s = -r (rank-revealing).
+    const Eigen::VectorXd full = b.colPivHouseholderQr().solve(-r);
+    const Eigen::VectorXd y =
+        (out.y + std::ldexp(1.0, -halvings) * full).cwiseMax(lower).cwiseMin(upper);
+    const Eigen::VectorXd s = y - out.y;
+    if (!(s.squaredNorm() > 0) || !s.allFinite()) break;
+    // The fall the linear model promises: none worth a call, none to find.
+    if (out.cost - 0.5 * (r + b * s).squaredNorm() < cost_tolerance) break;
+    Eigen::VectorXd r_new;
+    ++out.evaluations;
+    const bool has = f(y, &r_new) && r_new.allFinite();
+    // Broyden's update: the secant condition b_new s = r_new - r.
+    if (has) b += ((r_new - r) - b * s) * s.transpose() / s.squaredNorm();
+    const double cost = has ? 0.5 * r_new.squaredNorm() : std::nan("");
+    if (has && cost < out.cost) {
+      const double fall = out.cost - cost;
+      out.y = y;
+      out.cost = cost;
+      r = r_new;
+      halvings = 0;
+      if (fall < cost_tolerance) break;
+    } else if (++halvings > kMaxHalvings) {
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace vahf::calibrate
