@@ -52,7 +52,9 @@ ProfileEnd ProfileEndToward(const std::function<double(double)>& rise, double es
     const double z = std::isfinite(r) ? std::sqrt(2 * std::max(r, 0.0))
                                       : std::numeric_limits<double>::infinity();
     const double d = (v - estimate) * dir;
-    if (std::abs(z - target_z) <= z_tolerance * target_z) {
+    // Accepted only at or beyond the target, so that an end found is never
+    // inside the interval it bounds.
+    if (z >= target_z && z <= (1 + z_tolerance) * target_z) {
       out.bound = v;
       return out;
     }

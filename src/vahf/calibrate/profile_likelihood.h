@@ -38,8 +38,8 @@ struct ProfileEnd {
 // the valid range on that side), `rise(v)` the profile's rise above the
 // cost at the estimate (a non-finite rise counts as beyond the target, a
 // negative one as 0), `first` the first value tried (clamped to the edge),
-// at most `max_calls` calls. A point within `z_tolerance` (relative) of the
-// target's signed root ends the search.
+// at most `max_calls` calls. A point at or up to `z_tolerance` (relative)
+// beyond the target's signed root ends the search: an end is never inside.
 ProfileEnd ProfileEndToward(const std::function<double(double)>& rise, double estimate,
                             double edge, double first, double target_rise, int max_calls,
                             double z_tolerance = 0.05);

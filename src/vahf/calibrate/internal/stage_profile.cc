@@ -18,13 +18,13 @@ const double kProfileRise = ProfileRise();
 // Calls of the profile per end of an interval, each a re-fit of the other
 // parameters: the secant on the signed root reaches a quadratic profile's
 // end in one call and a curved one's in two to four (profile_likelihood.h).
-constexpr int kProfileCalls = 5;
+constexpr int kProfileCalls = 6;
 
 // Design evaluations per profile value (SecantLeastSquares), and the fall
 // of the cost below which its re-fit stops: far below the rise of 1.92 it
 // measures.
-constexpr int kRefitEvaluations = 6;
-constexpr double kRefitTolerance = 0.01;
+constexpr int kRefitEvaluations = 10;
+constexpr double kRefitTolerance = 0.005;
 
 // The profile's value with *at's held parameters where they are: the least
 // cost over the parameters `free`, re-fitted from *at (a valid point) by
