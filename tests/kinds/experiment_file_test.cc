@@ -177,6 +177,7 @@ json Calibrate() {
   e["relative_step"] = 0.1;
   e["max_iterations"] = 12;
   e["noise_replicates"] = 2;
+  e["intervals"] = "profile";
   return e;
 }
 
@@ -1071,13 +1072,15 @@ TEST(CalibrateTest, ParametersTargetsLossAndStepsLoad) {
   EXPECT_DOUBLE_EQ(d.relative_step, 0.1);
   EXPECT_EQ(d.max_iterations, 12);
   EXPECT_EQ(d.noise_replicates, 2);
+  EXPECT_EQ(d.intervals, "profile");
   EXPECT_EQ(e.seed, 5u);
   EXPECT_EQ(e.trials, 2);
 }
 
 TEST(CalibrateTest, Defaults) {
   json doc = Calibrate();
-  for (const char* key : {"loss", "relative_step", "max_iterations", "noise_replicates"})
+  for (const char* key :
+       {"loss", "relative_step", "max_iterations", "noise_replicates", "intervals"})
     doc.erase(key);
   doc["targets"][0]["by"] = "all";
   ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
@@ -1087,6 +1090,7 @@ TEST(CalibrateTest, Defaults) {
   EXPECT_DOUBLE_EQ(e.Input<CalibrationDesign>().relative_step, 0.05);
   EXPECT_EQ(e.Input<CalibrationDesign>().max_iterations, 30);
   EXPECT_EQ(e.Input<CalibrationDesign>().noise_replicates, 4);
+  EXPECT_EQ(e.Input<CalibrationDesign>().intervals, "wald");
   EXPECT_EQ(e.Input<CalibrationDesign>().loss, defaults.loss);
   EXPECT_FALSE(e.Input<CalibrationDesign>().stages[0].targets[0].by_operator);
   // A loss without a scale keeps the default scale.
@@ -1258,6 +1262,9 @@ TEST(CalibrateErrorsTest, LossStepAndIterationsOutOfRange) {
   doc = Calibrate();
   doc["noise_replicates"] = 101;
   ExpectError(doc, "/noise_replicates", "must lie in [0, 100]", "101");
+  doc = Calibrate();
+  doc["intervals"] = "bootstrap";
+  ExpectError(doc, "/intervals", "must be one of: wald, profile", "\"bootstrap\"");
 }
 
 TEST(CalibrateErrorsTest, LabFileMissing) {

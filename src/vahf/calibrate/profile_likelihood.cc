@@ -44,6 +44,12 @@ ProfileEnd ProfileEndToward(const std::function<double(double)>& rise, double es
   double in_d = 0, in_z = 0, prev_in_d = 0, prev_in_z = 0;
   double out_d = 0, out_z = 0;
   bool beyond = false;
+  // Regula falsi on z in the bracket (bisection when z beyond is infinite).
+  const auto falsi = [&] {
+    const double width = out_d - in_d;
+    return std::isfinite(out_z) ? in_d + (target_z - in_z) * width / (out_z - in_z)
+                                : in_d + 0.5 * width;
+  };
   double v = toward_edge(first);
   if (!((v - estimate) * dir > 0)) v = edge;  // a first guess on the wrong side
   for (int call = 0; call < max_calls; ++call) {
@@ -76,10 +82,8 @@ ProfileEnd ProfileEndToward(const std::function<double(double)>& rise, double es
     double next = 0;
     if (beyond) {
       const double width = out_d - in_d;
-      next = std::isfinite(out_z) ? in_d + (target_z - in_z) * width / (out_z - in_z)
-                                  : in_d + 0.5 * width;
-      next =
-          std::clamp(next, in_d + kBracketMargin * width, out_d - kBracketMargin * width);
+      next = std::clamp(falsi(), in_d + kBracketMargin * width,
+                        out_d - kBracketMargin * width);
     } else {
       const double slope = (in_z - prev_in_z) / (in_d - prev_in_d);
       next = slope > 0 ? in_d + (target_z - in_z) / slope : kMaxGrowth * in_d;
@@ -88,11 +92,7 @@ ProfileEnd ProfileEndToward(const std::function<double(double)>& rise, double es
     v = toward_edge(estimate + dir * next);
   }
   if (beyond) {  // the last regula falsi point of the bracket
-    const double width = out_d - in_d;
-    const double d = std::isfinite(out_z)
-                         ? in_d + (target_z - in_z) * width / (out_z - in_z)
-                         : in_d + 0.5 * width;
-    out.bound = estimate + dir * d;
+    out.bound = estimate + dir * falsi();
   } else {
     out.bound = estimate + dir * in_d;
     out.reached = false;
