@@ -102,6 +102,41 @@ TEST(Calibration, NoReplicatesNoMonteCarloSpread) {
   EXPECT_TRUE(std::isnan(r.parameters[0].mc_sd));
 }
 
+// A target with pooled variances ("variance": "pooled") weighs each of its
+// operators by one variance on each side, the lab's and the virtual one
+// (PoolVariances, at every design evaluation): their n x variance is the
+// same for both operators, at the start and at the fit; without it the
+// operators' own differ.
+TEST(Calibration, APooledTargetWeighsEveryOperatorByOneVarianceOnEachSide) {
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const data::LabDataset lab = GenerateSyntheticLab(BlockLab(101), Quiet());
+  CalibrationSpec spec = KappaFromTime();
+  spec.stages[0].targets[0].by_operator = true;
+  spec.noise_replicates = 0;
+  const auto per_trial = [](const Statistic& s) { return s.variance * s.n; };
+  const CalibrationResult own = Fit(scene, lab, spec, "test", 7, 6, Quiet());
+  ASSERT_EQ(own.targets.size(), 2u);
+  EXPECT_GT(std::abs(per_trial(own.targets[0].target.lab) /
+                         per_trial(own.targets[1].target.lab) -
+                     1),
+            0.05);
+  spec.stages[0].targets[0].pooled_variance = true;
+  const CalibrationResult pooled = Fit(scene, lab, spec, "test", 7, 6, Quiet());
+  ASSERT_EQ(pooled.targets.size(), 2u);
+  const FittedTarget& a = pooled.targets[0];
+  const FittedTarget& b = pooled.targets[1];
+  EXPECT_DOUBLE_EQ(per_trial(a.target.lab), per_trial(b.target.lab));
+  EXPECT_DOUBLE_EQ(per_trial(a.start), per_trial(b.start));
+  EXPECT_DOUBLE_EQ(per_trial(a.fitted), per_trial(b.fitted));
+  // Equal counts: the pooled variance is the mean of the operators' own.
+  EXPECT_NEAR(
+      per_trial(a.target.lab),
+      0.5 * (per_trial(own.targets[0].target.lab) + per_trial(own.targets[1].target.lab)),
+      1e-12);
+  EXPECT_TRUE(pooled.covariance_ok);
+}
+
 // The golden_section solver's stage also gives the profile interval
 // (ProfileBounds on the stage's own cost): on the same lab it holds the
 // estimate and kappa_true, closes on both sides well inside the bounds, and

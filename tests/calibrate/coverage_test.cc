@@ -112,7 +112,13 @@ CalibrationSpec JointFit() {
     stage.parameters.push_back(
         {t.name, t.start, t.lower, t.upper, "/parameters/" + std::to_string(i)});
   }
+  // Each operator's mean time, weighed by the variance pooled over the 8
+  // operators (40 degrees of freedom on the lab's side, 72 on the virtual):
+  // an operator's own from 6 lab times made the whitened residuals t-like
+  // and the intervals about 10 % narrow (docs/calibration.md, Pooled
+  // variances).
   stage.targets.push_back({"assembly_time", "block", true, "/targets/0", 0, 0, ""});
+  stage.targets.back().pooled_variance = true;
   for (int s = 2; s <= kHour.segments; ++s) {
     TargetSpec t;
     t.quantity = "success_rate";
@@ -129,6 +135,9 @@ CalibrationSpec JointFit() {
   // would bend the covariance away from the least-squares one under test.
   spec.loss = "none";
   spec.intervals = "profile";
+  // The fits stay inside their bounds: Ceres' line search on them took
+  // most of the design evaluations (docs/calibration.md, Solvers).
+  spec.line_search = false;
   return spec;
 }
 
@@ -201,13 +210,12 @@ double ChiSquareQuantile(int k, double z) {
   return k * std::pow(1 - a + z * std::sqrt(a), 3);
 }
 
-// DISABLED: it does not yet hold at full size (docs/calibration.md, "Joint
-// coverage"): the times and rates leave a curved valley along which d2,
-// kappa and A_max trade off. The Wald intervals miss far more often than
-// 5 %; the profile intervals follow the valley and miss less, but still
-// more than 10 % of the time in the datasets run so far, several by a
-// hair. Run it with --gtest_also_run_disabled_tests.
-TEST(Coverage, DISABLED_JointIntervalsOfReachKappaAndAmaxHoldTheTruth) {
+// At the CI size (datasets 0-2: dataset 0's data pull d2 and kappa away
+// from the truth, docs/calibration.md, "Joint coverage") the binomial bound
+// tolerates one miss of three per parameter; it fails when the intervals
+// are far too narrow, as the Wald ones were. The full size's figures are in
+// that section.
+TEST(Coverage, JointIntervalsOfReachKappaAndAmaxHoldTheTruth) {
   const char* env = std::getenv("VAHF_COVERAGE_DATASETS");
   const bool full = env != nullptr;
   const int datasets = full ? std::max(1, std::atoi(env)) : 3;

@@ -171,13 +171,17 @@ json Calibrate() {
   e["lab"] = SourcePath("data/synthetic_block/dataset.json");
   e["parameters"] = {FitParam("guidance/kappa", 400, 50, 2000),
                      FitParam("guidance/hand_mass", 1.0, 0.5, 2.0)};
-  e["targets"] = {{{"quantity", "assembly_time"}, {"part", "block"}, {"by", "operator"}},
+  e["targets"] = {{{"quantity", "assembly_time"},
+                   {"part", "block"},
+                   {"by", "operator"},
+                   {"variance", "pooled"}},
                   {{"quantity", "success_rate"}, {"part", "all"}}};
   e["loss"] = {{"kind", "cauchy"}, {"scale", 2}};
   e["relative_step"] = 0.1;
   e["max_iterations"] = 12;
   e["noise_replicates"] = 2;
   e["intervals"] = "profile";
+  e["line_search"] = false;
   return e;
 }
 
@@ -1062,10 +1066,12 @@ TEST(CalibrateTest, ParametersTargetsLossAndStepsLoad) {
   EXPECT_EQ(st.targets[0].quantity, "assembly_time");
   EXPECT_EQ(st.targets[0].part, "block");
   EXPECT_TRUE(st.targets[0].by_operator);
+  EXPECT_TRUE(st.targets[0].pooled_variance);
   EXPECT_EQ(st.targets[0].pointer, "/targets/0");
   EXPECT_EQ(st.targets[1].quantity, "success_rate");
   EXPECT_EQ(st.targets[1].part, "all");
-  EXPECT_FALSE(st.targets[1].by_operator);  // "by" defaults to "all"
+  EXPECT_FALSE(st.targets[1].by_operator);      // "by" defaults to "all"
+  EXPECT_FALSE(st.targets[1].pooled_variance);  // "variance" defaults to "own"
   EXPECT_EQ(st.targets[1].pointer, "/targets/1");
   EXPECT_EQ(d.loss, "cauchy");
   EXPECT_DOUBLE_EQ(d.loss_scale, 2.0);
@@ -1073,16 +1079,18 @@ TEST(CalibrateTest, ParametersTargetsLossAndStepsLoad) {
   EXPECT_EQ(d.max_iterations, 12);
   EXPECT_EQ(d.noise_replicates, 2);
   EXPECT_EQ(d.intervals, "profile");
+  EXPECT_FALSE(d.line_search);
   EXPECT_EQ(e.seed, 5u);
   EXPECT_EQ(e.trials, 2);
 }
 
 TEST(CalibrateTest, Defaults) {
   json doc = Calibrate();
-  for (const char* key :
-       {"loss", "relative_step", "max_iterations", "noise_replicates", "intervals"})
+  for (const char* key : {"loss", "relative_step", "max_iterations", "noise_replicates",
+                          "intervals", "line_search"})
     doc.erase(key);
   doc["targets"][0]["by"] = "all";
+  doc["targets"][0].erase("variance");
   ExperimentFile e = LoadExperiment(WriteJson(TestDir() / "e.json", doc));
   const CalibrationDesign defaults;
   EXPECT_EQ(e.Input<CalibrationDesign>().loss, "huber");
@@ -1091,6 +1099,7 @@ TEST(CalibrateTest, Defaults) {
   EXPECT_EQ(e.Input<CalibrationDesign>().max_iterations, 30);
   EXPECT_EQ(e.Input<CalibrationDesign>().noise_replicates, 4);
   EXPECT_EQ(e.Input<CalibrationDesign>().intervals, "wald");
+  EXPECT_TRUE(e.Input<CalibrationDesign>().line_search);
   EXPECT_EQ(e.Input<CalibrationDesign>().loss, defaults.loss);
   EXPECT_FALSE(e.Input<CalibrationDesign>().stages[0].targets[0].by_operator);
   // A loss without a scale keeps the default scale.
@@ -1230,6 +1239,16 @@ TEST(CalibrateErrorsTest, TargetsShapeAndBy) {
   doc["targets"][0]["by"] = "sex";
   ExpectError(doc, "/targets/0/by", "must be one of: operator, repetition, all",
               "\"sex\"");
+  // Variances pool over one target per operator, and only a mean's.
+  doc = Calibrate();
+  doc["targets"][0]["variance"] = "shared";
+  ExpectError(doc, "/targets/0/variance", "must be one of: own, pooled", "\"shared\"");
+  doc = Calibrate();
+  doc["targets"][0]["by"] = "all";
+  ExpectError(doc, "/targets/0/variance", "needs \"by\": \"operator\"", "\"pooled\"");
+  doc = Calibrate();
+  doc["targets"][0]["quantity"] = "success_rate";
+  ExpectError(doc, "/targets/0/variance", "a rate's variance is binomial", "\"pooled\"");
   doc = Calibrate();
   doc["targets"][0]["parts"] = "block";
   ExpectError(doc, "/targets/0/parts", "did you mean 'part'?");
@@ -1265,6 +1284,9 @@ TEST(CalibrateErrorsTest, LossStepAndIterationsOutOfRange) {
   doc = Calibrate();
   doc["intervals"] = "bootstrap";
   ExpectError(doc, "/intervals", "must be one of: wald, profile", "\"bootstrap\"");
+  doc = Calibrate();
+  doc["line_search"] = "off";
+  ExpectError(doc, "/line_search", "must be true or false", "\"off\"");
 }
 
 TEST(CalibrateErrorsTest, LabFileMissing) {

@@ -100,6 +100,7 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
   if (auto r = root.Optional("noise_replicates"))
     d.noise_replicates = static_cast<int>(r->Integer(0, 100));
   if (auto in = root.Optional("intervals")) d.intervals = in->Choice({"wald", "profile"});
+  if (auto ls = root.Optional("line_search")) d.line_search = ls->Boolean();
   if (auto it = root.Optional("max_iterations"))
     d.max_iterations = static_cast<int>(it->Integer(1, 1000));
   if (auto tol = root.Optional("tolerance")) d.tolerance = tol->InRange(1e-4, 0.5);

@@ -53,6 +53,13 @@ struct CalibrationDesign : scene::KindInputOf<CalibrationDesign> {
   // (profile_likelihood.h), which follows a curved valley where the Wald
   // interval does not, at the cost of a few re-fits per end.
   std::string intervals = "wald";
+  // Levenberg-Marquardt stages: Ceres' projected line search on the bounds
+  // after every step (true), or the step alone, projected onto them
+  // (false). Each line-search step differences a whole Jacobian (2 p + 1
+  // design evaluations): it finds better points where the fit runs along a
+  // bound, and costs most of the evaluations where it stays inside
+  // (docs/calibration.md, Solvers).
+  bool line_search = true;
   int max_iterations =
       30;  // Levenberg-Marquardt (or golden-section) iterations per round
   // golden_section: the search stops when the bracket is narrower than this fraction

@@ -430,6 +430,29 @@ Target MakeTarget(const TargetSpec& spec, const TargetScope& scope) {
 
 const std::vector<std::string>& TargetQuantities() { return scene::FitQuantities(); }
 
+void PoolVariances(const std::vector<Target>& targets, std::vector<Statistic>* stats) {
+  VAHF_CHECK(stats->size() == targets.size(), "one statistic per target");
+  for (std::size_t first = 0; first < targets.size(); ++first) {
+    const TargetSpec& spec = targets[first].spec;
+    if (!spec.pooled_variance) continue;
+    // The spec's targets follow each other; `first` is the first of them.
+    if (first > 0 && targets[first - 1].spec.pointer == spec.pointer) continue;
+    std::size_t end = first;
+    double sum = 0, dof = 0;
+    for (; end < targets.size() && targets[end].spec.pointer == spec.pointer; ++end) {
+      const Statistic& s = (*stats)[end];
+      if (s.n < 2 || !std::isfinite(s.variance)) continue;
+      sum += s.variance * s.n * (s.n - 1);  // (n - 1) s^2, s^2 = n var
+      dof += s.n - 1;
+    }
+    if (!(dof > 0)) continue;
+    for (std::size_t i = first; i < end; ++i) {
+      Statistic& s = (*stats)[i];
+      if (s.n >= 1 && !s.single_draw) s.variance = sum / dof / s.n;
+    }
+  }
+}
+
 std::vector<Target> LabTargets(const scene::Scene& scene, const data::LabDataset& lab,
                                const std::vector<TargetSpec>& specs,
                                const std::string& experiment_file,
@@ -439,6 +462,10 @@ std::vector<Target> LabTargets(const scene::Scene& scene, const data::LabDataset
     for (const TargetScope& scope : TargetScopes(spec, lab))
       out.push_back(LabTarget(scene, lab, spec, scope, experiment_file, unweighted));
   }
+  std::vector<Statistic> lab_stats;
+  for (const Target& t : out) lab_stats.push_back(t.lab);
+  PoolVariances(out, &lab_stats);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i].lab = lab_stats[i];
   return out;
 }
 

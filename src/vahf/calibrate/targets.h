@@ -140,6 +140,19 @@ struct Target {
   bool from_tracks = false;
 };
 
+// For the targets of each spec with pooled_variance (one per operator), the
+// variance of each operator's mean from the spec's pooled within-operator
+// variance: s_p^2 = sum_o (n_o - 1) s_o^2 / sum_o (n_o - 1), the error mean
+// square of a one-way analysis of variance (Montgomery, Design and Analysis
+// of Experiments, 9th ed., 2017, Sec. 3.3), and operator o's variance
+// s_p^2 / n_o. `stats` is one per target (the lab's or the virtual side's);
+// a statistic without a finite variance adds nothing to s_p^2 and, with
+// n >= 1 and not a single draw, takes s_p^2 / n. Why: an operator's own s_o^2 from 6
+// trials has 5 degrees of freedom, and the residual it whitens is then t-distributed with
+// about 11, not normal: the intervals come out about 10 % too narrow
+// (docs/calibration.md, "Joint coverage"). Pooling over 8 operators gives 40.
+void PoolVariances(const std::vector<Target>& targets, std::vector<Statistic>* stats);
+
 // The lab's operators in order of first appearance in its trials.
 std::vector<std::string> LabOperators(const data::LabDataset& lab);
 // The repetitions its trials record, increasing, each once.
@@ -168,7 +181,8 @@ enum class Unweighted { kRefuse, kPoint };
 // (TrackSamples), and from what it reports only when it has no track for
 // the target. An InputError naming `experiment_file` and the target's
 // pointer when the lab has no trials (tracks) for it (or, for assembly_time,
-// eta and lambda_c, fewer than two values: no variance).
+// eta and lambda_c, fewer than two values: no variance). A spec with
+// pooled_variance has its operators' variances pooled (PoolVariances).
 std::vector<Target> LabTargets(const scene::Scene& scene, const data::LabDataset& lab,
                                const std::vector<TargetSpec>& specs,
                                const std::string& experiment_file,

@@ -88,9 +88,10 @@ Kind CalibrateKind() {
   k.name = "calibrate";
   k.summary = "parameters fitted to a lab dataset (docs/calibration.md)";
   k.doc = "calibration.md#the-calibrate-kind";
-  k.keys = {"lab",    "fatigue",       "parameters",       "targets",
-            "loss",   "relative_step", "max_iterations",   "tolerance",
-            "solver", "stages",        "noise_replicates", "intervals"};
+  k.keys = {"lab",        "fatigue",       "parameters",       "targets",
+            "loss",       "relative_step", "max_iterations",   "tolerance",
+            "solver",     "stages",        "noise_replicates", "intervals",
+            "line_search"};
   k.parse = calibrate::ReadCalibration;
   k.check = CheckCalibration;
   k.run = RunCalibration;

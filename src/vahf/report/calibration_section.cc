@@ -68,14 +68,20 @@ std::string Intro(const scene::ExperimentFile& file, const data::LabDataset& lab
                   const std::vector<calibrate::CalibrationResult>& stages,
                   int evaluations) {
   const calibrate::CalibrationDesign& d = file.Input<calibrate::CalibrationDesign>();
+  bool pooled = false;
+  for (const auto& stage : d.stages)
+    for (const auto& t : stage.targets) pooled = pooled || t.pooled_variance;
   return fmt::format(
       "## Calibration against {}\n\n{}\n\nLab dataset `{}`: {} (provenance: {}). "
       "Each residual is whitened by the lab's and the virtual statistic's standard "
-      "errors; {} loss (scale {} sd); central differences over {} of each value on "
+      "errors{}; {} loss (scale {} sd); central differences over {} of each value on "
       "common random numbers; {} design evaluations in {} stage(s).{}\n",
       lab.name, file.description, d.lab_path, lab.description,
-      lab.provenance.value("source", ""), d.loss, d.loss_scale, d.relative_step,
-      evaluations, stages.size(),
+      lab.provenance.value("source", ""),
+      pooled ? " (for a target with `\"variance\": \"pooled\"`, each operator's from "
+               "the variance pooled over the target's operators, on each side)"
+             : "",
+      d.loss, d.loss_scale, d.relative_step, evaluations, stages.size(),
       stages.size() > 1
           ? " Each stage starts from the scene with the earlier stages' estimates; its "
             "intervals are conditional on them (an earlier estimate's uncertainty is not "

@@ -85,7 +85,8 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene,
       node.ExpectObject(
           {"quantity", "part", "by", "segment", "condition", "instant", "margin"});
     } else {
-      node.ExpectObject({"quantity", "part", "by", "segment", "condition", "instant"});
+      node.ExpectObject(
+          {"quantity", "part", "by", "segment", "condition", "instant", "variance"});
     }
     FitTarget t;
     t.pointer = node.path();
@@ -112,6 +113,17 @@ std::vector<FitTarget> ReadTargets(const JsonNode& list, const Scene& scene,
           "a segment's value is the lab's over the hour of work, which has no "
           "repetitions");
     ReadInstant(node, &t);
+    if (auto variance = node.Optional("variance")) {
+      t.pooled_variance = variance->Choice({"own", "pooled"}) == "pooled";
+      if (t.pooled_variance && !t.by_operator)
+        variance->Fail(
+            "pools the variances of one target per operator: needs \"by\": "
+            "\"operator\"");
+      if (t.pooled_variance && t.quantity == "success_rate")
+        variance->Fail(
+            "a rate's variance is binomial, p (1 - p) / n, from its own "
+            "counts: only a mean (assembly_time, eta, lambda_c) pools");
+    }
     // A margin is in the quantity's unit: at most an hour for a time, 1 for a
     // rate, eta or lambda_c.
     if (margin)

@@ -62,6 +62,11 @@ struct FitTarget {
   // One target per repetition the lab's trials record (1, 2, ...), over all
   // operators: the learning curve (human/learning.h).
   bool by_repetition = false;
+  // calibrate, a mean of one operator's trials (by operator; assembly_time,
+  // eta, lambda_c): each operator's variance s_o^2 / n_o uses the pooled
+  // s^2 of all the spec's operators instead of their own s_o^2
+  // (calibrate::PoolVariances), on the lab's side and the virtual one.
+  bool pooled_variance = false;
 };
 
 // The quantities a target may name, the one list (calibrate::TargetQuantities):

@@ -119,6 +119,7 @@ class VirtualModel {
         if (targets_[i].spec.segment > 0)
           stats[i] = VirtualStatistic(targets_[i], f.run, f.segments);
     }
+    PoolVariances(targets_, &stats);
     ++evaluations_;
     if (progress_)
       progress_(fmt::format(
@@ -143,6 +144,7 @@ class VirtualModel {
     const experiment::DesignRun run = RunOperators(Applied(x), r, nullptr);
     std::vector<Statistic> stats;
     for (const Target& t : targets_) stats.push_back(VirtualStatistic(t, run));
+    PoolVariances(targets_, &stats);
     ++evaluations_;
     return stats;
   }
