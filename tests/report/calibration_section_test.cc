@@ -124,6 +124,13 @@ TEST(CalibrationSection, AProfileStageDrawsTheProfileAndNamesAFitStoppedShort) {
   for (const char* text : {"the others re-fitted", "(an end not reached: wider)",
                            "A re-fit of the profile found a cost 0.8 below"})
     EXPECT_NE(s.markdown.find(text), std::string::npos) << text << "\n" << s.markdown;
+  // summary.json carries the least rise too; a Wald stage's has no such key.
+  EXPECT_DOUBLE_EQ(s.summary["stages"][0]["profile_least_rise"].get<double>(), -0.8);
+  design.intervals = "wald";
+  for (calibrate::FittedParameter& p : r.parameters) p.has_profile = false;
+  EXPECT_FALSE(CalibrationSection(file, lab, {r})
+                   .summary["stages"][0]
+                   .contains("profile_least_rise"));
 }
 
 }  // namespace

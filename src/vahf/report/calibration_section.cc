@@ -388,6 +388,12 @@ void AddStage(const calibrate::CalibrationResult& r,
                             {"evaluations", r.evaluations},
                             {"rounds", r.rounds},
                             {"final_cost", r.final_cost}});
+  // With profile intervals: the least rise a re-fit found (below 0, a cost
+  // under the estimate's: the fit stopped short of its minimum).
+  const bool profiled = std::any_of(r.parameters.begin(), r.parameters.end(),
+                                    [](const auto& f) { return f.has_profile; });
+  if (profiled && r.solver != "golden_section")
+    t->stages_json.back()["profile_least_rise"] = r.profile_least_rise;
 }
 
 // Each target: the lab's value and the virtual one at the start and at the
