@@ -432,15 +432,15 @@ const std::vector<std::string>& TargetQuantities() { return scene::FitQuantities
 
 void PoolVariances(const std::vector<Target>& targets, std::vector<Statistic>* stats) {
   VAHF_CHECK(stats->size() == targets.size(), "one statistic per target");
-  for (std::size_t first = 0; first < targets.size(); ++first) {
+  // A spec's targets follow each other: [first, end) is one spec's.
+  for (std::size_t first = 0, end = 0; first < targets.size(); first = end) {
     const TargetSpec& spec = targets[first].spec;
+    end = first;
+    while (end < targets.size() && targets[end].spec.pointer == spec.pointer) ++end;
     if (!spec.pooled_variance) continue;
-    // The spec's targets follow each other; `first` is the first of them.
-    if (first > 0 && targets[first - 1].spec.pointer == spec.pointer) continue;
-    std::size_t end = first;
     double sum = 0, dof = 0;
-    for (; end < targets.size() && targets[end].spec.pointer == spec.pointer; ++end) {
-      const Statistic& s = (*stats)[end];
+    for (std::size_t i = first; i < end; ++i) {
+      const Statistic& s = (*stats)[i];
       if (s.n < 2 || !std::isfinite(s.variance)) continue;
       sum += s.variance * s.n * (s.n - 1);  // (n - 1) s^2, s^2 = n var
       dof += s.n - 1;

@@ -150,7 +150,7 @@ struct Target {
 // n >= 1 and not a single draw, takes s_p^2 / n. Why: an operator's own s_o^2 from 6
 // trials has 5 degrees of freedom, and the residual it whitens is then t-distributed with
 // about 11, not normal: the intervals come out about 10 % too narrow
-// (docs/calibration.md, "Joint coverage"). Pooling over 8 operators gives 40.
+// (docs/calibration.md, "Pooled variances"). Pooling over 8 operators gives 40.
 void PoolVariances(const std::vector<Target>& targets, std::vector<Statistic>* stats);
 
 // The lab's operators in order of first appearance in its trials.
