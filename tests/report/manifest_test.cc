@@ -1,7 +1,9 @@
 // The manifest: the results digest follows its rule (checked against a value
 // computed independently with Python's hashlib), changes with any byte of a
 // result and not with fields outside the results (threads); the parameters
-// object read back as a scene's "parameters" reproduces every value.
+// object read back as a scene's "parameters" reproduces every value; the
+// manifest reads back as `vahf verify` reads it, and a manifest it cannot use
+// is refused with the pointer and the rule.
 #include "vahf/report/manifest.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "vahf/core/error.h"
 #include "vahf/report/digest.h"
 #include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
@@ -58,6 +61,7 @@ TEST(ResultsDigest, OfFilesEqualsOfBytesInAnyOrder) {
 
 ManifestFields Fields(int threads) {
   ManifestFields f;
+  f.invocation = {"experiments/fatigue.json", "calibrated.json", 7, 0};
   f.experiment = {"experiments/fatigue.json", Sha256Hex("experiment")};
   f.scene = {"experiments/scenes/peg_in_hole.json", Sha256Hex("scene")};
   f.seed = 18446744073709551615u;  // 2^64 - 1 survives JSON
@@ -72,6 +76,10 @@ TEST(ManifestJson, HoldsEveryField) {
   const nlohmann::json m = ManifestJson(Fields(2));
   EXPECT_EQ(m["format"], "vahf-manifest/1");
   EXPECT_EQ(m["experiment"]["path"], "experiments/fatigue.json");
+  EXPECT_EQ(m["invocation"], (nlohmann::json{{"experiment", "experiments/fatigue.json"},
+                                             {"overrides", "calibrated.json"},
+                                             {"seed", 7},
+                                             {"trials", 0}}));
   EXPECT_EQ(m["scene"]["sha256"], Sha256Hex("scene"));
   EXPECT_EQ(m["seed"].get<std::uint64_t>(), 18446744073709551615u);
   EXPECT_EQ(m["trials"], 500);
@@ -117,6 +125,89 @@ TEST(ParametersToJson, ReadsBackAsASceneSetsThem) {
     ++checked;
   }
   EXPECT_EQ(checked, scene::ParameterTable().size());
+}
+
+// A manifest written to `dir`/manifest.json after `edit`, and its path.
+template <class Edit>
+std::string WrittenManifest(const std::string& dir, Edit edit) {
+  const std::filesystem::path root = std::filesystem::path(::testing::TempDir()) / dir;
+  std::filesystem::create_directories(root);
+  nlohmann::json m = ManifestJson(Fields(3));
+  m["inputs"] = {{{"path", "tables/table1.json"}, {"sha256", Sha256Hex("table")}}};
+  edit(m);
+  std::ofstream((root / "manifest.json").string()) << m.dump(1);
+  return (root / "manifest.json").string();
+}
+
+TEST(ReadManifest, ReadsBackWhatManifestJsonWrote) {
+  const std::string path = WrittenManifest("read_manifest_ok", [](nlohmann::json&) {});
+  const RecordedRun r = ReadManifest(path);
+  EXPECT_EQ(r.file, path);
+  EXPECT_EQ(r.invocation.experiment, "experiments/fatigue.json");
+  EXPECT_EQ(r.invocation.overrides, "calibrated.json");
+  EXPECT_EQ(r.invocation.seed, 7u);
+  EXPECT_EQ(r.invocation.trials, 0);
+  EXPECT_EQ(r.threads, 3);
+  ASSERT_EQ(r.inputs.size(), 3u);  // experiment, scene, then "inputs"
+  EXPECT_EQ(r.inputs[0].file.path, "experiments/fatigue.json");
+  EXPECT_EQ(r.inputs[0].pointer, "/experiment/sha256");
+  EXPECT_EQ(r.inputs[1].file.sha256, Sha256Hex("scene"));
+  EXPECT_EQ(r.inputs[2].file.path, "tables/table1.json");
+  EXPECT_EQ(r.inputs[2].pointer, "/inputs/0/sha256");
+  EXPECT_EQ(r.result_files, (std::vector<std::string>{"a.csv", "summary.json"}));
+  EXPECT_EQ(r.results_digest, ResultsDigest(kResults));
+  EXPECT_TRUE(BuildDifferences(r.build).empty());
+}
+
+// Each fault: the error names the manifest, the pointer and the rule.
+TEST(ReadManifest, RefusesWhatVerifyCannotUse) {
+  struct Case {
+    const char* name;
+    void (*edit)(nlohmann::json&);
+    const char* where;
+    const char* rule;
+  };
+  const Case cases[] = {
+      {"format", [](nlohmann::json& m) { m["format"] = "vahf-experiment/1"; }, "/format",
+       "not a vahf run's manifest"},
+      {"no_invocation", [](nlohmann::json& m) { m.erase("invocation"); }, "/",
+       "has no \"invocation\""},
+      {"escaping_file", [](nlohmann::json& m) { m["result_files"][0] = "../a.csv"; },
+       "/result_files/0", "inside the run directory"},
+      {"absolute_file", [](nlohmann::json& m) { m["result_files"][1] = "/etc/passwd"; },
+       "/result_files/1", "inside the run directory"},
+      {"short_digest", [](nlohmann::json& m) { m["results_digest"] = "abc"; },
+       "/results_digest", "64 lowercase hexadecimal"},
+      {"input_digest", [](nlohmann::json& m) { m["inputs"][0]["sha256"] = 5; },
+       "/inputs/0/sha256", "string"},
+      {"negative_trials", [](nlohmann::json& m) { m["invocation"]["trials"] = -1; },
+       "/invocation/trials", ""},
+  };
+  for (const Case& c : cases) {
+    const std::string path =
+        WrittenManifest(std::string("read_manifest_") + c.name, c.edit);
+    try {
+      ReadManifest(path);
+      ADD_FAILURE() << c.name << ": accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), path) << c.name;
+      EXPECT_EQ(e.where(), c.where) << c.name;
+      EXPECT_NE(e.rule().find(c.rule), std::string::npos) << c.name << ": " << e.what();
+    }
+  }
+}
+
+TEST(BuildDifferences, NamesEachFieldAndLibraryThatDiffers) {
+  BuildInfo other = GetBuildInfo();
+  const nlohmann::json mine = ManifestJson(Fields(1))["build"];
+  EXPECT_TRUE(BuildDifferences(mine, other).empty());
+  other.compiler_version = "99.1";
+  other.libraries.emplace_back("MPI", "4.1");
+  const std::vector<std::string> d = BuildDifferences(mine, other);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0], "compiler_version: " + GetBuildInfo().compiler_version +
+                      " (run) vs 99.1 (this program)");
+  EXPECT_EQ(d[1], "libraries/MPI: (none) (run) vs 4.1 (this program)");
 }
 
 }  // namespace

@@ -37,63 +37,8 @@ if [[ ! -x "$vahf" ]]; then
   exit 2
 fi
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/vahf_cli_test.XXXXXX") || exit 1
-trap 'rm -rf -- "$tmp"' EXIT
-
-passed=0
-failed=0
-out=$tmp/stdout
-err=$tmp/stderr
-
-pass() {
-  passed=$((passed + 1))
-  echo "PASS: $1"
-}
-
-fail() {
-  failed=$((failed + 1))
-  echo "FAIL: $1"
-  echo "  --- stdout:"
-  sed 's/^/  | /' "$out"
-  echo "  --- stderr:"
-  sed 's/^/  | /' "$err"
-}
-
-# run ARGS...: runs vahf, leaving its output in $out and $err and its exit
-# status in $status.
-run() {
-  "$vahf" "$@" >"$out" 2>"$err"
-  status=$?
-}
-
-# expect_status NAME WANT: checks the last run's exit status.
-expect_status() {
-  if [[ $status -eq $2 ]]; then
-    pass "$1: exit status $2"
-  else
-    fail "$1: exit status $status, want $2"
-  fi
-}
-
-# expect_in NAME FILE TEXT: FILE ($out or $err) contains TEXT literally.
-expect_in() {
-  if grep -qF -- "$3" "$2"; then
-    pass "$1: $(basename "$2") has '$3'"
-  else
-    fail "$1: $(basename "$2") lacks '$3'"
-  fi
-}
-
-# expect_lines NAME FILE N: FILE has exactly N lines.
-expect_lines() {
-  local n
-  n=$(wc -l <"$2")
-  if [[ $n -eq $3 ]]; then
-    pass "$1: $(basename "$2") has $3 line(s)"
-  else
-    fail "$1: $(basename "$2") has $n lines, want $3"
-  fi
-}
+# shellcheck source=tests/tools/cli_lib.sh
+source "$(dirname "$0")/cli_lib.sh"
 
 # --- check: the example scene is valid.
 scene=$root/experiments/scenes/peg_in_hole.json
@@ -715,5 +660,4 @@ else
   fail "run interrupted by SIGINT: an output or staging directory was left"
 fi
 
-echo "$passed passed, $failed failed"
-[[ $failed -eq 0 ]]
+finish

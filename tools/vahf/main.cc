@@ -23,6 +23,7 @@
 #include "vahf/experiment/table1_reference.h"
 #include "vahf/kinds/kind.h"
 #include "vahf/kinds/run_support.h"
+#include "vahf/kinds/verify.h"
 #include "vahf/report/output_directory.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/json_reader.h"
@@ -367,6 +368,28 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
 
+  vahf::kinds::VerifyOptions verify_options;
+  CLI::App* verify = app.add_subcommand(
+      "verify",
+      "Re-run a run from its manifest.json and compare every result file "
+      "(docs/reproducibility.md)");
+  verify->add_option("RUN_DIR", verify_options.run_dir, "a run's output directory")
+      ->required();
+  verify
+      ->add_option("--threads", verify_options.threads,
+                   "worker threads of the re-run (default: the run's; results do not "
+                   "depend on it)")
+      ->transform(decimal(1024))
+      ->check(CLI::Range(1, 1024));
+  verify->add_option("--keep", verify_options.keep,
+                     "keep the re-run's output directory here (default: a temporary "
+                     "directory, removed)");
+  verify->footer(
+      "Run it from the directory the run was started in: inputs are found by the paths "
+      "the manifest records. Exit status: 0 every result file identical; 1 one differs "
+      "(the first named by file, row and column); 2 an unusable manifest, or an input "
+      "missing or changed since the run (one line).");
+
   CLI::App* params = app.add_subcommand(
       "params", "Print every model parameter with its unit, rule and default (Markdown)");
 
@@ -395,6 +418,10 @@ int main(int argc, char** argv) {
     if (*trial) return Trial(trial_args);
     if (*run) return Run(run_args);
     if (*synthesize) return Synthesize(synth_args);
+    if (*verify) {
+      vahf::experiment::InstallInterruptHandler();
+      return vahf::kinds::Verify(verify_options);
+    }
     if (*params) {
       std::fputs(vahf::scene::ParameterTableMarkdown().c_str(), stdout);
       return 0;

@@ -59,7 +59,7 @@ int RunCalibration(const scene::ExperimentFile& file, const RunContext& context)
       file.scene, lab, file.Input<calibrate::CalibrationDesign>(), file.file,
       settings.seed, trials, options,
       [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
-  const report::RunInfo info{settings.threads, SecondsSince(start)};
+  const report::RunInfo info{settings.threads, SecondsSince(start), settings.trials};
   const report::RunOutput written = WriteLabRun(
       file, lab, context, trials, " per lab operator and parameter vector",
       KindSection(context, report::CalibrationSection(file, lab, stages)), info);

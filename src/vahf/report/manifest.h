@@ -40,7 +40,18 @@ std::string ResultsDigest(const std::map<std::string, std::string>& files);
 std::string ResultsDigestOfFiles(const std::string& root,
                                  const std::vector<std::string>& names);
 
+// How the run was started, so that `vahf verify` can start it again: the
+// experiment file and override file as named on the command line (empty: no
+// --overrides), the seed it ran with and the --trials given (0: the file's).
+struct Invocation {
+  std::string experiment;
+  std::string overrides;
+  std::uint64_t seed = 0;
+  std::int64_t trials = 0;
+};
+
 struct ManifestFields {
+  Invocation invocation;
   InputFile experiment;
   InputFile scene;
   std::uint64_t seed = 0;
@@ -52,11 +63,42 @@ struct ManifestFields {
   std::string results_digest;
 };
 
-// {"format": "vahf-manifest/1", "experiment": {"path", "sha256"}, "scene":
-// {...}, "seed", "trials", "threads", "parameters": ParametersToJson,
+// {"format": "vahf-manifest/1", "invocation": {"experiment", "overrides",
+// "seed", "trials"}, "experiment": {"path", "sha256"}, "scene": {...},
+// "seed", "trials", "threads", "parameters": ParametersToJson,
 // "build": {"version", "git_describe", "compiler", "compiler_version",
 // "build_type", "cxx_flags"}, "result_files": [...], "results_digest"}.
 // Keys are sorted, so dump() is deterministic.
 nlohmann::json ManifestJson(const ManifestFields& fields);
+
+// A manifest as `vahf verify` reads it back.
+struct RecordedRun {
+  std::string file;  // the manifest's path, for messages
+  Invocation invocation;
+  int threads = 1;
+  // Every input with its digest and the JSON pointer of its "sha256": the
+  // experiment, the scene, then "inputs" in order.
+  struct Input {
+    InputFile file;
+    std::string pointer;
+  };
+  std::vector<Input> inputs;
+  nlohmann::json build;  // as written: compared with this program's
+  std::vector<std::string> result_files;
+  std::string results_digest;
+};
+
+// Reads `path` (a run's manifest.json). An InputError names the file, the
+// pointer, the value and the rule for anything verify cannot use: another
+// format, a missing field, a result file that is not a plain relative path,
+// a digest that is not 64 hexadecimal digits, and a manifest written before
+// "invocation" existed.
+RecordedRun ReadManifest(const std::string& path);
+
+// The fields of this program's build that differ from `recorded` (a
+// manifest's "build"), each as "NAME: RECORDED (run) vs THIS (this
+// program)"; empty when the build is the same.
+std::vector<std::string> BuildDifferences(const nlohmann::json& recorded,
+                                          const BuildInfo& build = GetBuildInfo());
 
 }  // namespace vahf::report

@@ -160,6 +160,7 @@ std::vector<std::string> WriteMeasured(const std::vector<Section>& sections,
 // The manifest: the experiment file, the first scene, and every file read.
 nlohmann::json Manifest(const RunHeader& h, const RunInfo& info, ManifestFields* m,
                         const std::vector<std::string>& measured_files) {
+  m->invocation = {h.file->file, h.file->overrides_path, h.seed, info.trials_option};
   m->experiment = DescribeInputFile(h.file->file);
   m->scene = DescribeInputFile(h.first->scene_path);
   m->seed = h.seed;

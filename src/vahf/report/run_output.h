@@ -15,6 +15,8 @@ namespace vahf::report {
 struct RunInfo {
   int threads = 1;
   double wall_seconds = 0;  // in report.md only, never in a result file
+  int trials_option =
+      0;  // the --trials given, 0 for the file's (the manifest's invocation)
 };
 
 struct RunOutput {

@@ -1,0 +1,181 @@
+#include "vahf/kinds/verify.h"
+
+#include <fmt/format.h>
+#include <stdlib.h>  // mkdtemp (POSIX)
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <system_error>
+
+#include "vahf/core/error.h"
+#include "vahf/kinds/kind.h"
+#include "vahf/report/digest.h"
+#include "vahf/report/manifest.h"
+#include "vahf/report/output_directory.h"
+#include "vahf/report/result_diff.h"
+#include "vahf/scene/overrides.h"
+
+namespace vahf::kinds {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The bytes of `path`; nothing when it is not a readable regular file.
+std::optional<std::string> ReadBytes(const fs::path& path) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// Every input present with the digest the run recorded.
+void CheckInputs(const report::RecordedRun& run) {
+  for (const report::RecordedRun::Input& in : run.inputs) {
+    std::error_code error;
+    if (!fs::is_regular_file(in.file.path, error))
+      throw InputError(
+          run.file, in.pointer, in.file.sha256,
+          fmt::format("the input {} is missing (verify reads the run's inputs "
+                      "by their recorded paths, from the directory it is "
+                      "started in)",
+                      in.file.path));
+    const std::string now = report::Sha256OfFile(in.file.path);
+    if (now != in.file.sha256)
+      throw InputError(run.file, in.pointer, in.file.sha256,
+                       fmt::format("the input {} now has SHA-256 {}: it changed since "
+                                   "the run, so the run cannot be repeated from it",
+                                   in.file.path, now));
+  }
+}
+
+// A directory made for the re-run, removed with everything in it unless
+// the user asked to keep the output.
+class RerunDirectory {
+ public:
+  explicit RerunDirectory(const std::string& keep) {
+    if (!keep.empty()) {
+      output_ = keep;
+      return;
+    }
+    std::string pattern = (fs::temp_directory_path() / "vahf-verify-XXXXXX").string();
+    if (!mkdtemp(pattern.data()))
+      throw ComputationError(ComputationError::Reason::kRefused,
+                             "verify: cannot create a temporary directory " + pattern);
+    temporary_ = pattern;
+    output_ = temporary_ + "/rerun";
+  }
+  ~RerunDirectory() {
+    std::error_code ignored;
+    if (!temporary_.empty()) fs::remove_all(temporary_, ignored);
+  }
+  RerunDirectory(const RerunDirectory&) = delete;
+  RerunDirectory& operator=(const RerunDirectory&) = delete;
+  const std::string& output() const { return output_; }
+
+ private:
+  std::string temporary_;
+  std::string output_;
+};
+
+// Runs the recorded invocation into `out`; its own lines go to stdout.
+void Rerun(const report::RecordedRun& run, int threads, const std::string& out) {
+  const report::Invocation& i = run.invocation;
+  scene::ExperimentFile file = LoadExperiment(i.experiment);
+  if (!i.overrides.empty())
+    scene::ApplyOverrides(scene::LoadOverrides(i.overrides), &file);
+  RunContext context;
+  context.settings.seed = i.seed;
+  context.settings.trials = static_cast<int>(i.trials);
+  context.settings.threads = threads;
+  report::OutputDirectory directory(out);
+  context.directory = &directory;
+  RunExperiment(file, context);  // a plot it could not render is no result
+}
+
+// Each result file of the run against the re-run's: the first difference,
+// and how many files differ. Files the re-run wrote that the run did not
+// list count as differing too.
+int CompareResults(const report::RecordedRun& run, const std::string& rerun_dir) {
+  const report::RecordedRun again = report::ReadManifest(rerun_dir + "/manifest.json");
+  std::vector<std::string> names = run.result_files;
+  for (const std::string& name : again.result_files)
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  std::sort(names.begin(), names.end());
+  const fs::path dir(run.file);
+  std::string first;
+  int differing = 0;
+  for (const std::string& name : names) {
+    const std::optional<std::string> recorded = ReadBytes(dir.parent_path() / name);
+    const std::optional<std::string> rerun = ReadBytes(fs::path(rerun_dir) / name);
+    std::string what;
+    if (!recorded) {
+      what = name + (rerun ? ": missing from the run directory" : ": missing from both");
+    } else if (!rerun) {
+      what = name + ": the run wrote it, the re-run did not";
+    } else if (const auto d = report::FirstDifference(name, *recorded, *rerun)) {
+      what = d->Text();
+    } else {
+      continue;
+    }
+    if (differing++ == 0) first = what;
+  }
+  if (differing == 0 && again.results_digest == run.results_digest) {
+    std::printf("verify: identical: %zu result files, results digest %s\n", names.size(),
+                run.results_digest.c_str());
+    return 0;
+  }
+  if (differing == 0)  // the files agree but the manifest's digest does not
+    first = fmt::format("manifest.json: results digest {} in the run, {} in the re-run",
+                        run.results_digest, again.results_digest);
+  std::printf("verify: different: %s (%d of %zu result files differ)\n", first.c_str(),
+              differing, names.size());
+  return 1;
+}
+
+}  // namespace
+
+int Verify(const VerifyOptions& options) {
+  const std::string manifest = (fs::path(options.run_dir) / "manifest.json").string();
+  std::error_code error;
+  if (!fs::is_directory(options.run_dir, error))
+    throw InputError(options.run_dir, "", "", "is not a directory (a run's output)");
+  const report::RecordedRun run = report::ReadManifest(manifest);
+  CheckInputs(run);
+  std::printf("verify %s: %zu inputs as the run read them (SHA-256)\n",
+              options.run_dir.c_str(), run.inputs.size());
+  const std::vector<std::string> build = report::BuildDifferences(run.build);
+  if (build.empty()) std::printf("build: the run's\n");
+  for (const std::string& line : build) std::printf("build differs: %s\n", line.c_str());
+  // Whether the files still give the manifest's digest: an edit after the run
+  // shows here before any re-run.
+  bool stored_complete = true;
+  for (const std::string& name : run.result_files)
+    stored_complete =
+        stored_complete && fs::is_regular_file(fs::path(options.run_dir) / name, error);
+  if (!stored_complete || report::ResultsDigestOfFiles(
+                              options.run_dir, run.result_files) != run.results_digest)
+    std::printf(
+        "the run directory's result files no longer give its manifest's results digest "
+        "(changed since the run)\n");
+  const int threads = options.threads > 0 ? options.threads : run.threads;
+  const report::Invocation& i = run.invocation;
+  std::string how = fmt::format("seed {}", i.seed);
+  if (i.trials > 0) how += fmt::format(", --trials {}", i.trials);
+  if (!i.overrides.empty()) how += ", --overrides " + i.overrides;
+  std::printf("re-running %s, %s, on %d thread(s)\n", i.experiment.c_str(), how.c_str(),
+              threads);
+  std::fflush(stdout);
+  const RerunDirectory rerun(options.keep);
+  Rerun(run, threads, rerun.output());
+  if (!options.keep.empty()) std::printf("re-run kept in %s\n", options.keep.c_str());
+  return CompareResults(run, rerun.output());
+}
+
+}  // namespace vahf::kinds
