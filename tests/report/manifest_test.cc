@@ -12,7 +12,7 @@
 #include <fstream>
 
 #include "vahf/core/error.h"
-#include "vahf/report/digest.h"
+#include "vahf/core/digest.h"
 #include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
 

@@ -13,7 +13,7 @@
 
 #include "vahf/core/error.h"
 #include "vahf/kinds/kind.h"
-#include "vahf/report/digest.h"
+#include "vahf/core/digest.h"
 #include "vahf/report/manifest.h"
 #include "vahf/report/output_directory.h"
 #include "vahf/report/result_diff.h"
@@ -46,7 +46,7 @@ void CheckInputs(const report::RecordedRun& run) {
                       "by their recorded paths, from the directory it is "
                       "started in)",
                       in.file.path));
-    const std::string now = report::Sha256OfFile(in.file.path);
+    const std::string now = Sha256OfFile(in.file.path);
     if (now != in.file.sha256)
       throw InputError(run.file, in.pointer, in.file.sha256,
                        fmt::format("the input {} now has SHA-256 {}: it changed since "

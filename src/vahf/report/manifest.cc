@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "vahf/core/error.h"
-#include "vahf/report/digest.h"
+#include "vahf/core/digest.h"
 #include "vahf/scene/json_reader.h"
 #include "vahf/scene/parameter_table.h"
 

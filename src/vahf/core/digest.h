@@ -1,12 +1,13 @@
-// SHA-256 (FIPS 180-4) through OpenSSL's EVP interface: file digests in the
-// manifest and the digest of a run's results (manifest.h).
+// SHA-256 (FIPS 180-4) through OpenSSL's EVP interface: file digests in a
+// run's manifest, the digest of its results (report/manifest.h) and the
+// check of each entry of its journal (experiment/journal.h).
 #pragma once
 
 #include <memory>
 #include <string>
 #include <string_view>
 
-namespace vahf::report {
+namespace vahf {
 
 // An incremental digest: Update() any number of times, then HexDigest() once.
 class Sha256 {
@@ -36,4 +37,4 @@ std::string Sha256Hex(std::string_view bytes);
 // and the operating system's reason.
 std::string Sha256OfFile(const std::string& path);
 
-}  // namespace vahf::report
+}  // namespace vahf

@@ -1,7 +1,7 @@
 // SHA-256 against the FIPS 180-2 examples (Appendix B: "abc" and the 448-bit
 // message) and the empty message; the file digest equals the digest of the
 // file's bytes; an unreadable file names itself and the reason.
-#include "vahf/report/digest.h"
+#include "vahf/core/digest.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 
 #include "vahf/core/error.h"
 
-namespace vahf::report {
+namespace vahf {
 namespace {
 
 TEST(Sha256, Fips180Vectors) {
@@ -59,4 +59,4 @@ TEST(Sha256, UnreadableFileIsAnInputError) {
 }
 
 }  // namespace
-}  // namespace vahf::report
+}  // namespace vahf

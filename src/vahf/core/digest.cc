@@ -1,4 +1,4 @@
-#include "vahf/report/digest.h"
+#include "vahf/core/digest.h"
 
 #include <fmt/format.h>
 #include <openssl/evp.h>
@@ -9,7 +9,7 @@
 
 #include "vahf/core/error.h"
 
-namespace vahf::report {
+namespace vahf {
 
 struct Sha256::Context {
   EVP_MD_CTX* md = nullptr;
@@ -72,4 +72,4 @@ std::string Sha256OfFile(const std::string& path) {
   return sha.HexDigest();
 }
 
-}  // namespace vahf::report
+}  // namespace vahf
