@@ -11,8 +11,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "vahf/core/error.h"
 #include "vahf/core/digest.h"
+#include "vahf/core/error.h"
 #include "vahf/scene/parameter_table.h"
 #include "vahf/scene/scene_loader.h"
 

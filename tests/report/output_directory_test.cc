@@ -1,7 +1,8 @@
 // The output directory appears whole at Commit() or not at all: nothing at
 // PATH while staging or after an abandoned run; a previous output is replaced
 // entirely; folders that are not vahf outputs are never replaced; errors name
-// the path and the operating system's reason.
+// the path and the operating system's reason; a journal with finished work
+// outlives a stopped run, for --resume.
 #include "vahf/report/output_directory.h"
 
 #include <gtest/gtest.h>
@@ -67,6 +68,60 @@ TEST_F(OutputDirectoryTest, AnAbandonedRunLeavesNothing) {
   }  // an exception or Ctrl-C unwinds here without Commit
   EXPECT_FALSE(fs::exists(path));
   EXPECT_FALSE(fs::exists(path + ".partial"));
+}
+
+// The journal (experiment/journal.h): a run that stops with finished work
+// leaves its staging directory for --resume; a fresh run refuses to drop it;
+// the resumed run reads it, lists only output files, and commits without it.
+TEST_F(OutputDirectoryTest, AJournalWithFinishedWorkOutlivesAStoppedRun) {
+  const std::string path = Under("run");
+  const nlohmann::json identity = {{"seed", 1}};
+  {
+    OutputDirectory out(path);
+    out.OpenJournal(identity).Begin(2, "cycles")->Store(1, "cycle one");
+    out.Write("trials.csv", "half");
+    EXPECT_EQ(out.Journaled().written, 1);
+  }  // stopped here without Commit
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_TRUE(fs::exists(path + ".partial/journal/identity.json"));
+  try {
+    OutputDirectory fresh(path);
+    ADD_FAILURE() << "a fresh run dropped the journal";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path + ".partial");
+    EXPECT_NE(e.rule().find("--resume continues it"), std::string::npos);
+  }
+  {
+    OutputDirectory out(path, true);
+    EXPECT_TRUE(out.Files().empty());  // the half-written table went; no journal file
+    auto batch = out.OpenJournal(identity).Begin(2, "cycles");
+    EXPECT_EQ(*batch->Find(1), "cycle one");
+    batch->Store(0, "cycle zero");
+    out.Write("trials.csv", "whole");
+    EXPECT_EQ(out.Files(), std::vector<std::string>{"trials.csv"});
+    out.Commit();
+    EXPECT_EQ(out.Journaled().reused, 1);
+    EXPECT_EQ(out.Journaled().written, 1);
+  }
+  EXPECT_EQ(Read(fs::path(path) / "trials.csv"), "whole");
+  EXPECT_FALSE(fs::exists(fs::path(path) / "journal"));
+  EXPECT_FALSE(fs::exists(path + ".partial"));
+}
+
+TEST_F(OutputDirectoryTest, AJournalWithoutWorkLeavesNothingAndCannotBeResumed) {
+  const std::string path = Under("run");
+  {
+    OutputDirectory out(path);
+    out.OpenJournal({{"seed", 1}}).Begin(2, "cycles");
+  }
+  EXPECT_FALSE(fs::exists(path + ".partial"));
+  try {
+    OutputDirectory out(path, true);
+    ADD_FAILURE() << "resumed nothing";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path + ".partial");
+    EXPECT_NE(e.rule().find("there is nothing to resume"), std::string::npos);
+  }
 }
 
 TEST_F(OutputDirectoryTest, APreviousOutputIsReplacedWhole) {

@@ -1,8 +1,20 @@
-# The helpers the command-line tests share (cli_test.sh, verify_test.sh):
-# a scratch folder $tmp removed on exit, `run ARGS...` of $vahf with its
-# output in $out and $err and its exit status in $status, and the checks,
-# which count into $passed and $failed. Source it after setting $vahf;
+# The helpers the command-line tests share (cli_test.sh, verify_test.sh,
+# resume_test.sh), sourced with the test's arguments VAHF_EXECUTABLE
+# REPO_ROOT: $vahf and $root (absolute), a scratch folder $tmp removed on
+# exit, `run ARGS...` of $vahf with its output in $out and $err and its exit
+# status in $status, and the checks, which count into $passed and $failed;
 # `finish` prints the counts and sets the exit status.
+if [[ $# -ne 2 ]]; then
+  echo "usage: $0 VAHF_EXECUTABLE REPO_ROOT" >&2
+  exit 2
+fi
+vahf=$(realpath "$1")
+root=$(realpath "$2")
+if [[ ! -x "$vahf" ]]; then
+  echo "$0: $vahf is not an executable" >&2
+  exit 2
+fi
+
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/vahf_cli_test.XXXXXX") || exit 1
 trap 'rm -rf -- "$tmp"' EXIT
 

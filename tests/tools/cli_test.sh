@@ -17,7 +17,8 @@
 # `trial` on another kind of vahf file (exit 2, the kind named);
 # `--help`; and bad options (exit 2); `run`: the same results digest on 1 and
 # 2 threads, a bad experiment (exit 2), an --out that is not a vahf output
-# (refused, exit 2, untouched) and SIGINT (exit 130, no output directory left);
+# (refused, exit 2, untouched) and SIGINT (exit 130, no output directory
+# left, the finished cycles journaled);
 # `synthesize` (the shipped synthetic dataset's bytes, on 1 and 2 threads);
 # `run` on the calibrate experiment (calibrated.json, an override file; the
 # same results digest on 2 threads) and `run --overrides` with its output, or
@@ -26,19 +27,8 @@
 # Usage: cli_test.sh VAHF_EXECUTABLE REPO_ROOT
 set -uo pipefail
 
-if [[ $# -ne 2 ]]; then
-  echo "usage: $0 VAHF_EXECUTABLE REPO_ROOT" >&2
-  exit 2
-fi
-vahf=$1
-root=$2
-if [[ ! -x "$vahf" ]]; then
-  echo "$0: $vahf is not an executable" >&2
-  exit 2
-fi
-
 # shellcheck source=tests/tools/cli_lib.sh
-source "$(dirname "$0")/cli_lib.sh"
+source "$(dirname "$0")/cli_lib.sh" "$@"
 
 # --- check: the example scene is valid.
 scene=$root/experiments/scenes/peg_in_hole.json
@@ -645,7 +635,9 @@ else
   fail "run --overrides breaking an operator's reach rule: an output directory was written"
 fi
 
-# --- run: SIGINT stops the run with exit status 130 and writes nothing.
+# --- run: SIGINT stops the run with exit status 130 and writes no output; the
+# finished cycles stay journaled in the staging directory, for --resume
+# (resume_test.sh resumes such runs).
 "$vahf" run "$root/experiments/fatigue.json" --trials 50 --out "$tmp/int" >"$out" 2>"$err" &
 pid=$!
 sleep 1.5
@@ -653,11 +645,14 @@ kill -INT "$pid"
 wait "$pid"
 status=$?
 expect_status "run interrupted by SIGINT" 130
-expect_in "run interrupted by SIGINT" "$err" "interrupted"
-if [[ ! -e "$tmp/int" && ! -e "$tmp/int.partial" ]]; then
-  pass "run interrupted by SIGINT: no output or staging directory"
+expect_lines "run interrupted by SIGINT" "$err" 1
+expect_in "run interrupted by SIGINT" "$err" "vahf: interrupted: "
+expect_in "run interrupted by SIGINT" "$err" \
+  "are journaled in $tmp/int.partial: the same command with --resume continues the run"
+if [[ ! -e "$tmp/int" && "$(ls "$tmp/int.partial")" == journal ]]; then
+  pass "run interrupted by SIGINT: no output directory, the staging holds the journal only"
 else
-  fail "run interrupted by SIGINT: an output or staging directory was left"
+  fail "run interrupted by SIGINT: an output directory, or no journal, was left"
 fi
 
 finish

@@ -10,19 +10,8 @@
 # Usage: verify_test.sh VAHF_EXECUTABLE REPO_ROOT
 set -uo pipefail
 
-if [[ $# -ne 2 ]]; then
-  echo "usage: $0 VAHF_EXECUTABLE REPO_ROOT" >&2
-  exit 2
-fi
-vahf=$(realpath "$1")
-root=$(realpath "$2")
-if [[ ! -x "$vahf" ]]; then
-  echo "$0: $vahf is not an executable" >&2
-  exit 2
-fi
-
 # shellcheck source=tests/tools/cli_lib.sh
-source "$(dirname "$0")/cli_lib.sh"
+source "$(dirname "$0")/cli_lib.sh" "$@"
 
 # The re-runs' temporary directories go here, to see that they are removed.
 export TMPDIR=$tmp/scratch

@@ -188,6 +188,7 @@ struct RunArgs {
   int trials = 0;
   int threads = 1;
   std::string out;
+  bool resume = false;
 };
 
 int Run(const RunArgs& a) {
@@ -202,10 +203,23 @@ int Run(const RunArgs& a) {
                                               std::to_string(context.settings.seed)
                                         : a.out;
   // Checked and staged before any simulation: a refused path costs nothing.
-  vahf::report::OutputDirectory directory(out);
+  vahf::report::OutputDirectory directory(out, a.resume);
   context.directory = &directory;
   vahf::experiment::InstallInterruptHandler();
-  return vahf::kinds::RunExperiment(file, context);
+  try {
+    const int status = vahf::kinds::RunExperiment(file, context);
+    if (a.resume)
+      std::printf("resumed: %lld results taken from the journal, %lld computed\n",
+                  static_cast<long long>(directory.Journaled().reused),
+                  static_cast<long long>(directory.Journaled().written));
+    return status;
+  } catch (const vahf::experiment::Interrupted& e) {
+    if (directory.Journaled().total() == 0) throw;
+    throw vahf::experiment::Interrupted(fmt::format(
+        "{}; its {} finished results are journaled in {}: the same command with "
+        "--resume continues the run",
+        e.what(), directory.Journaled().total(), directory.staging()));
+  }
 }
 
 struct SynthesizeArgs {
@@ -345,6 +359,11 @@ int main(int argc, char** argv) {
       "output directory (default runs/NAME-seedSEED); replaced whole, only if it "
       "is empty or a previous vahf output");
 
+  run->add_flag("--resume", run_args.resume,
+                "continue the stopped run of the same command (Ctrl-C, kill, power "
+                "loss) from the journal in its output's .partial folder: only what is "
+                "missing runs, and the results are the same bits "
+                "(docs/reproducibility.md)");
   run->add_option("--overrides", run_args.overrides,
                   "parameter-override file (vahf-overrides/1, e.g. a calibration's "
                   "calibrated.json) applied to every scene the experiment runs");

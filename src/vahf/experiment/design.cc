@@ -9,6 +9,7 @@
 #include "vahf/experiment/fatigue_input.h"
 #include "vahf/experiment/groups_input.h"
 #include "vahf/experiment/precision_design.h"
+#include "vahf/experiment/result_codec.h"
 
 namespace vahf::experiment {
 
@@ -37,7 +38,7 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
           sim::BuildSequenceModels(*conds[c].scene));
     models.push_back(built);
   }
-  out.records = RunIndexed<CycleRecord>(first.back(), options, [&](std::size_t k) {
+  const std::function<CycleRecord(std::size_t)> cycle = [&](std::size_t k) {
     CycleRecord r;
     r.condition = static_cast<std::size_t>(
         std::upper_bound(first.begin(), first.end(), k) - first.begin() - 1);
@@ -52,20 +53,23 @@ DesignRun RunDesign(std::vector<Condition> conditions, int trials, std::uint64_t
     r.result = RunCycle(*models[r.condition], seed, r.cycle, r.initial_work, record_trace,
                         r.repetition);
     return r;
-  });
+  };
+  out.records = RunIndexed<CycleRecord>(first.back(), options, cycle, &kCycleRecordCodec);
   return out;
 }
 
-namespace {
-
-RunnerOptions Options(const RunSettings& s, const std::string& label) {
+RunnerOptions RunnerOptionsOf(const RunSettings& s, const std::string& label,
+                              const std::string& unit) {
   RunnerOptions o;
   o.threads = s.threads;
   o.label = label;
-  o.unit = "cycles";  // RunDesign's indices are assembly cycles
+  o.unit = unit;
   o.progress = s.progress;
+  o.journal = s.journal;
   return o;
 }
+
+namespace {
 
 std::shared_ptr<const scene::Scene> Share(const scene::Scene& s) {
   return std::make_shared<const scene::Scene>(s);
@@ -126,7 +130,7 @@ ExperimentRun Begin(const scene::ExperimentFile& file, const RunSettings& settin
 }
 
 RunnerOptions Options(const scene::ExperimentFile& file, const RunSettings& settings) {
-  return Options(settings, file.name + " (" + file.kind + ")");
+  return RunnerOptionsOf(settings, file.name + " (" + file.kind + ")");
 }
 
 }  // namespace
@@ -170,7 +174,7 @@ ExperimentRun FatigueExperimentRun(const scene::ExperimentFile& file,
   ExperimentRun out = Begin(file, settings);
   FatigueRun f = RunFatigue(Share(file.scene), file.Input<FatigueInput>().fatigue,
                             out.trials, out.seed, Options(file, settings),
-                            Options(settings, file.name + " (fatigue pilot)"));
+                            RunnerOptionsOf(settings, file.name + " (fatigue pilot)"));
   out.pilot = std::move(f.pilot);
   out.work_rate = f.work_rate;
   out.run = std::move(f.run);

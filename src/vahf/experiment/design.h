@@ -101,7 +101,13 @@ struct RunSettings {
   int trials = 0;  // > 0 overrides the experiment file's
   int threads = 1;
   bool progress = true;
+  Journal* journal = nullptr;  // the run's journal (journal.h); null: none
 };
+
+// The runner's options of a run with these settings (threads, progress,
+// journal), its indices called `unit` on the progress line of `label`.
+RunnerOptions RunnerOptionsOf(const RunSettings& settings, const std::string& label,
+                              const std::string& unit = "cycles");
 
 struct ExperimentRun {
   const scene::ExperimentFile* file = nullptr;

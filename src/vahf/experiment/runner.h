@@ -8,12 +8,14 @@
 #include <cstddef>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "vahf/experiment/interrupt.h"
+#include "vahf/experiment/journal.h"
 
 namespace vahf::experiment {
 
@@ -23,6 +25,17 @@ struct RunnerOptions {
   std::string unit = "trials";  // what one index is, on the progress line
   bool progress = true;         // print the progress line (progress.h)
   std::FILE* progress_stream = stderr;
+  // Keeps each finished index and resumes those it holds (journal.h), for a
+  // RunIndexed given a codec; null: nothing is kept.
+  Journal* journal = nullptr;
+};
+
+// How a journal keeps a result of type R: as bytes and back, exactly
+// (result_codec.h).
+template <class R>
+struct ResultCodec {
+  std::string (*encode)(const R&);
+  R (*decode)(const std::string&);
 };
 
 namespace internal {
@@ -42,13 +55,31 @@ void RunIndices(std::size_t n, const RunnerOptions& options,
 // if StopRequested() became true, indices not yet started are skipped, running
 // ones finish, and Interrupted is thrown. threads < 1 is a ComputationError
 // (kOutOfDomain).
+// With options.journal and a codec, it is one batch of the journal: an
+// index the journal holds is decoded instead of run (fn is not called for
+// it), and every index run is journaled as it finishes. The results are the
+// same bits either way.
 template <class R>
 std::vector<R> RunIndexed(std::size_t n, const RunnerOptions& options,
-                          const std::function<R(std::size_t)>& fn) {
+                          const std::function<R(std::size_t)>& fn,
+                          const ResultCodec<R>* codec = nullptr) {
   // optional<R>: R need not be default-constructible; each worker writes only
   // the slots of the indices it took.
   std::vector<std::optional<R>> slots(n);
-  internal::RunIndices(n, options, [&](std::size_t i) { slots[i].emplace(fn(i)); });
+  if (options.journal && codec) {
+    const std::unique_ptr<Journal::Batch> batch =
+        options.journal->Begin(n, options.label);
+    internal::RunIndices(n, options, [&](std::size_t i) {
+      if (const std::optional<std::string> bytes = batch->Find(i)) {
+        slots[i].emplace(codec->decode(*bytes));
+      } else {
+        slots[i].emplace(fn(i));
+        batch->Store(i, codec->encode(*slots[i]));
+      }
+    });
+  } else {
+    internal::RunIndices(n, options, [&](std::size_t i) { slots[i].emplace(fn(i)); });
+  }
   std::vector<R> results;
   results.reserve(n);
   for (std::optional<R>& slot : slots) results.push_back(std::move(*slot));

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "vahf/experiment/cycle.h"
+#include "vahf/experiment/result_codec.h"
 #include "vahf/sim/trial.h"
 #include "vahf/sim/trial_model.h"
 
@@ -84,7 +85,7 @@ std::vector<StabilityTrial> RunStabilityTrials(const StabilityDesign& design,
       }
     }
   }
-  return RunIndexed<StabilityTrial>(plan.size(), options, [&](std::size_t n) {
+  const std::function<StabilityTrial(std::size_t)> trial = [&](std::size_t n) {
     StabilityTrial t = plan[n];
     const StabilityCase& c = design.cases[t.case_index];
     const scene::Scene& scene = c.scenes[t.integrator_index];
@@ -98,7 +99,8 @@ std::vector<StabilityTrial> RunStabilityTrials(const StabilityDesign& design,
         trial_options);
     t.failures = StabilityFailures(c, t.result, scene.params.simulation.max_steps);
     return t;
-  });
+  };
+  return RunIndexed<StabilityTrial>(plan.size(), options, trial, &kStabilityTrialCodec);
 }
 
 }  // namespace vahf::experiment

@@ -52,8 +52,8 @@ int RunCalibration(const scene::ExperimentFile& file, const RunContext& context)
   const data::LabDataset lab =
       data::LoadLabDataset(file.Input<calibrate::CalibrationDesign>().lab_path);
   const int trials = settings.trials > 0 ? settings.trials : file.trials;
-  experiment::RunnerOptions options;
-  options.threads = settings.threads;
+  const experiment::RunnerOptions options =
+      experiment::RunnerOptionsOf(settings, file.name + " (calibrate)");
   const auto start = std::chrono::steady_clock::now();
   const std::vector<calibrate::CalibrationResult> stages = calibrate::Calibrate(
       file.scene, lab, file.Input<calibrate::CalibrationDesign>(), file.file,

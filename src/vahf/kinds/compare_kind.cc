@@ -46,10 +46,8 @@ int RunComparison(const scene::ExperimentFile& file, const RunContext& context) 
   const data::LabDataset lab =
       data::LoadLabDataset(file.Input<compare::ComparisonDesign>().lab_path);
   const int trials = settings.trials > 0 ? settings.trials : file.trials;
-  experiment::RunnerOptions options;
-  options.threads = settings.threads;
-  options.label = file.name + " (compare)";
-  options.unit = "cycles";
+  const experiment::RunnerOptions options =
+      experiment::RunnerOptionsOf(settings, file.name + " (compare)");
   experiment::RunnerOptions pilot_options = options;
   pilot_options.label = file.name + " (compare, fatigue pilot)";
   const auto start = std::chrono::steady_clock::now();

@@ -10,6 +10,7 @@
 #include "vahf/core/error.h"
 #include "vahf/kinds/kind.h"
 #include "vahf/kinds/run_support.h"
+#include "vahf/report/manifest.h"
 #include "vahf/report/run_output.h"
 #include "vahf/scene/json_reader.h"
 
@@ -120,14 +121,19 @@ std::vector<report::Section> Sections(const experiment::ExperimentRun& run) {
   return out;
 }
 
-int RunExperiment(const scene::ExperimentFile& file, const RunContext& context) {
+int RunExperiment(const scene::ExperimentFile& file, const RunContext& given) {
   const Kind& kind = FindKind(file.kind);
   kind.check(file);  // what check rejects fails now, before any trial
-  if (kind.run) {
-    RunContext own = context;
-    own.kind = &kind;
-    return kind.run(file, own);
-  }
+  RunContext context = given;
+  context.kind = &kind;
+  // The journal: what it takes to resume this run (docs/reproducibility.md).
+  std::vector<std::string> files = {file.file, file.overrides_path, file.scene_path};
+  if (file.input)
+    for (const std::string& f : file.input->InputFiles()) files.push_back(f);
+  context.settings.journal = &context.directory->OpenJournal(report::RunIdentity(
+      {file.file, file.overrides_path, context.settings.seed, context.settings.trials},
+      files));
+  if (kind.run) return kind.run(file, context);
   const auto start = std::chrono::steady_clock::now();
   const experiment::ExperimentRun run = RunDesign(file, context.settings);
   const report::RunInfo info{context.settings.threads, SecondsSince(start),

@@ -38,11 +38,8 @@ std::string CheckStability(const scene::ExperimentFile& file) {
 
 int RunStability(const scene::ExperimentFile& file, const RunContext& context) {
   const experiment::RunSettings& settings = context.settings;
-  experiment::RunnerOptions options;
-  options.threads = settings.threads;
-  options.label = file.name + " (stability)";
-  options.unit = "trials";
-  options.progress = settings.progress;
+  const experiment::RunnerOptions options =
+      experiment::RunnerOptionsOf(settings, file.name + " (stability)", "trials");
   const auto start = std::chrono::steady_clock::now();
   const std::vector<experiment::StabilityTrial> trials = experiment::RunStabilityTrials(
       file.Input<experiment::StabilityDesign>(), settings.seed, options);

@@ -11,9 +11,9 @@
 #include <sstream>
 #include <system_error>
 
+#include "vahf/core/digest.h"
 #include "vahf/core/error.h"
 #include "vahf/kinds/kind.h"
-#include "vahf/core/digest.h"
 #include "vahf/report/manifest.h"
 #include "vahf/report/output_directory.h"
 #include "vahf/report/result_diff.h"

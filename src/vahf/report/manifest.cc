@@ -5,8 +5,8 @@
 #include <optional>
 #include <string_view>
 
-#include "vahf/core/error.h"
 #include "vahf/core/digest.h"
+#include "vahf/core/error.h"
 #include "vahf/scene/json_reader.h"
 #include "vahf/scene/parameter_table.h"
 
@@ -80,20 +80,22 @@ nlohmann::json BuildJson(const BuildInfo& b) {
           {"libraries", libraries}};
 }
 
+nlohmann::json InvocationJson(const Invocation& i) {
+  return {{"experiment", i.experiment},
+          {"overrides", i.overrides},
+          {"seed", i.seed},
+          {"trials", i.trials}};
+}
+
 }  // namespace
 
 nlohmann::json ManifestJson(const ManifestFields& f) {
   const auto input = [](const InputFile& file) {
     return nlohmann::json{{"path", file.path}, {"sha256", file.sha256}};
   };
-  const Invocation& i = f.invocation;
   return {
       {"format", kManifestFormat},
-      {"invocation",
-       {{"experiment", i.experiment},
-        {"overrides", i.overrides},
-        {"seed", i.seed},
-        {"trials", i.trials}}},
+      {"invocation", InvocationJson(f.invocation)},
       {"experiment", input(f.experiment)},
       {"scene", input(f.scene)},
       {"seed", f.seed},
@@ -104,6 +106,15 @@ nlohmann::json ManifestJson(const ManifestFields& f) {
       {"result_files", f.result_files},
       {"results_digest", f.results_digest},
   };
+}
+
+nlohmann::json RunIdentity(const Invocation& i, const std::vector<std::string>& files) {
+  nlohmann::json digests = nlohmann::json::object();
+  for (const std::string& f : files)
+    if (!f.empty()) digests[f] = Sha256OfFile(f);
+  return {{"invocation", InvocationJson(i)},
+          {"inputs", digests},
+          {"build", BuildJson(GetBuildInfo())}};
 }
 
 namespace {

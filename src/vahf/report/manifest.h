@@ -71,6 +71,15 @@ struct ManifestFields {
 // Keys are sorted, so dump() is deterministic.
 nlohmann::json ManifestJson(const ManifestFields& fields);
 
+// What a run's journal must find equal to resume it (experiment/journal.h):
+// the invocation, the SHA-256 of each file the experiment names before it
+// runs (the experiment, the override file, its scene, and the files its kind
+// lists: conditions' scenes, a paper table, a paper run's experiments) and
+// the build. Files found only while running (a lab dataset's tables) are
+// not in it; `vahf verify` checks those afterwards.
+nlohmann::json RunIdentity(const Invocation& invocation,
+                           const std::vector<std::string>& files);
+
 // A manifest as `vahf verify` reads it back.
 struct RecordedRun {
   std::string file;  // the manifest's path, for messages

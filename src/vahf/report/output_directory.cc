@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 
 #include "vahf/core/atomic_file.h"
@@ -47,10 +48,27 @@ void CheckReplaceable(const std::string& path) {
   }
 }
 
+constexpr const char* kJournal = "journal";
+
+// Whether the staging directory holds a journal with finished work: a batch
+// file longer than its header line.
+bool HoldsJournal(const std::string& staging) {
+  std::error_code ec;
+  for (fs::directory_iterator it(fs::path(staging) / kJournal, ec), end; !ec && it != end;
+       it.increment(ec)) {
+    if (it->path().extension() != ".log") continue;
+    std::ifstream in(it->path());
+    std::string header;
+    std::getline(in, header);
+    if (in.peek() != std::ifstream::traits_type::eof()) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
-OutputDirectory::OutputDirectory(const std::string& path)
-    : path_(Normalize(path)), staging_(path_ + ".partial") {
+OutputDirectory::OutputDirectory(const std::string& path, bool resume)
+    : path_(Normalize(path)), staging_(path_ + ".partial"), resume_(resume) {
   CheckReplaceable(path_);
   std::error_code ec;
   const fs::path parent = fs::path(path_).parent_path();
@@ -58,6 +76,22 @@ OutputDirectory::OutputDirectory(const std::string& path)
     fs::create_directories(parent, ec);
     if (ec) Fail(parent.string(), "cannot create the folder", ec);
   }
+  const bool journal = HoldsJournal(staging_);
+  if (resume) {
+    if (!journal)
+      throw InputError(staging_, "", "",
+                       "holds no journal of a stopped run: there is nothing to resume "
+                       "(run without --resume)");
+    // The journal stays; files a stopped output write left go.
+    for (fs::directory_iterator it(staging_, ec), end; !ec && it != end; it.increment(ec))
+      if (it->path().filename() != kJournal) fs::remove_all(it->path(), ec);
+    if (ec) Fail(staging_, "cannot clear the staging directory", ec);
+    return;
+  }
+  if (journal)
+    throw InputError(staging_, "", "",
+                     "holds the journal of a stopped run: the same command with --resume "
+                     "continues it; remove the folder to start afresh");
   fs::remove_all(staging_, ec);
   if (ec) Fail(staging_, "cannot remove the staging directory of an earlier run", ec);
   fs::create_directory(staging_, ec);
@@ -66,8 +100,23 @@ OutputDirectory::OutputDirectory(const std::string& path)
 
 OutputDirectory::~OutputDirectory() {
   if (committed_) return;
+  journal_.reset();
+  // A journal with finished work stays, also one a refused --resume found.
+  const bool keep = HoldsJournal(staging_);
   std::error_code ec;
-  fs::remove_all(staging_, ec);  // best effort: a destructor must not throw
+  if (!keep) fs::remove_all(staging_, ec);  // best effort: a destructor must not throw
+}
+
+experiment::Journal& OutputDirectory::OpenJournal(const nlohmann::json& identity) {
+  VAHF_CHECK(!journal_ && !committed_, "one journal per output, before Commit()");
+  journal_ = std::make_unique<experiment::Journal>(
+      (fs::path(staging_) / kJournal).string(), identity, resume_);
+  return *journal_;
+}
+
+OutputDirectory::JournalCounts OutputDirectory::Journaled() const {
+  if (!journal_) return closed_;
+  return {journal_->reused(), journal_->written()};
 }
 
 std::string OutputDirectory::StagedPath(const std::string& relative) const {
@@ -100,9 +149,9 @@ std::vector<std::string> OutputDirectory::Files() const {
   std::error_code ec;
   for (fs::recursive_directory_iterator it(root, ec), end; !ec && it != end;
        it.increment(ec)) {
-    if (it->is_regular_file(ec)) {
-      names.push_back(it->path().lexically_relative(root).generic_string());
-    }
+    const std::string name = it->path().lexically_relative(root).generic_string();
+    if (name == kJournal) it.disable_recursion_pending();  // not an output file
+    if (name != kJournal && it->is_regular_file(ec)) names.push_back(name);
   }
   if (ec) Fail(root.string(), "cannot list the output files", ec);
   std::sort(names.begin(), names.end());
@@ -112,8 +161,12 @@ std::vector<std::string> OutputDirectory::Files() const {
 void OutputDirectory::Commit() {
   VAHF_CHECK(!committed_, "OutputDirectory::Commit called twice");
   CheckReplaceable(path_);  // it may have appeared since the constructor
-  const std::string old = path_ + ".old";
+  closed_ = Journaled();
+  journal_.reset();
   std::error_code ec;
+  fs::remove_all(fs::path(staging_) / kJournal, ec);
+  if (ec) Fail(staging_, "cannot remove the run's journal", ec);
+  const std::string old = path_ + ".old";
   fs::remove_all(old, ec);
   if (ec) Fail(old, "cannot remove a stale previous output", ec);
   const bool had_old = fs::exists(path_, ec);

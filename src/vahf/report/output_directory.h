@@ -2,11 +2,18 @@
 // docs/outputs.md). Every file is staged in a sibling directory PATH.partial;
 // Commit() swaps it in for PATH with renames, so PATH holds either the previous
 // complete output or the new complete output, never a mixture or a part.
+// The staging directory also holds the run's journal (experiment/journal.h,
+// docs/reproducibility.md "Resume"), which outlives a run that stops with
+// finished cycles, so that the same command with --resume continues it.
 #pragma once
 
+#include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "vahf/experiment/journal.h"
 
 namespace vahf::report {
 
@@ -18,10 +25,14 @@ class OutputDirectory {
   static constexpr const char* kMarkerFile = "manifest.json";
 
   // Checks that PATH may be replaced, creates its parent folders, and creates
-  // PATH.partial fresh (removing one a crashed run left). Failures are
-  // InputErrors naming the path and the operating system's reason.
-  explicit OutputDirectory(const std::string& path);
-  // Without Commit(), removes the staging directory: PATH is untouched.
+  // PATH.partial fresh (removing one a failed run left, unless it holds a
+  // stopped run's journal: that is an InputError saying --resume continues
+  // it). With `resume`, PATH.partial must hold a journal, which is kept (the
+  // files staged beside it are removed). Failures are InputErrors naming the
+  // path and the operating system's reason.
+  explicit OutputDirectory(const std::string& path, bool resume = false);
+  // Without Commit(), removes the staging directory, unless its journal
+  // holds finished work: PATH is untouched.
   ~OutputDirectory();
   OutputDirectory(const OutputDirectory&) = delete;
   OutputDirectory& operator=(const OutputDirectory&) = delete;
@@ -41,9 +52,21 @@ class OutputDirectory {
   // The regular files staged so far, relative, '/'-separated, sorted by name.
   std::vector<std::string> Files() const;
 
-  // Replaces PATH by the staged directory: renames PATH to PATH.old (removing
-  // a stale one), renames PATH.partial to PATH, then removes PATH.old. If the
-  // second rename fails, PATH.old is renamed back. Once only.
+  // Opens the run's journal in PATH.partial/journal (Journal's constructor:
+  // fresh, or the one to resume, which must have the same `identity`).
+  experiment::Journal& OpenJournal(const nlohmann::json& identity);
+  // The journal's entries reused from a stopped run and written by this one,
+  // so far (kept after Commit()); zeros without a journal.
+  struct JournalCounts {
+    std::int64_t reused = 0, written = 0;
+    std::int64_t total() const { return reused + written; }
+  };
+  JournalCounts Journaled() const;
+
+  // Removes the journal, then replaces PATH by the staged directory: renames
+  // PATH to PATH.old (removing a stale one), renames PATH.partial to PATH,
+  // then removes PATH.old. If the second rename fails, PATH.old is renamed
+  // back. Once only.
   void Commit();
   bool committed() const { return committed_; }
 
@@ -52,6 +75,9 @@ class OutputDirectory {
 
   std::string path_;
   std::string staging_;
+  bool resume_ = false;
+  std::unique_ptr<experiment::Journal> journal_;
+  JournalCounts closed_;  // the counts of the journal, once closed
   bool committed_ = false;
 };
 

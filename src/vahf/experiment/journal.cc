@@ -1,0 +1,170 @@
+#include "vahf/experiment/journal.h"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "vahf/core/atomic_file.h"
+#include "vahf/core/digest.h"
+#include "vahf/core/error.h"
+
+namespace vahf::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kBatchFormat = "vahf-journal-batch/1";
+constexpr const char* kIdentityFile = "identity.json";
+
+[[noreturn]] void Refused(const std::string& what, const std::string& path, int error) {
+  throw ComputationError(
+      ComputationError::Reason::kRefused,
+      fmt::format("journal: cannot {} {}: {}", what, path, std::strerror(error)));
+}
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// What a record's digest covers: its index, its length and its bytes.
+std::string RecordDigest(std::size_t index, const std::string& bytes) {
+  Sha256 sha;
+  sha.Update(fmt::format("{} {}\n", index, bytes.size()));
+  sha.Update(bytes);
+  return sha.HexDigest();
+}
+
+std::string Shown(const nlohmann::json& value) {
+  const std::string text = value.is_null() ? "(none)" : value.dump();
+  return text.size() <= 100 ? text
+                            : text.substr(0, 60) + "..." + text.substr(text.size() - 37);
+}
+
+// Reads one "entry INDEX LENGTH SHA256\n" record at `pos`; false if it does
+// not check (torn, zeroed, or not a record).
+bool ReadRecord(const std::string& text, std::size_t* pos, std::size_t* index,
+                std::string* bytes) {
+  const std::size_t end = text.find('\n', *pos);
+  if (end == std::string::npos) return false;
+  std::istringstream line(text.substr(*pos, end - *pos));
+  std::string word, sha;
+  std::size_t length = 0;
+  if (!(line >> word >> *index >> length >> sha) || word != "entry") return false;
+  const std::size_t start = end + 1;
+  if (length > text.size() || start + length >= text.size() ||
+      text[start + length] != '\n')
+    return false;
+  *bytes = text.substr(start, length);
+  if (RecordDigest(*index, *bytes) != sha) return false;
+  *pos = start + length + 1;
+  return true;
+}
+
+}  // namespace
+
+Journal::Journal(std::string directory, const nlohmann::json& identity, bool resume)
+    : directory_(std::move(directory)), resume_(resume) {
+  const std::string identity_path = (fs::path(directory_) / kIdentityFile).string();
+  std::error_code error;
+  if (!resume) {
+    fs::remove_all(directory_, error);
+    fs::create_directories(directory_, error);
+    if (error) Refused("create", directory_, error.value());
+    WriteFileAtomically(identity_path, identity.dump(1) + "\n");
+    return;
+  }
+  if (!fs::is_regular_file(identity_path, error))
+    throw InputError(identity_path, "", "",
+                     "is missing: there is no journaled run here to resume");
+  const nlohmann::json journaled = nlohmann::json::parse(ReadAll(identity_path), nullptr,
+                                                         /*allow_exceptions=*/false);
+  for (const auto& [key, value] : identity.items())
+    if (!journaled.is_object() || !journaled.contains(key) || journaled[key] != value)
+      throw InputError(
+          identity_path, "/" + key,
+          journaled.is_object() && journaled.contains(key) ? Shown(journaled[key])
+                                                           : "(none)",
+          fmt::format("the journaled run had this; this command gives {}: --resume "
+                      "continues only the same run (without it, the run starts afresh)",
+                      Shown(value)));
+}
+
+Journal::~Journal() = default;
+
+std::unique_ptr<Journal::Batch> Journal::Begin(std::size_t indices,
+                                               const std::string& label) {
+  const std::string path =
+      (fs::path(directory_) / fmt::format("batch-{}.log", batches_++)).string();
+  std::unique_ptr<Batch> batch(new Batch(this, path));
+  const std::string header = fmt::format("{} {} {}\n", kBatchFormat, indices, label);
+  std::size_t good = 0;  // bytes of the file that check
+  if (resume_) {
+    const std::string text = ReadAll(path);
+    if (text.compare(0, header.size(), header) == 0) {
+      good = header.size();
+      std::size_t index = 0;
+      std::string bytes;
+      while (ReadRecord(text, &good, &index, &bytes))
+        batch->entries_.emplace(index, bytes);
+      if (good < text.size()) ++torn_;
+    } else if (text.compare(0, std::strlen(kBatchFormat), kBatchFormat) == 0 &&
+               text.find('\n') != std::string::npos) {
+      throw InputError(
+          path, "line 1", text.substr(0, text.find('\n')),
+          fmt::format(
+              "the journaled run's batch differs from this run's ({}): the inputs "
+              "or the program changed; run without --resume to start afresh",
+              header.substr(0, header.size() - 1)));
+    }
+  }
+  batch->fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (batch->fd_ < 0) Refused("open", path, errno);
+  if (::ftruncate(batch->fd_, static_cast<off_t>(good)) != 0) Refused("cut", path, errno);
+  if (good == 0) batch->Append(header);
+  return batch;
+}
+
+Journal::Batch::Batch(Journal* journal, std::string path)
+    : journal_(journal), path_(std::move(path)) {}
+
+Journal::Batch::~Batch() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+std::optional<std::string> Journal::Batch::Find(std::size_t index) {
+  const auto it = entries_.find(index);
+  if (it == entries_.end()) return std::nullopt;
+  ++journal_->reused_;
+  return it->second;
+}
+
+void Journal::Batch::Store(std::size_t index, const std::string& bytes) {
+  Append(
+      fmt::format("entry {} {} {}\n", index, bytes.size(), RecordDigest(index, bytes)) +
+      bytes + "\n");
+  ++journal_->written_;
+}
+
+void Journal::Batch::Append(const std::string& record) {
+  const std::lock_guard<std::mutex> lock(write_mutex_);
+  std::size_t done = 0;
+  while (done < record.size()) {
+    const ssize_t n = ::write(fd_, record.data() + done, record.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) Refused("write", path_, errno);
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+}  // namespace vahf::experiment

@@ -1,0 +1,210 @@
+// The run journal: records stored from several threads read back exactly on
+// resume, batch by batch; a torn or zeroed tail is cut and counted, and what
+// is stored after it reads back; a resume of another run (identity) or of a
+// batch of another size is an InputError naming the file; a fresh journal
+// forgets the old one. RunIndexed with a journal runs only the indices it
+// lacks, with the same results.
+#include "vahf/experiment/journal.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+#include <vector>
+
+#include "vahf/core/error.h"
+#include "vahf/experiment/runner.h"
+
+namespace vahf::experiment {
+namespace {
+namespace fs = std::filesystem;
+
+class JournalTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ =
+        (fs::path(::testing::TempDir()) /
+         ("journal_test_" +
+          std::string(::testing::UnitTest::GetInstance()->current_test_info()->name())))
+            .string();
+    fs::remove_all(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string Log(int batch) const {
+    return (fs::path(dir_) / ("batch-" + std::to_string(batch) + ".log")).string();
+  }
+
+  const nlohmann::json identity_ = {{"invocation", {{"seed", 1}}}, {"build", "x"}};
+  std::string dir_;
+};
+
+// Bytes of index i: of varied length, with NUL and line breaks inside.
+std::string Bytes(std::size_t i) {
+  return std::string(i % 7, '\n') + std::string(1, '\0') + std::to_string(i * i) +
+         std::string(i % 3, 'x');
+}
+
+TEST_F(JournalTest, WhatTwoThreadsStoreReadsBackOnResume) {
+  {
+    Journal j(dir_, identity_, false);
+    auto a = j.Begin(100, "first (table1)");
+    auto b = j.Begin(3, "second");
+    std::thread t1([&] {
+      for (std::size_t i = 0; i < 100; i += 2) a->Store(i, Bytes(i));
+    });
+    std::thread t2([&] {
+      for (std::size_t i = 1; i < 100; i += 2) a->Store(i, Bytes(i));
+    });
+    t1.join();
+    t2.join();
+    b->Store(2, "only");
+    EXPECT_EQ(j.written(), 101);
+    EXPECT_FALSE(a->Find(0));  // a fresh journal reuses nothing
+  }
+  Journal j(dir_, identity_, true);
+  auto a = j.Begin(100, "first (table1)");
+  auto b = j.Begin(3, "second");
+  for (std::size_t i = 0; i < 100; ++i) {
+    const auto bytes = a->Find(i);
+    ASSERT_TRUE(bytes) << i;
+    EXPECT_EQ(*bytes, Bytes(i)) << i;
+  }
+  EXPECT_FALSE(b->Find(0));
+  EXPECT_EQ(*b->Find(2), "only");
+  EXPECT_EQ(j.reused(), 101);
+  EXPECT_EQ(j.torn(), 0);
+}
+
+TEST_F(JournalTest, ATornOrZeroedTailIsCutAndWhatFollowsReadsBack) {
+  {
+    Journal j(dir_, identity_, false);
+    auto a = j.Begin(3, "a");
+    a->Store(0, Bytes(10));
+    a->Store(1, Bytes(11));
+  }
+  fs::resize_file(Log(0), fs::file_size(Log(0)) - 3);  // the last record torn
+  {
+    Journal j(dir_, identity_, true);
+    auto a = j.Begin(3, "a");
+    EXPECT_EQ(*a->Find(0), Bytes(10));
+    EXPECT_FALSE(a->Find(1));
+    EXPECT_EQ(j.torn(), 1);
+    a->Store(1, Bytes(21));
+    a->Store(2, Bytes(22));
+  }
+  std::ofstream(Log(0), std::ios::app) << std::string(4096, '\0');  // a zeroed block
+  Journal j(dir_, identity_, true);
+  auto a = j.Begin(3, "a");
+  EXPECT_EQ(*a->Find(0), Bytes(10));
+  EXPECT_EQ(*a->Find(1), Bytes(21));
+  EXPECT_EQ(*a->Find(2), Bytes(22));
+  EXPECT_EQ(j.torn(), 1);
+}
+
+TEST_F(JournalTest, ARecordWhoseBytesChangedIsNotRead) {
+  {
+    Journal j(dir_, identity_, false);
+    j.Begin(1, "a")->Store(0, "abcdef");
+  }
+  std::string text;
+  {
+    std::ifstream in(Log(0), std::ios::binary);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  text[text.find("abcdef")] = 'X';
+  std::ofstream(Log(0), std::ios::binary | std::ios::trunc) << text;
+  Journal j(dir_, identity_, true);
+  EXPECT_FALSE(j.Begin(1, "a")->Find(0));
+  EXPECT_EQ(j.torn(), 1);
+}
+
+TEST_F(JournalTest, ResumingAnotherRunIsRefused) {
+  {
+    Journal j(dir_, identity_, false);
+    j.Begin(4, "a")->Store(0, "x");
+  }
+  nlohmann::json other = identity_;
+  other["invocation"]["seed"] = 2;
+  try {
+    Journal j(dir_, other, true);
+    ADD_FAILURE() << "another seed resumed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), (fs::path(dir_) / "identity.json").string());
+    EXPECT_EQ(e.where(), "/invocation");
+    EXPECT_EQ(e.value(), "{\"seed\":1}");
+    EXPECT_NE(e.rule().find("this command gives {\"seed\":2}"), std::string::npos);
+  }
+  Journal j(dir_, identity_, true);
+  try {
+    j.Begin(5, "a");
+    ADD_FAILURE() << "a batch of another size resumed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), Log(0));
+    EXPECT_EQ(e.where(), "line 1");
+    EXPECT_EQ(e.value(), "vahf-journal-batch/1 4 a");
+  }
+  EXPECT_THROW(Journal((fs::path(dir_) / "none").string(), identity_, true), InputError);
+}
+
+TEST_F(JournalTest, AFreshJournalForgetsTheOldOne) {
+  {
+    Journal j(dir_, identity_, false);
+    j.Begin(1, "a")->Store(0, "x");
+  }
+  {
+    Journal j(dir_, identity_, false);
+    EXPECT_FALSE(j.Begin(1, "a")->Find(0));
+  }
+  Journal j(dir_, identity_, true);
+  EXPECT_FALSE(j.Begin(1, "a")->Find(0));
+}
+
+const ResultCodec<double> kDoubleCodec{
+    [](const double& x) { return std::string(reinterpret_cast<const char*>(&x), 8); },
+    [](const std::string& b) {
+      double x;
+      std::memcpy(&x, b.data(), 8);
+      return x;
+    }};
+
+TEST_F(JournalTest, RunIndexedRunsOnlyWhatTheJournalLacks) {
+  RunnerOptions options;
+  options.threads = 2;
+  options.progress = false;
+  std::atomic<int> calls{0};
+  const std::function<double(std::size_t)> fn = [&](std::size_t i) {
+    ++calls;
+    return 1.0 / (static_cast<double>(i) + 3.0);
+  };
+  std::vector<double> first;
+  {
+    Journal j(dir_, identity_, false);
+    options.journal = &j;
+    first = RunIndexed<double>(50, options, fn, &kDoubleCodec);
+    EXPECT_EQ(calls, 50);
+  }
+  // Cut the journal to its first 20 records: those are reused, 30 run again.
+  {
+    std::ifstream in(Log(0), std::ios::binary);
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    std::size_t pos = text.find('\n') + 1;
+    for (int k = 0; k < 20; ++k) pos = text.find("\nentry ", pos + 8 + 1) + 1;
+    in.close();
+    fs::resize_file(Log(0), pos);
+  }
+  calls = 0;
+  Journal j(dir_, identity_, true);
+  options.journal = &j;
+  EXPECT_EQ(RunIndexed<double>(50, options, fn, &kDoubleCodec), first);
+  EXPECT_EQ(calls, 30);
+  EXPECT_EQ(j.reused(), 20);
+  // Without a codec nothing is journaled.
+  EXPECT_EQ(RunIndexed<double>(50, options, fn), first);
+  EXPECT_EQ(calls, 80);
+}
+
+}  // namespace
+}  // namespace vahf::experiment

@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# Tests of `vahf run --resume` (docs/reproducibility.md, "Resume"): a run and
+# a calibration killed with SIGKILL midway (once their journal holds finished
+# work) and resumed end with the results digest of an uninterrupted run, and
+# run only what was missing; a run stopped by SIGINT resumes too; a journal
+# whose last record was torn (as by a power loss) resumes to the same digest;
+# --resume of another command (another seed), --resume with nothing to
+# resume, and a fresh run onto a stopped run's journal exit 2 with one line.
+#
+# Usage: resume_test.sh VAHF_EXECUTABLE REPO_ROOT
+set -uo pipefail
+
+# shellcheck source=tests/tools/cli_lib.sh
+source "$(dirname "$0")/cli_lib.sh" "$@"
+
+# digest DIR: the results digest in DIR/manifest.json.
+digest() {
+  sed -n 's/.*"results_digest": *"\([0-9a-f]*\)".*/\1/p' "$1/manifest.json"
+}
+
+# entries DIR: the records journaled in DIR.partial so far.
+entries() {
+  cat "$1.partial"/journal/batch-*.log 2>/dev/null | grep -ac '^entry '
+}
+
+# kill_when SIGNAL DIR MIN PID: sends SIGNAL to PID once DIR's journal holds
+# at least MIN records (or the run ended); waits for it; sets $status.
+kill_when() {
+  local i
+  for ((i = 0; i < 1200; ++i)); do
+    if ! kill -0 "$4" 2>/dev/null || (($(entries "$2") >= $3)); then break; fi
+    sleep 0.1
+  done
+  kill "-$1" "$4" 2>/dev/null
+  wait "$4"
+  status=$?
+}
+
+# --- a run: Table 1 with 6 cycles, uninterrupted, then killed and resumed.
+table1=$root/experiments/table1.json
+run run "$table1" --trials 6 --out "$tmp/reference"
+expect_status "run table1" 0
+"$vahf" run "$table1" --trials 6 --out "$tmp/killed" >"$out" 2>"$err" &
+kill_when KILL "$tmp/killed" 2 $!
+expect_status "run table1 killed by SIGKILL" 137
+journaled=$(entries "$tmp/killed")
+if [[ ! -e "$tmp/killed" ]] && ((journaled >= 2 && journaled < 6)); then
+  pass "run table1 killed by SIGKILL: no output, $journaled of 6 cycles journaled"
+else
+  fail "run table1 killed by SIGKILL: $journaled cycles journaled (want 2 to 5)"
+fi
+run run "$table1" --trials 6 --out "$tmp/killed"
+expect_status "a fresh run onto a stopped run's journal" 2
+expect_lines "a fresh run onto a stopped run's journal" "$err" 1
+expect_in "a fresh run onto a stopped run's journal" "$err" \
+  "holds the journal of a stopped run: the same command with --resume continues it"
+run run "$table1" --trials 6 --seed 2 --out "$tmp/killed" --resume
+expect_status "--resume with another seed" 2
+expect_lines "--resume with another seed" "$err" 1
+expect_in "--resume with another seed" "$err" "journal/identity.json: /invocation = "
+run run "$table1" --trials 6 --out "$tmp/killed" --resume
+expect_status "--resume after SIGKILL" 0
+expect_in "--resume after SIGKILL" "$out" \
+  "resumed: $journaled results taken from the journal, $((6 - journaled)) computed"
+if [[ "$(digest "$tmp/killed")" == "$(digest "$tmp/reference")" &&
+      -n "$(digest "$tmp/reference")" ]]; then
+  pass "--resume after SIGKILL: the uninterrupted run's results digest"
+else
+  fail "--resume after SIGKILL: digest $(digest "$tmp/killed"), want $(digest "$tmp/reference")"
+fi
+if [[ ! -e "$tmp/killed.partial" && ! -e "$tmp/killed/journal" ]]; then
+  pass "--resume after SIGKILL: the journal is gone with the staging directory"
+else
+  fail "--resume after SIGKILL: a journal or staging directory was left"
+fi
+
+# --- nothing to resume.
+run run "$table1" --trials 6 --out "$tmp/never" --resume
+expect_status "--resume with nothing to resume" 2
+expect_lines "--resume with nothing to resume" "$err" 1
+expect_in "--resume with nothing to resume" "$err" "there is nothing to resume"
+
+# --- SIGINT, then a torn last record (as a power loss may leave), then resume.
+"$vahf" run "$table1" --trials 6 --out "$tmp/stopped" >"$out" 2>"$err" &
+kill_when INT "$tmp/stopped" 2 $!
+expect_status "run table1 stopped by SIGINT" 130
+expect_in "run table1 stopped by SIGINT" "$err" "--resume continues the run"
+log=$tmp/stopped.partial/journal/batch-0.log
+size=$(stat -c %s "$log")
+truncate -s $((size - 100)) "$log"
+run run "$table1" --trials 6 --out "$tmp/stopped" --resume
+expect_status "--resume after SIGINT and a torn record" 0
+if [[ "$(digest "$tmp/stopped")" == "$(digest "$tmp/reference")" ]]; then
+  pass "--resume after SIGINT and a torn record: the uninterrupted run's results digest"
+else
+  fail "--resume after SIGINT and a torn record: digest $(digest "$tmp/stopped")"
+fi
+
+# --- a calibration: killed after several design evaluations, resumed.
+calibrate=$root/experiments/calibrate_synthetic.json
+run run "$calibrate" --trials 4 --out "$tmp/calibration"
+expect_status "run calibrate" 0
+"$vahf" run "$calibrate" --trials 4 --out "$tmp/cal_killed" >"$out" 2>"$err" &
+kill_when KILL "$tmp/cal_killed" 40 $!
+expect_status "run calibrate killed by SIGKILL" 137
+batches=$(ls "$tmp/cal_killed.partial/journal" | grep -c '^batch-')
+if ((batches >= 2)); then
+  pass "run calibrate killed by SIGKILL: $batches design evaluations journaled"
+else
+  fail "run calibrate killed by SIGKILL: $batches design evaluations journaled (want 2 or more)"
+fi
+run run "$calibrate" --trials 4 --out "$tmp/cal_killed" --resume
+expect_status "--resume a calibration" 0
+expect_in "--resume a calibration" "$out" "resumed: "
+if [[ "$(digest "$tmp/cal_killed")" == "$(digest "$tmp/calibration")" ]] &&
+   cmp -s "$tmp/cal_killed/calibrated.json" "$tmp/calibration/calibrated.json"; then
+  pass "--resume a calibration: the same results digest and calibrated.json"
+else
+  fail "--resume a calibration: digest $(digest "$tmp/cal_killed"), want $(digest "$tmp/calibration")"
+fi
+
+finish
