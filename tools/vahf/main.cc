@@ -22,6 +22,7 @@
 #include "vahf/experiment/interrupt.h"
 #include "vahf/experiment/table1_reference.h"
 #include "vahf/kinds/kind.h"
+#include "vahf/kinds/replay.h"
 #include "vahf/kinds/run_support.h"
 #include "vahf/kinds/verify.h"
 #include "vahf/report/output_directory.h"
@@ -409,6 +410,31 @@ int main(int argc, char** argv) {
       "(the first named by file, row and column); 2 an unusable manifest, or an input "
       "missing or changed since the run (one line).");
 
+  vahf::kinds::ReplayOptions replay_options;
+  CLI::App* replay = app.add_subcommand("replay",
+                                        "Run one cycle of a run again, alone, and "
+                                        "compare its rows (docs/reproducibility.md)");
+  replay->add_option("RUN_DIR", replay_options.run_dir, "a run's output directory")
+      ->required();
+  replay
+      ->add_option("--cycle", replay_options.cycle,
+                   "the cycle: a cycles table of the run and one of its data rows (1 = "
+                   "the first), e.g. assembly_time_cycles.csv:12")
+      ->option_text("TABLE:ROW")
+      ->required();
+  replay->add_option("--trace", replay_options.trace,
+                     "write the cycle's trace (every part, a part column first) to this "
+                     "CSV file");
+  replay
+      ->add_option("--sample", replay_options.sample,
+                   "with --trace: also a row every DT s of simulated time, interpolated, "
+                   "so the trajectory is unchanged")
+      ->option_text("DT");
+  replay->footer(
+      "Run it from the directory the run was started in. Exit status: 0 the replayed "
+      "rows are the table's, bit for bit; 1 one differs (named by row and column); 2 bad "
+      "input (one line).");
+
   CLI::App* params = app.add_subcommand(
       "params", "Print every model parameter with its unit, rule and default (Markdown)");
 
@@ -437,6 +463,16 @@ int main(int argc, char** argv) {
     if (*trial) return Trial(trial_args);
     if (*run) return Run(run_args);
     if (*synthesize) return Synthesize(synth_args);
+    if (*replay) {
+      if (replay_options.sample != 0 && !(replay_options.sample > 0))
+        throw vahf::InputError("--sample", "", fmt::format("{}", replay_options.sample),
+                               "must be > 0 s");
+      if (replay_options.sample > 0 && replay_options.trace.empty())
+        throw vahf::InputError("--sample", "", fmt::format("{}", replay_options.sample),
+                               "needs --trace FILE to write the rows to");
+      vahf::experiment::InstallInterruptHandler();
+      return vahf::kinds::Replay(replay_options);
+    }
     if (*verify) {
       vahf::experiment::InstallInterruptHandler();
       return vahf::kinds::Verify(verify_options);

@@ -11,7 +11,7 @@ rng::StreamKey CycleKey(std::uint64_t seed, std::uint64_t cycle, std::size_t n,
 
 CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed,
                      std::uint64_t cycle, double initial_work, bool record_trace,
-                     int repetition) {
+                     int repetition, double sample_interval) {
   CycleResult out;
   out.work = initial_work;
   const std::size_t n = models.size();
@@ -20,6 +20,7 @@ CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed,
     options.initial_work = out.work;
     options.record_trace = record_trace;
     options.repetition = repetition;
+    options.sample_interval = sample_interval;
     PartRun run;
     run.start_time = out.time;
     run.start_work = out.work;

@@ -45,9 +45,11 @@ using SequenceModels = std::vector<std::shared_ptr<const sim::TrialModel>>;
 
 // `repetition` (from 1): the operator's repetition of the task, which every
 // part trial of the cycle is (sim::TrialOptions::repetition).
+// `sample_interval` > 0: each part trial's trace also samples every that
+// many s (sim::TrialOptions::sample_interval; the trajectory is unchanged).
 CycleResult RunCycle(const SequenceModels& models, std::uint64_t seed,
                      std::uint64_t cycle, double initial_work, bool record_trace,
-                     int repetition = 1);
+                     int repetition = 1, double sample_interval = 0);
 // Builds the scene's models, then runs the cycle.
 CycleResult RunCycle(const scene::Scene& scene, std::uint64_t seed, std::uint64_t cycle,
                      double initial_work, bool record_trace, int repetition = 1);

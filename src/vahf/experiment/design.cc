@@ -85,6 +85,24 @@ Condition OperatorCondition(const scene::Scene& scene, const scene::OperatorEntr
   return {op.name, op.sex, Share(s)};
 }
 
+namespace {
+
+// Segment s of the hour, without its work (the pilot measures the rate).
+Condition FatigueSegment(const std::shared_ptr<const scene::Scene>& scene,
+                         const scene::FatigueDesign& f, int s) {
+  const double per_segment = f.duration_min / f.segments;
+  Condition c;
+  c.name = fmt::format("{:g}-{:g} min", s * per_segment, (s + 1) * per_segment);
+  c.scene = scene;
+  c.minute_start = s * per_segment;
+  c.minute_end = (s + 1) * per_segment;
+  return c;
+}
+
+const char* const kPilot = "pilot";
+
+}  // namespace
+
 FatigueRun RunFatigue(const std::shared_ptr<const scene::Scene>& scene,
                       const scene::FatigueDesign& f, int trials, std::uint64_t seed,
                       const RunnerOptions& options, const RunnerOptions& pilot_options,
@@ -92,7 +110,7 @@ FatigueRun RunFatigue(const std::shared_ptr<const scene::Scene>& scene,
   FatigueRun out;
   const int pilot = f.pilot_cycles > 0 ? f.pilot_cycles : trials;
   // The pilot's streams are its own: cycle indices after every segment's.
-  out.pilot = RunDesign({{"pilot", "", scene}}, pilot, seed, false, pilot_options,
+  out.pilot = RunDesign({{kPilot, "", scene}}, pilot, seed, false, pilot_options,
                         first_cycle + static_cast<std::uint64_t>(trials));
   double work = 0, time = 0;
   for (const CycleRecord& r : out.pilot.records) {
@@ -100,15 +118,10 @@ FatigueRun RunFatigue(const std::shared_ptr<const scene::Scene>& scene,
     time += r.result.time;
   }
   out.work_rate = time > 0 ? work / time : 0.0;
-  const double per_segment = f.duration_min / f.segments;
   std::vector<Condition> conditions;
   for (int s = 0; s < f.segments; ++s) {
     if (!only.empty() && std::find(only.begin(), only.end(), s) == only.end()) continue;
-    Condition c;
-    c.name = fmt::format("{:g}-{:g} min", s * per_segment, (s + 1) * per_segment);
-    c.scene = scene;
-    c.minute_start = s * per_segment;
-    c.minute_end = (s + 1) * per_segment;
+    Condition c = FatigueSegment(scene, f, s);
     c.work_start = out.work_rate * 60.0 * c.minute_start;
     c.work_end = out.work_rate * 60.0 * c.minute_end;
     conditions.push_back(c);
@@ -135,16 +148,20 @@ RunnerOptions Options(const scene::ExperimentFile& file, const RunSettings& sett
 
 }  // namespace
 
+std::vector<Condition> Table1Conditions(const scene::ExperimentFile& file,
+                                        const RunSettings&) {
+  return {{file.scene.name, "", Share(file.scene)}};
+}
+
 ExperimentRun Table1Run(const scene::ExperimentFile& file, const RunSettings& settings) {
   ExperimentRun out = Begin(file, settings);
-  out.run = RunDesign({{file.scene.name, "", Share(file.scene)}}, out.trials, out.seed,
-                      true, Options(file, settings));
+  out.run = RunDesign(Table1Conditions(file, settings), out.trials, out.seed, true,
+                      Options(file, settings));
   return out;
 }
 
-ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file,
-                              const RunSettings& settings) {
-  ExperimentRun out = Begin(file, settings);
+std::vector<Condition> AssemblyTimeConditions(const scene::ExperimentFile& file,
+                                              const RunSettings& settings) {
   const std::vector<scene::OperatorEntry>& operators =
       file.Input<AssemblyTimeInput>().operators;
   std::vector<Condition> conditions;
@@ -154,19 +171,46 @@ ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file,
     conditions.push_back(OperatorCondition(file.scene, o));
   // Each operator assembles the sequence `trials` times over (Sec. 5.2: ten
   // real assemblies each): cycle j is their repetition j + 1.
-  for (Condition& c : conditions) c.repetitions = out.trials;
-  out.run = RunDesign(conditions, out.trials, out.seed, false, Options(file, settings));
+  for (Condition& c : conditions) c.repetitions = Begin(file, settings).trials;
+  return conditions;
+}
+
+ExperimentRun AssemblyTimeRun(const scene::ExperimentFile& file,
+                              const RunSettings& settings) {
+  ExperimentRun out = Begin(file, settings);
+  out.run = RunDesign(AssemblyTimeConditions(file, settings), out.trials, out.seed, false,
+                      Options(file, settings));
   return out;
+}
+
+std::vector<Condition> HumanFactorsGroupsConditions(const scene::ExperimentFile& file,
+                                                    const RunSettings&) {
+  std::vector<Condition> conditions;
+  for (const ConditionEntry& c : file.Input<GroupsInput>().conditions)
+    conditions.push_back({c.name, "", Share(c.scene)});
+  return conditions;
 }
 
 ExperimentRun HumanFactorsGroupsRun(const scene::ExperimentFile& file,
                                     const RunSettings& settings) {
   ExperimentRun out = Begin(file, settings);
-  std::vector<Condition> conditions;
-  for (const ConditionEntry& c : file.Input<GroupsInput>().conditions)
-    conditions.push_back({c.name, "", Share(c.scene)});
-  out.run = RunDesign(conditions, out.trials, out.seed, true, Options(file, settings));
+  out.run = RunDesign(HumanFactorsGroupsConditions(file, settings), out.trials, out.seed,
+                      true, Options(file, settings));
   return out;
+}
+
+std::vector<Condition> FatigueDesignConditions(
+    const std::shared_ptr<const scene::Scene>& scene,
+    const scene::FatigueDesign& design) {
+  std::vector<Condition> conditions = {{kPilot, "", scene}};
+  for (int s = 0; s < design.segments; ++s)
+    conditions.push_back(FatigueSegment(scene, design, s));
+  return conditions;
+}
+
+std::vector<Condition> FatigueConditions(const scene::ExperimentFile& file,
+                                         const RunSettings&) {
+  return FatigueDesignConditions(Share(file.scene), file.Input<FatigueInput>().fatigue);
 }
 
 ExperimentRun FatigueExperimentRun(const scene::ExperimentFile& file,

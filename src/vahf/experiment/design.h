@@ -140,4 +140,21 @@ ExperimentRun FatigueExperimentRun(const scene::ExperimentFile& file,
 ExperimentRun PrecisionRun(const scene::ExperimentFile& file,
                            const RunSettings& settings);
 
+// The conditions of each design, as its run builds them and its cycles
+// tables name them, without what only running gives (a fatigue segment's
+// work, measured by the pilot): what `vahf replay` needs to run one cycle
+// again (docs/reproducibility.md, "Replay"). Fatigue's are its pilot's, then
+// its segments'.
+std::vector<Condition> Table1Conditions(const scene::ExperimentFile& file,
+                                        const RunSettings& settings);
+std::vector<Condition> AssemblyTimeConditions(const scene::ExperimentFile& file,
+                                              const RunSettings& settings);
+std::vector<Condition> HumanFactorsGroupsConditions(const scene::ExperimentFile& file,
+                                                    const RunSettings& settings);
+std::vector<Condition> FatigueConditions(const scene::ExperimentFile& file,
+                                         const RunSettings& settings);
+// RunFatigue's conditions: its pilot's, then its segments' without work.
+std::vector<Condition> FatigueDesignConditions(
+    const std::shared_ptr<const scene::Scene>& scene, const scene::FatigueDesign& design);
+
 }  // namespace vahf::experiment

@@ -17,6 +17,7 @@ Kind AssemblyTimeKind() {
   k.parse = experiment::ReadAssemblyTime;
   k.check = CheckOneScene;
   k.design = experiment::AssemblyTimeRun;
+  k.conditions = experiment::AssemblyTimeConditions;
   k.analyse = report::AssemblyTimeSection;
   k.times_the_parts = true;
   return k;

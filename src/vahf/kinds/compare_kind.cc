@@ -41,6 +41,20 @@ std::string CheckComparison(const scene::ExperimentFile& e) {
   return out + DescribeSceneModels(e.scene);
 }
 
+// The lab's operators and the fatigue design's pilot and segments, as the
+// comparison runs them (compare/comparison.h), for `vahf replay`.
+std::vector<experiment::Condition> CompareConditions(
+    const scene::ExperimentFile& file, const experiment::RunSettings& settings) {
+  const compare::ComparisonDesign& design = file.Input<compare::ComparisonDesign>();
+  const int trials = settings.trials > 0 ? settings.trials : file.trials;
+  std::vector<experiment::Condition> out =
+      calibrate::LabConditions(file.scene, data::LoadLabDataset(design.lab_path), trials);
+  for (experiment::Condition& c : experiment::FatigueDesignConditions(
+           std::make_shared<const scene::Scene>(file.scene), design.fatigue))
+    out.push_back(std::move(c));
+  return out;
+}
+
 int RunComparison(const scene::ExperimentFile& file, const RunContext& context) {
   const experiment::RunSettings& settings = context.settings;
   const data::LabDataset lab =
@@ -77,6 +91,7 @@ Kind CompareKind() {
   k.parse = compare::ReadComparison;
   k.check = CheckComparison;
   k.run = RunComparison;
+  k.conditions = CompareConditions;
   return k;
 }
 

@@ -17,6 +17,7 @@ Kind FatigueKind() {
   k.parse = experiment::ReadFatigueExperiment;
   k.check = CheckOneScene;
   k.design = experiment::FatigueExperimentRun;
+  k.conditions = experiment::FatigueConditions;
   k.analyse = report::FatigueSection;
   return k;
 }

@@ -33,6 +33,7 @@ Kind HumanFactorsGroupsKind() {
   k.parse = experiment::ReadHumanFactorsGroups;
   k.check = CheckGroups;
   k.design = experiment::HumanFactorsGroupsRun;
+  k.conditions = experiment::HumanFactorsGroupsConditions;
   k.analyse = report::HumanFactorsGroupsSection;
   return k;
 }

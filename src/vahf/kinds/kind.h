@@ -55,10 +55,20 @@ struct Kind {
   experiment::ExperimentRun (*design)(const scene::ExperimentFile& file,
                                       const experiment::RunSettings& settings) = nullptr;
   report::Section (*analyse)(const experiment::ExperimentRun& run) = nullptr;
+  // A design's conditions as its cycles tables (KIND_*cycles.csv) name
+  // them, for `vahf replay` (experiment/design.h); null: its cycles cannot be
+  // replayed.
+  std::vector<experiment::Condition> (*conditions)(
+      const scene::ExperimentFile& file,
+      const experiment::RunSettings& settings) = nullptr;
   // A run of experiments (a paper run): its own sections after its parts'
   // (which their kinds analyse), e.g. the handbooks beside the parts' times.
   std::vector<report::Section> (*sections_after_parts)(
       const experiment::ExperimentRun& run) = nullptr;
+  // A run of experiments: the experiments it runs, in order (replay finds a
+  // cycles table's experiment among them). Null: the file itself.
+  std::vector<const scene::ExperimentFile*> (*parts)(const scene::ExperimentFile& file) =
+      nullptr;
   // A run of its own (calibrate, compare): runs, writes the output directory,
   // prints what it found; returns the exit status. Null: a design's run.
   int (*run)(const scene::ExperimentFile& file, const RunContext& context) = nullptr;

@@ -47,6 +47,13 @@ std::vector<report::Section> PaperSections(const experiment::ExperimentRun& run)
                                   in.handbooks->mtm1_position)};
 }
 
+std::vector<const scene::ExperimentFile*> PaperParts(const scene::ExperimentFile& file) {
+  std::vector<const scene::ExperimentFile*> out;
+  for (const scene::ExperimentFile& x : file.Input<PaperInput>().experiments)
+    out.push_back(&x);
+  return out;
+}
+
 }  // namespace
 
 Kind PaperKind() {
@@ -60,6 +67,7 @@ Kind PaperKind() {
   k.check = CheckPaper;
   k.design = PaperRun;
   k.sections_after_parts = PaperSections;
+  k.parts = PaperParts;
   k.cycles_per_condition = false;  // each listed experiment has its own
   return k;
 }

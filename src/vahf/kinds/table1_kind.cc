@@ -17,6 +17,7 @@ Kind Table1Kind() {
   k.parse = experiment::ReadTable1;
   k.check = CheckOneScene;
   k.design = experiment::Table1Run;
+  k.conditions = experiment::Table1Conditions;
   k.analyse = report::Table1Section;
   return k;
 }

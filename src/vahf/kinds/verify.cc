@@ -11,13 +11,12 @@
 #include <sstream>
 #include <system_error>
 
-#include "vahf/core/digest.h"
 #include "vahf/core/error.h"
 #include "vahf/kinds/kind.h"
+#include "vahf/kinds/recorded_run.h"
 #include "vahf/report/manifest.h"
 #include "vahf/report/output_directory.h"
 #include "vahf/report/result_diff.h"
-#include "vahf/scene/overrides.h"
 
 namespace vahf::kinds {
 namespace {
@@ -33,26 +32,6 @@ std::optional<std::string> ReadBytes(const fs::path& path) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();
-}
-
-// Every input present with the digest the run recorded.
-void CheckInputs(const report::RecordedRun& run) {
-  for (const report::RecordedRun::Input& in : run.inputs) {
-    std::error_code error;
-    if (!fs::is_regular_file(in.file.path, error))
-      throw InputError(
-          run.file, in.pointer, in.file.sha256,
-          fmt::format("the input {} is missing (verify reads the run's inputs "
-                      "by their recorded paths, from the directory it is "
-                      "started in)",
-                      in.file.path));
-    const std::string now = Sha256OfFile(in.file.path);
-    if (now != in.file.sha256)
-      throw InputError(run.file, in.pointer, in.file.sha256,
-                       fmt::format("the input {} now has SHA-256 {}: it changed since "
-                                   "the run, so the run cannot be repeated from it",
-                                   in.file.path, now));
-  }
 }
 
 // A directory made for the re-run, removed with everything in it unless
@@ -86,14 +65,9 @@ class RerunDirectory {
 
 // Runs the recorded invocation into `out`; its own lines go to stdout.
 void Rerun(const report::RecordedRun& run, int threads, const std::string& out) {
-  const report::Invocation& i = run.invocation;
-  scene::ExperimentFile file = LoadExperiment(i.experiment);
-  if (!i.overrides.empty())
-    scene::ApplyOverrides(scene::LoadOverrides(i.overrides), &file);
+  const scene::ExperimentFile file = LoadRecordedExperiment(run);
   RunContext context;
-  context.settings.seed = i.seed;
-  context.settings.trials = static_cast<int>(i.trials);
-  context.settings.threads = threads;
+  context.settings = RecordedSettings(run, threads);
   report::OutputDirectory directory(out);
   context.directory = &directory;
   RunExperiment(file, context);  // a plot it could not render is no result
@@ -142,12 +116,8 @@ int CompareResults(const report::RecordedRun& run, const std::string& rerun_dir)
 }  // namespace
 
 int Verify(const VerifyOptions& options) {
-  const std::string manifest = (fs::path(options.run_dir) / "manifest.json").string();
+  const report::RecordedRun run = ReadRecordedRun(options.run_dir);
   std::error_code error;
-  if (!fs::is_directory(options.run_dir, error))
-    throw InputError(options.run_dir, "", "", "is not a directory (a run's output)");
-  const report::RecordedRun run = report::ReadManifest(manifest);
-  CheckInputs(run);
   std::printf("verify %s: %zu inputs as the run read them (SHA-256)\n",
               options.run_dir.c_str(), run.inputs.size());
   const std::vector<std::string> build = report::BuildDifferences(run.build);

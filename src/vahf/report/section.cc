@@ -72,17 +72,17 @@ std::string MeanCi(const stats::Summary& s) {
 }
 
 Table CyclesTable(const experiment::DesignRun& run) {
-  Table t({"condition", "group", "cycle", "start_minute", "initial_work_J", "position",
-           "part", "status", "part_start_s", "part_time_s", "work_end_J",
+  Table t({"condition", "group", "cycle", "start_minute", "initial_work_J", "repetition",
+           "position", "part", "status", "part_start_s", "part_time_s", "work_end_J",
            "cycle_completed", "cycle_time_s"});
   for (const experiment::CycleRecord& r : run.records) {
     const experiment::Condition& c = run.conditions[r.condition];
     for (std::size_t p = 0; p < r.result.parts.size(); ++p) {
       const experiment::PartRun& part = r.result.parts[p];
       t.AddRow({c.name, c.group, static_cast<std::int64_t>(r.cycle), r.start_minute,
-                r.initial_work, static_cast<std::int64_t>(p), part.trial.part,
-                std::string(sim::StatusName(part.trial.status)), part.start_time,
-                part.trial.end_time, part.trial.work,
+                r.initial_work, std::int64_t{r.repetition}, static_cast<std::int64_t>(p),
+                part.trial.part, std::string(sim::StatusName(part.trial.status)),
+                part.start_time, part.trial.end_time, part.trial.work,
                 std::int64_t{r.result.completed ? 1 : 0}, r.result.time});
     }
   }
