@@ -91,6 +91,34 @@ TEST(Calibration, RecoversKappaFromASyntheticLabWithinItsInterval) {
   EXPECT_LT(k.mc_sd, k.standard_error);
 }
 
+// A calibration started from its own estimate (an override file's value is
+// the start, docs/calibration.md "A fixed point") ends within its fixed-point
+// tolerance of it: a Levenberg-Marquardt stage and a golden-section one.
+TEST(Calibration, StartedFromItsOwnEstimateItEndsThere) {
+  const scene::Scene scene =
+      scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
+  const data::LabDataset lab = GenerateSyntheticLab(BlockLab(101), Quiet());
+  for (const char* solver : {"levenberg_marquardt", "golden_section"}) {
+    CalibrationSpec spec = KappaFromTime();
+    spec.noise_replicates = 0;
+    spec.stages[0].solver = solver;
+    const CalibrationResult first = Fit(scene, lab, spec, "test", 7, 6, Quiet());
+    EXPECT_TRUE(first.parameters[0].start_from.empty());
+    EXPECT_TRUE(std::isnan(first.parameters[0].fixed_point_change));
+    spec.stages[0].parameters[0].start = first.parameters[0].estimate;
+    spec.stages[0].parameters[0].start_from = "calibrated.json";
+    const CalibrationResult again = Fit(scene, lab, spec, "test", 7, 6, Quiet());
+    const FittedParameter& k = again.parameters[0];
+    EXPECT_EQ(k.start_from, "calibrated.json") << solver;
+    EXPECT_EQ(k.start, first.parameters[0].estimate) << solver;
+    EXPECT_EQ(k.fixed_point_change, std::abs(k.estimate - k.start)) << solver;
+    EXPECT_LE(k.fixed_point_change, k.fixed_point_tolerance) << solver;
+    // The tolerance is the solver's, not a blanket: a tenth of the standard
+    // error (LM, whose weights re-settle) or the bracket (golden section).
+    EXPECT_LE(k.fixed_point_tolerance, 0.02 * k.estimate) << solver;
+  }
+}
+
 TEST(Calibration, NoReplicatesNoMonteCarloSpread) {
   const scene::Scene scene =
       scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));

@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "support/test_files.h"
+#include "vahf/calibrate/calibration_input.h"
 #include "vahf/core/error.h"
 #include "vahf/experiment/groups_input.h"
 #include "vahf/experiment/precision_input.h"
@@ -237,6 +238,39 @@ TEST(ApplyOverridesExperimentTest, SetsTheSceneAndRecordsTheFile) {
   ApplyOverrides(o, &e);
   EXPECT_EQ(e.overrides_path, o.file);
   EXPECT_DOUBLE_EQ(e.scene.params.guidance.kappa, 321.0);
+}
+
+// A calibration: a fitted parameter's override is its start (its scene
+// keeps its own value, which the first stage fitting it replaces); another
+// parameter's sets the scene; a start outside the stage's bounds is refused,
+// naming the override file and the bounds.
+TEST(ApplyOverridesExperimentTest, ACalibrationStartsAtItsFittedParametersOverrides) {
+  ExperimentFile e = LoadExperiment(SourcePath("experiments/calibrate_paper.json"));
+  const double kappa = e.scene.params.guidance.kappa;
+  const ParameterOverrides o = Load({{"guidance/kappa", 22.5},
+                                     {"fatigue/a_max", 30000},
+                                     {"guidance/damping_ratio", 0.75}});
+  ApplyOverrides(o, &e);
+  EXPECT_EQ(e.scene.params.guidance.kappa, kappa);
+  EXPECT_EQ(e.scene.params.guidance.damping_ratio, 0.75);
+  const auto& design = e.Input<calibrate::CalibrationDesign>();
+  ASSERT_EQ(design.stages.size(), 2u);
+  EXPECT_EQ(design.stages[0].parameters[0].start, 22.5);
+  EXPECT_EQ(design.stages[0].parameters[0].start_from, o.file);
+  EXPECT_EQ(design.stages[1].parameters[0].start, 30000);
+  EXPECT_EQ(design.OwnParameters(),
+            (std::vector<std::string>{"guidance/kappa", "fatigue/a_max"}));
+  ExperimentFile again = LoadExperiment(SourcePath("experiments/calibrate_paper.json"));
+  const ParameterOverrides outside = Load({{"guidance/kappa", 500}});
+  try {
+    ApplyOverrides(outside, &again);
+    FAIL() << "no InputError";
+  } catch (const InputError& err) {
+    EXPECT_EQ(err.file(), outside.file) << err.what();
+    EXPECT_EQ(err.where(), "/parameters/guidance~1kappa") << err.what();
+    EXPECT_THAT(err.rule(), HasSubstr("must lie within its bounds [1, 400]"))
+        << err.what();
+  }
 }
 
 TEST(ApplyOverridesExperimentTest, CrossParameterRuleNamesTheOverrideFile) {

@@ -155,7 +155,7 @@ std::string LevenbergMarquardtRound(const CalibrationSpec& spec, ceres::Problem*
   solver.num_threads = 1;  // parallel inside each evaluation instead
   // A relative change of 1e-4 in the parameters is far below what the
   // Monte Carlo noise of a design resolves.
-  solver.parameter_tolerance = 1e-4;
+  solver.parameter_tolerance = kLevenbergMarquardtParameterTolerance;
   // Ceres runs a projected line search on the bounds after every step of a
   // bounded problem (solver.h); each of its steps takes a gradient, one
   // differenced Jacobian, 2 p + 1 designs here. Measured on the joint
@@ -377,6 +377,27 @@ void AddFittedParameters(const scene::Scene& scene, const StageSpec& stage,
   }
 }
 
+// For each parameter whose start an override file gave: how far the fit
+// moved it, against the solver's tolerance.
+void AddFixedPoints(const CalibrationSpec& spec, const StageSpec& stage,
+                    const std::vector<double>& x, CalibrationResult* out) {
+  double norm = 0;
+  for (double v : x) norm += v * v;
+  const std::size_t first = out->parameters.size() - stage.parameters.size();
+  for (std::size_t i = 0; i < stage.parameters.size(); ++i) {
+    FittedParameter& f = out->parameters[first + i];
+    f.start_from = stage.parameters[i].start_from;
+    if (f.start_from.empty()) continue;
+    f.fixed_point_change = std::abs(f.estimate - f.start);
+    const double se = std::isfinite(f.standard_error) ? f.standard_error : 0.0;
+    f.fixed_point_tolerance =
+        stage.solver == "golden_section"
+            ? spec.tolerance * std::abs(f.estimate)
+            : std::max(kLevenbergMarquardtParameterTolerance * std::sqrt(norm),
+                       kFixedPointStandardErrors * se);
+  }
+}
+
 // Each target at the start and at the fit, with its whitened residual there.
 void AddFittedTargets(const std::vector<Target>& targets,
                       const std::vector<Statistic>& at_start,
@@ -522,6 +543,7 @@ CalibrationResult CalibrateStage(const scene::Scene& scene, const data::LabDatas
     profile = GoldenSectionProfile(model, targets, sigma, spec, stage, x[0], prefix,
                                    progress, &out);
   AddFittedParameters(scene, stage, x, identification, profile, &out);
+  AddFixedPoints(spec, stage, x, &out);
   out.correlation = Correlation(out.covariance);
   out.differences = *differences;
   out.refused = model.refused();

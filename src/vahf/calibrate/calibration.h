@@ -106,7 +106,24 @@ struct FittedParameter {
   // Levenberg-Marquardt stage of the lab's operators; NaN otherwise): the
   // part of its uncertainty the virtual trials' noise makes.
   double mc_sd = std::nan("");
+  // A start an override file gave (FitParameter::start_from; a calibration
+  // started from its own estimate): whether the fit returned to it, by the
+  // solver's own tolerance (kFixedPointTolerance); NaN otherwise.
+  std::string start_from;
+  double fixed_point_change = std::nan("");     // |estimate - start|
+  double fixed_point_tolerance = std::nan("");  // what the solver would not resolve
 };
+
+// The fixed point's tolerance (docs/calibration.md, "A fixed point"): a
+// golden_section stage's bracket width, `tolerance` times the estimate. A
+// Levenberg-Marquardt stage's is the larger of Ceres' parameter tolerance
+// (this fraction of the norm of the stage's parameter vector) and a tenth
+// of the parameter's standard error: its weights are evaluated at its start
+// and settle to 10 % (calibration.cc, WeightsSettled), so a fit started
+// at its own estimate re-weighs and may move by a small part of what the
+// data resolve (measured on calibrate_synthetic: 0.02 standard errors).
+inline constexpr double kLevenbergMarquardtParameterTolerance = 1e-4;
+inline constexpr double kFixedPointStandardErrors = 0.1;
 
 struct FittedTarget {
   Target target;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "vahf/core/error.h"
+#include "vahf/scene/overrides.h"
 #include "vahf/scene/parameter_table.h"
 
 namespace vahf::calibrate {
@@ -135,6 +136,32 @@ void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFi
     CheckSegments(stage.targets, d.fatigue, path);
   e->input =
       core::ClonePtr<scene::KindInput>(std::make_unique<CalibrationDesign>(std::move(d)));
+}
+
+std::vector<std::string> CalibrationDesign::OwnParameters() const {
+  std::vector<std::string> out;
+  for (const CalibrationStage& stage : stages)
+    for (const FitParameter& p : stage.parameters) out.push_back(p.name);
+  return out;
+}
+
+void CalibrationDesign::ApplyOverrides(const scene::ParameterOverrides& o,
+                                       scene::ExperimentFile* file) {
+  for (CalibrationStage& stage : stages)
+    for (FitParameter& p : stage.parameters)
+      for (const auto& [name, value] : o.values) {
+        if (name != p.name) continue;
+        const double x = value.get<double>();  // a real: checked by LoadOverrides
+        if (!(x >= p.lower && x <= p.upper))
+          throw InputError(
+              o.file, "/parameters/" + scene::PointerToken(name), scene::NumberText(x),
+              fmt::format("a fitted parameter's override is its start, which "
+                          "must lie within its bounds [{}, {}] ({}: {})",
+                          scene::NumberText(p.lower), scene::NumberText(p.upper),
+                          file->file, p.pointer));
+        p.start = x;
+        p.start_from = o.file;
+      }
 }
 
 }  // namespace vahf::calibrate

@@ -19,6 +19,10 @@ struct FitParameter {
   std::string name;
   double start = 0, lower = 0, upper = 0;
   std::string pointer;  // where the experiment file states it
+  // The override file whose value is the start (`vahf run --overrides`: a
+  // calibration started from its own calibrated.json, docs/calibration.md,
+  // "A fixed point"); empty: the experiment file's start.
+  std::string start_from;
 };
 
 // One stage of a calibration: parameters fitted to targets by a solver.
@@ -68,6 +72,16 @@ struct CalibrationDesign : scene::KindInputOf<CalibrationDesign> {
   // The hour of work that segment targets are read from (the file's
   // "fatigue", as the fatigue kind reads it).
   scene::FatigueDesign fatigue;
+
+  // An override file's value for a fitted parameter is its start; it must
+  // lie within the stage's bounds, else an InputError names the override
+  // file and the bounds.
+  void ApplyOverrides(const scene::ParameterOverrides& o,
+                      scene::ExperimentFile* file) override;
+  // The fitted parameters: an override of one is its start, and the scene
+  // keeps its own value, so that a calibration started from its own
+  // calibrated.json runs every stage as the first run did.
+  std::vector<std::string> OwnParameters() const override;
 };
 
 // calibrate: "lab", "fatigue", the fit's parameters, targets, stages and settings.

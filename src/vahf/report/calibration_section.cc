@@ -169,6 +169,26 @@ std::string OpenSide(const calibrate::FittedParameter& p) {
 }
 
 // The stage's fitted parameters: table rows, summary entries and Markdown.
+// For each parameter started at an override file's value (its own earlier
+// estimate): whether the fit returned to it within the solver's tolerance.
+std::string FixedPointText(const calibrate::CalibrationResult& r) {
+  std::string out;
+  for (const calibrate::FittedParameter& p : r.parameters) {
+    if (p.start_from.empty()) continue;
+    const bool holds = p.fixed_point_change <= p.fixed_point_tolerance;
+    out += fmt::format(
+        "\n- **A fixed point{}**: `{}` started at {} from `{}` and ended at {}, {:.3g} "
+        "away, {} the solver's tolerance {:.3g} ({}).",
+        holds ? "" : ": no", p.name, Number(p.start), p.start_from, Number(p.estimate),
+        p.fixed_point_change, holds ? "within" : "beyond", p.fixed_point_tolerance,
+        r.solver == "golden_section"
+            ? "the stage's `tolerance` times the estimate"
+            : "the larger of a tenth of its standard error and Ceres' parameter "
+              "tolerance; its weights, evaluated at its start, settle to 10 %");
+  }
+  return out.empty() ? out : out + "\n";
+}
+
 void AddParameters(const std::string& stage, const calibrate::CalibrationResult& r,
                    const calibrate::CalibrationStage& spec, CalibrationTables* t) {
   MarkdownTable md{{"parameter", "unit", "the scene's value", "start", "bounds",
@@ -218,6 +238,14 @@ void AddParameters(const std::string& stage, const calibrate::CalibrationResult&
          {"profile_open", {p.profile_open_lower, p.profile_open_upper}},
          {"identified", p.identified},
          {"not_identified_why", p.not_identified_why}});
+    // Only a start an override file gave has one: no other run's file moves.
+    if (!p.start_from.empty())
+      t->params_json.back()["fixed_point"] = {
+          {"start_from", p.start_from},
+          {"start", p.start},
+          {"change", p.fixed_point_change},
+          {"tolerance", p.fixed_point_tolerance},
+          {"holds", p.fixed_point_change <= p.fixed_point_tolerance}};
     md.AddRow({"`" + p.name + "`", unit, Number(p.scene_value), Number(p.start),
                fmt::format("[{}, {}]", Number(ps.lower), Number(ps.upper)),
                "**" + Number(p.estimate) + "**", Number(p.standard_error),
@@ -229,6 +257,7 @@ void AddParameters(const std::string& stage, const calibrate::CalibrationResult&
                ProfileText(p)});
   }
   t->markdown += ToMarkdown(md);
+  t->markdown += FixedPointText(r);
   for (const calibrate::FittedParameter& p : r.parameters)
     if (!p.identified)
       t->markdown += fmt::format("\n- `{}` is **not identified**: {}.", p.name,

@@ -41,6 +41,10 @@ class KindInput {
   // precision setting, a stability case's integrator) stays its own. May set
   // `file->scene` to the first scene the kind runs.
   virtual void ApplyOverrides(const ParameterOverrides&, ExperimentFile*) {}
+  // Parameters the kind sets itself in its file's scene (a calibration's
+  // fitted ones): an override file does not set them there (the kind's
+  // ApplyOverrides decides what its value means).
+  virtual std::vector<std::string> OwnParameters() const { return {}; }
   // Files read besides the experiment file, its scene and an override file, for
   // the run's manifest, in the order read.
   virtual std::vector<std::string> InputFiles() const { return {}; }

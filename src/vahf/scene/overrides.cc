@@ -68,7 +68,14 @@ void ApplyOverridesExcept(const ParameterOverrides& o,
 
 void ApplyOverrides(const ParameterOverrides& o, ExperimentFile* file) {
   file->overrides_path = o.file;
-  if (!file->scene_path.empty()) ApplyOverrides(o, &file->scene);
+  if (!file->scene_path.empty()) {
+    const std::vector<std::string> own =
+        file->input ? file->input->OwnParameters() : std::vector<std::string>{};
+    for (const auto& [name, value] : o.values)
+      if (std::find(own.begin(), own.end(), name) == own.end())
+        Set(o, name, value, &file->scene);
+    Check(o, file->scene);
+  }
   if (file->input) file->input->ApplyOverrides(o, file);
 }
 

@@ -40,7 +40,8 @@ void ApplyOverridesExcept(const ParameterOverrides& overrides,
                           const std::vector<std::pair<std::string, nlohmann::json>>& own,
                           const std::string& also_own, Scene* scene);
 
-// The same for every scene an experiment runs: its scene, then the scenes its
+// The same for every scene an experiment runs: its scene (but for the
+// parameters its kind sets itself, KindInput::OwnParameters), then the scenes its
 // kind's input holds (KindInput::ApplyOverrides: working conditions, a
 // precision experiment's scenes with their reference and settings, a stability
 // case's scenes, each experiment a paper run lists).
