@@ -58,9 +58,10 @@ void ApplyOverridesExcept(const ParameterOverrides& o,
                           const std::vector<std::pair<std::string, nlohmann::json>>& own,
                           const std::string& also_own, Scene* scene) {
   for (const auto& [name, value] : o.values) {
+    const std::string& named = name;  // a lambda cannot capture a binding (C++17)
     const bool kept =
-        name == also_own || std::any_of(own.begin(), own.end(),
-                                        [&](const auto& s) { return s.first == name; });
+        named == also_own || std::any_of(own.begin(), own.end(),
+                                         [&](const auto& s) { return s.first == named; });
     if (!kept) Set(o, name, value, scene);
   }
   Check(o, *scene);
