@@ -640,7 +640,11 @@ fi
 # (resume_test.sh resumes such runs).
 "$vahf" run "$root/experiments/fatigue.json" --trials 50 --out "$tmp/int" >"$out" 2>"$err" &
 pid=$!
-sleep 1.5
+# Once a cycle has finished (its record journaled), or after 2 minutes.
+for ((i = 0; i < 1200; ++i)); do
+  grep -qa '^entry ' "$tmp/int.partial"/journal/batch-*.log 2>/dev/null && break
+  sleep 0.1
+done
 kill -INT "$pid"
 wait "$pid"
 status=$?
