@@ -48,7 +48,8 @@ SyntheticLabSpec BlockLab(std::uint64_t seed) {
 CalibrationSpec KappaFromTime() {
   CalibrationSpec spec;
   spec.stages.emplace_back();
-  spec.stages[0].parameters = {{"guidance/kappa", 400.0, 50.0, 2000.0, "/parameters/0"}};
+  spec.stages[0].parameters = {
+      {"guidance/kappa", 400.0, 50.0, 2000.0, "/parameters/0", ""}};
   spec.stages[0].targets = {{"assembly_time", "block", false, "/targets/0", 0, 0, ""}};
   return spec;
 }
@@ -261,7 +262,7 @@ SyntheticLabSpec ReachLab(std::uint64_t seed, const human::ReachCurve& reach) {
 CalibrationSpec ReachAndKappa(const std::vector<ParameterSpec>& reach) {
   CalibrationSpec spec = KappaFromTime();
   std::vector<ParameterSpec> all = reach;
-  all.push_back({"guidance/kappa", 400.0, 50.0, 2000.0, "/parameters/3"});
+  all.push_back({"guidance/kappa", 400.0, 50.0, 2000.0, "/parameters/3", ""});
   spec.stages[0].parameters = all;
   spec.stages[0].targets[0].by_operator = true;
   return spec;
@@ -276,9 +277,9 @@ TEST(Calibration, AJointFitOfReachAndKappaRunsToItsEndAtTheRulesEdge) {
       scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   const data::LabDataset lab = GenerateSyntheticLab(ReachLab(31, {}), Quiet());
   const CalibrationSpec spec =
-      ReachAndKappa({{"reach/d1_arm_fraction", 0.85, 0.5, 1.2, "/parameters/0"},
-                     {"reach/d2_height_fraction", 0.39, 0.3, 0.6, "/parameters/1"},
-                     {"reach/d3_height_fraction", 0.68, 0.5, 0.9, "/parameters/2"}});
+      ReachAndKappa({{"reach/d1_arm_fraction", 0.85, 0.5, 1.2, "/parameters/0", ""},
+                     {"reach/d2_height_fraction", 0.39, 0.3, 0.6, "/parameters/1", ""},
+                     {"reach/d3_height_fraction", 0.68, 0.5, 0.9, "/parameters/2", ""}});
   CalibrationResult r;
   ASSERT_NO_THROW(r = Fit(scene, lab, spec, "test", 7, 8, Quiet()));
   EXPECT_GT(r.differences.one_sided, 0) << r.ceres_full;
@@ -302,7 +303,8 @@ TEST(Calibration, AGoldenSectionSearchWalksUpToTheRulesEdgeAndStops) {
   const data::LabDataset lab = GenerateSyntheticLab(ReachLab(37, {}), Quiet());
   CalibrationSpec spec = KappaFromTime();
   spec.stages[0].solver = "golden_section";
-  spec.stages[0].parameters = {{"reach/d1_arm_fraction", 0.6, 0.5, 1.2, "/parameters/0"}};
+  spec.stages[0].parameters = {
+      {"reach/d1_arm_fraction", 0.6, 0.5, 1.2, "/parameters/0", ""}};
   spec.stages[0].targets[0].by_operator = true;
   CalibrationResult r;
   ASSERT_NO_THROW(r = Fit(scene, lab, spec, "test", 7, 8, Quiet()));
@@ -334,7 +336,7 @@ TEST(Calibration, AStageOfTimesAndSegmentsRunsBothDesignsOnStreamsOfTheirOwn) {
   lab.segments_file = "segments.csv";
   CalibrationSpec spec = KappaFromTime();
   spec.stages[0].parameters.push_back(
-      {"fatigue/a_max", 20000.0, 500.0, 1e6, "/parameters/1"});
+      {"fatigue/a_max", 20000.0, 500.0, 1e6, "/parameters/1", ""});
   spec.stages[0].targets[0].by_operator = true;
   for (int s = 1; s <= 2; ++s) {
     TargetSpec t;
@@ -395,9 +397,9 @@ TEST(Calibration, ReachThatMovesNoTargetIsNotIdentifiedAndKappaKeepsItsInterval)
       scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   const data::LabDataset lab = GenerateSyntheticLab(ReachLab(33, FlatReach()), Quiet());
   const CalibrationSpec spec =
-      ReachAndKappa({{"reach/d1_arm_fraction", 1.1, 1.0, 1.3, "/parameters/0"},
-                     {"reach/d2_height_fraction", 0.62, 0.6, 0.7, "/parameters/1"},
-                     {"reach/d3_height_fraction", 0.8, 0.75, 0.9, "/parameters/2"}});
+      ReachAndKappa({{"reach/d1_arm_fraction", 1.1, 1.0, 1.3, "/parameters/0", ""},
+                     {"reach/d2_height_fraction", 0.62, 0.6, 0.7, "/parameters/1", ""},
+                     {"reach/d3_height_fraction", 0.8, 0.75, 0.9, "/parameters/2", ""}});
   const CalibrationResult r = Fit(scene, lab, spec, "test", 7, 12, Quiet());
   EXPECT_EQ(r.rank.rank, 1) << r.rank.singular_values.transpose();
   for (int i = 0; i < 3; ++i) {
@@ -427,9 +429,9 @@ TEST(Calibration, AProfileStageGivesTheIdentifiedTheirProfileIntervalsOnly) {
       scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   const data::LabDataset lab = GenerateSyntheticLab(ReachLab(33, FlatReach()), Quiet());
   CalibrationSpec spec =
-      ReachAndKappa({{"reach/d1_arm_fraction", 1.1, 1.0, 1.3, "/parameters/0"},
-                     {"reach/d2_height_fraction", 0.62, 0.6, 0.7, "/parameters/1"},
-                     {"reach/d3_height_fraction", 0.8, 0.75, 0.9, "/parameters/2"}});
+      ReachAndKappa({{"reach/d1_arm_fraction", 1.1, 1.0, 1.3, "/parameters/0", ""},
+                     {"reach/d2_height_fraction", 0.62, 0.6, 0.7, "/parameters/1", ""},
+                     {"reach/d3_height_fraction", 0.8, 0.75, 0.9, "/parameters/2", ""}});
   spec.intervals = "profile";
   const CalibrationResult r = Fit(scene, lab, spec, "test", 7, 12, Quiet());
   for (int i = 0; i < 3; ++i) {
@@ -456,9 +458,9 @@ TEST(Calibration, AStartThatBreaksTheReachRuleIsNamed) {
       scene::LoadScene(Path("experiments/scenes/steel_block_move.json"));
   const data::LabDataset lab = GenerateSyntheticLab(ReachLab(35, {}), Quiet());
   const CalibrationSpec spec =
-      ReachAndKappa({{"reach/d1_arm_fraction", 0.9, 0.5, 1.2, "/parameters/0"},
-                     {"reach/d2_height_fraction", 0.39, 0.3, 0.6, "/parameters/1"},
-                     {"reach/d3_height_fraction", 0.68, 0.5, 0.9, "/parameters/2"}});
+      ReachAndKappa({{"reach/d1_arm_fraction", 0.9, 0.5, 1.2, "/parameters/0", ""},
+                     {"reach/d2_height_fraction", 0.39, 0.3, 0.6, "/parameters/1", ""},
+                     {"reach/d3_height_fraction", 0.68, 0.5, 0.9, "/parameters/2", ""}});
   try {
     Calibrate(scene, lab, spec, "calib.json", 1, 2, Quiet());
     FAIL() << "no error";
@@ -476,7 +478,7 @@ TEST(Calibration, BoundsThatAdmitABrokenSceneAreNamed) {
   CalibrationSpec spec;
   // D1 = 3 arm lengths lies beyond D2 = 0.39 h: not a reach curve.
   const std::vector<ParameterSpec> parameters = {
-      {"reach/d1_arm_fraction", 3.0, 2.0, 4.0, "/parameters/0"}};
+      {"reach/d1_arm_fraction", 3.0, 2.0, 4.0, "/parameters/0", ""}};
   try {
     WithParameters(scene, parameters, {3.0}, "calib.json");
     FAIL() << "no error";

@@ -55,8 +55,9 @@ SyntheticLabSpec PractisedLab(std::uint64_t seed) {
 CalibrationSpec ExponentAndKappa() {
   CalibrationSpec spec;
   spec.stages.emplace_back();
-  spec.stages[0].parameters = {{"learning/exponent", 0.1, 0.0, 1.5, "/parameters/0"},
-                               {"guidance/kappa", 400.0, 50.0, 2000.0, "/parameters/1"}};
+  spec.stages[0].parameters = {
+      {"learning/exponent", 0.1, 0.0, 1.5, "/parameters/0", ""},
+      {"guidance/kappa", 400.0, 50.0, 2000.0, "/parameters/1", ""}};
   scene::FitTarget t;
   t.quantity = "assembly_time";
   t.part = "block";

@@ -427,7 +427,7 @@ CalibrationSpec FitTo(const std::string& parameter, double start, double lower,
   CalibrationSpec spec;
   spec.max_iterations = 3;
   spec.stages.emplace_back();
-  spec.stages[0].parameters = {{parameter, start, lower, upper, "/parameters/0"}};
+  spec.stages[0].parameters = {{parameter, start, lower, upper, "/parameters/0", ""}};
   spec.stages[0].targets = {target};
   return spec;
 }
