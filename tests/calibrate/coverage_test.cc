@@ -110,7 +110,7 @@ CalibrationSpec JointFit() {
   for (std::size_t i = 0; i < kTruth.size(); ++i) {
     const Truth& t = kTruth[i];
     stage.parameters.push_back(
-        {t.name, t.start, t.lower, t.upper, "/parameters/" + std::to_string(i)});
+        {t.name, t.start, t.lower, t.upper, "/parameters/" + std::to_string(i), ""});
   }
   // Each operator's mean time, weighed by the variance pooled over the 8
   // operators (40 degrees of freedom on the lab's side, 72 on the virtual):
