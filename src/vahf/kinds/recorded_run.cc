@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <system_error>
 
 #include "vahf/core/digest.h"
@@ -42,6 +44,18 @@ scene::ExperimentFile LoadRecordedExperiment(const report::RecordedRun& run) {
   if (!run.invocation.overrides.empty())
     scene::ApplyOverrides(scene::LoadOverrides(run.invocation.overrides), &file);
   return file;
+}
+
+std::optional<std::string> ReadResultFile(const std::string& run_dir,
+                                          const std::string& name) {
+  const fs::path path = fs::path(run_dir) / name;
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
 }
 
 experiment::RunSettings RecordedSettings(const report::RecordedRun& run, int threads) {

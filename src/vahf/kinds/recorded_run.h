@@ -3,6 +3,7 @@
 // experiment loaded as the run loaded it.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "vahf/experiment/design.h"
@@ -20,6 +21,11 @@ report::RecordedRun ReadRecordedRun(const std::string& run_dir);
 
 // The experiment the run read, with the override file it was given.
 scene::ExperimentFile LoadRecordedExperiment(const report::RecordedRun& run);
+
+// The bytes of result file `name` of the run in `run_dir`; nothing when it
+// is not a readable regular file.
+std::optional<std::string> ReadResultFile(const std::string& run_dir,
+                                          const std::string& name);
 
 // The run's settings: its seed and --trials, on `threads` threads.
 experiment::RunSettings RecordedSettings(const report::RecordedRun& run, int threads);

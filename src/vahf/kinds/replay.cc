@@ -6,7 +6,6 @@
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -53,11 +52,9 @@ CycleRow FindRow(const report::RecordedRun& run, const std::string& run_dir,
                                  "files; a cycles table's name ends in cycles.csv)",
                                  run.file));
   const std::string path = (fs::path(run_dir) / out.table).string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "", "cannot open the file for reading");
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  out.csv = data::ParseCsv(bytes.str(), path);
+  const std::optional<std::string> bytes = ReadResultFile(run_dir, out.table);
+  if (!bytes) throw InputError(path, "", "", "cannot open the file for reading");
+  out.csv = data::ParseCsv(*bytes, path);
   if (row > out.csv.rows.size())
     throw InputError("--cycle", "", spec,
                      fmt::format("{} has {} data rows", out.table, out.csv.rows.size()));

@@ -6,9 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <system_error>
 
 #include "vahf/core/error.h"
@@ -22,17 +20,6 @@ namespace vahf::kinds {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The bytes of `path`; nothing when it is not a readable regular file.
-std::optional<std::string> ReadBytes(const fs::path& path) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
 
 // A directory made for the re-run, removed with everything in it unless
 // the user asked to keep the output.
@@ -82,12 +69,12 @@ int CompareResults(const report::RecordedRun& run, const std::string& rerun_dir)
   for (const std::string& name : again.result_files)
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   std::sort(names.begin(), names.end());
-  const fs::path dir(run.file);
   std::string first;
   int differing = 0;
   for (const std::string& name : names) {
-    const std::optional<std::string> recorded = ReadBytes(dir.parent_path() / name);
-    const std::optional<std::string> rerun = ReadBytes(fs::path(rerun_dir) / name);
+    const std::optional<std::string> recorded =
+        ReadResultFile(fs::path(run.file).parent_path().string(), name);
+    const std::optional<std::string> rerun = ReadResultFile(rerun_dir, name);
     std::string what;
     if (!recorded) {
       what = name + (rerun ? ": missing from the run directory" : ": missing from both");
