@@ -47,6 +47,17 @@ function(vahf_configure_build_info output)
     endif()
     string(APPEND VAHF_LIBRARIES "${name}=${version};")
   endforeach()
+  # MPI: the library's own version ("Open MPI v4.1.4"), or none in a build
+  # without it (CMakeLists.txt).
+  set(mpi "none")
+  if(MPI_CXX_FOUND)
+    string(REGEX REPLACE ",.*" "" mpi "${MPI_CXX_LIBRARY_VERSION_STRING}")
+    string(STRIP "${mpi}" mpi)
+    if(mpi STREQUAL "")
+      set(mpi "MPI ${MPI_CXX_VERSION}")
+    endif()
+  endif()
+  string(APPEND VAHF_LIBRARIES "MPI=${mpi};")
 
   configure_file("${PROJECT_SOURCE_DIR}/src/vahf/report/build_info_values.h.in" "${output}"
                  @ONLY)

@@ -13,13 +13,17 @@
 #include <cstdio>
 #include <exception>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "vahf/calibrate/synthetic_lab.h"
 #include "vahf/core/atomic_file.h"
 #include "vahf/core/error.h"
+#include "vahf/core/temporary_directory.h"
 #include "vahf/data/lab_dataset.h"
 #include "vahf/experiment/interrupt.h"
+#include "vahf/experiment/launched_ranks.h"
 #include "vahf/experiment/table1_reference.h"
 #include "vahf/kinds/kind.h"
 #include "vahf/kinds/replay.h"
@@ -192,7 +196,10 @@ struct RunArgs {
   bool resume = false;
 };
 
-int Run(const RunArgs& a) {
+// `ranks`: the MPI job's, when launched in one (launched_ranks.h). Every rank
+// runs the whole command; rank 0 writes the output, the others write theirs
+// into a temporary directory of their own, removed at the end.
+int Run(const RunArgs& a, const vahf::experiment::Ranks* ranks) {
   vahf::scene::ExperimentFile file = vahf::kinds::LoadExperiment(a.experiment);
   if (!a.overrides.empty())
     vahf::scene::ApplyOverrides(vahf::scene::LoadOverrides(a.overrides), &file);
@@ -200,11 +207,27 @@ int Run(const RunArgs& a) {
   context.settings.seed = a.seed_given ? a.seed : file.seed;
   context.settings.trials = a.trials;
   context.settings.threads = a.threads;
-  const std::string out = a.out.empty() ? "runs/" + file.name + "-seed" +
-                                              std::to_string(context.settings.seed)
-                                        : a.out;
+  context.settings.ranks = ranks;
+  std::string out = a.out.empty() ? "runs/" + file.name + "-seed" +
+                                        std::to_string(context.settings.seed)
+                                  : a.out;
+  bool resume = a.resume;
+  std::optional<vahf::TemporaryDirectory> own;
+  if (ranks && ranks->rank() != 0) {
+    own.emplace("vahf-rank" + std::to_string(ranks->rank()));
+    out = own->path() + "/out";
+    resume = false;  // rank 0 keeps the journal
+    context.settings.progress = false;
+  }
   // Checked and staged before any simulation: a refused path costs nothing.
-  vahf::report::OutputDirectory directory(out, a.resume);
+  // Rank 0's refusal stops every rank.
+  std::optional<vahf::report::OutputDirectory> staged;
+  const auto stage = [&] { staged.emplace(out, resume); };
+  if (ranks)
+    vahf::experiment::AllAgree(*ranks, stage);
+  else
+    stage();
+  vahf::report::OutputDirectory& directory = *staged;
   context.directory = &directory;
   vahf::experiment::InstallInterruptHandler();
   try {
@@ -250,7 +273,36 @@ int Synthesize(const SynthesizeArgs& a) {
 
 }  // namespace
 
+// Joins the MPI job this process was launched in, if any (launched_ranks.h).
+// A rank other than 0 prints nothing: rank 0 prints the same lines.
+std::unique_ptr<vahf::experiment::Ranks> JoinRanks(int* argc, char*** argv) {
+  std::unique_ptr<vahf::experiment::Ranks> ranks =
+      vahf::experiment::JoinLaunchedRanks(argc, argv);
+  if (ranks && ranks->rank() != 0 && !std::freopen("/dev/null", "w", stdout))
+    throw vahf::ComputationError(vahf::ComputationError::Reason::kRefused,
+                                 "cannot send rank " + std::to_string(ranks->rank()) +
+                                     "'s standard output to /dev/null");
+  return ranks;
+}
+
 int main(int argc, char** argv) {
+  std::unique_ptr<vahf::experiment::Ranks> ranks;
+  try {
+    ranks = JoinRanks(&argc, &argv);
+  } catch (const vahf::InputError& e) {
+    std::fprintf(stderr, "vahf: error: %s\n", e.what());
+    return vahf::kExitInputError;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "vahf: error: %s\n", e.what());
+    return vahf::kExitComputationFailure;
+  }
+  // Errors are the same on every rank (ranks.h): rank 0 says it.
+  const bool quiet = ranks && ranks->rank() != 0;
+  const auto say = [quiet](const char* prefix, const char* what,
+                           const char* suffix = "") {
+    if (!quiet) std::fprintf(stderr, "vahf: %s: %s%s\n", prefix, what, suffix);
+  };
+
   CLI::App app{
       "vahf: a deterministic, seeded validation harness for physics-based virtual "
       "assembly with human factors"};
@@ -453,15 +505,19 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // One line, as every input error (CLI11's exit() adds a second).
-    std::fprintf(stderr, "vahf: error: %s\n", e.what());
+    say("error", e.what());
     return vahf::kExitInputError;
   }
 
   try {
+    if (ranks && ranks->size() > 1 && !*run)
+      throw vahf::InputError(
+          "mpirun", "", std::to_string(ranks->size()) + " ranks",
+          "only `vahf run` spreads over MPI ranks: run the other commands alone");
+    if (*run) return Run(run_args, ranks.get());
     if (*check) return Check(check_path);
     if (*reference) return Reference(table_path);
     if (*trial) return Trial(trial_args);
-    if (*run) return Run(run_args);
     if (*synthesize) return Synthesize(synth_args);
     if (*replay) {
       if (replay_options.sample != 0 && !(replay_options.sample > 0))
@@ -486,18 +542,18 @@ int main(int argc, char** argv) {
       return 0;
     }
   } catch (const vahf::InputError& e) {
-    std::fprintf(stderr, "vahf: error: %s\n", e.what());
+    say("error", e.what());
     return vahf::kExitInputError;
   } catch (const vahf::experiment::Interrupted& e) {
-    std::fprintf(stderr, "vahf: interrupted: %s; no output was written\n", e.what());
+    say("interrupted", e.what(), "; no output was written");
     return vahf::kExitInterrupted;
   } catch (const vahf::ComputationError& e) {
-    std::fprintf(stderr, "vahf: error: %s\n", e.what());
+    say("error", e.what());
     return vahf::kExitComputationFailure;
   } catch (const std::exception& e) {
     // Not one of ours: a library's exception or std::bad_alloc. The computation
     // failed all the same.
-    std::fprintf(stderr, "vahf: error: %s\n", e.what());
+    say("error", e.what());
     return vahf::kExitComputationFailure;
   }
   return vahf::kExitComputationFailure;

@@ -66,6 +66,7 @@ RunnerOptions RunnerOptionsOf(const RunSettings& s, const std::string& label,
   o.unit = unit;
   o.progress = s.progress;
   o.journal = s.journal;
+  o.ranks = s.ranks;
   return o;
 }
 

@@ -102,10 +102,13 @@ struct RunSettings {
   int threads = 1;
   bool progress = true;
   Journal* journal = nullptr;  // the run's journal (journal.h); null: none
+  const Ranks* ranks =
+      nullptr;  // the processes it is spread over (ranks.h); null: this one
+  int RankCount() const { return ranks ? ranks->size() : 1; }
 };
 
 // The runner's options of a run with these settings (threads, progress,
-// journal), its indices called `unit` on the progress line of `label`.
+// journal, ranks), its indices called `unit` on the progress line of `label`.
 RunnerOptions RunnerOptionsOf(const RunSettings& settings, const std::string& label,
                               const std::string& unit = "cycles");
 

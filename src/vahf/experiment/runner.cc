@@ -116,10 +116,14 @@ void RunIndices(std::size_t n, const RunnerOptions& options,
 
   if (shared.failure) std::rethrow_exception(shared.failure);
   if (shared.stopped.load() && done < n) {
-    throw Interrupted(fmt::format("{}{}stopped on request after {} of {} {}",
-                                  options.label, options.label.empty() ? "" : ": ", done,
-                                  n, options.unit));
+    throw Interrupted(StoppedMessage(options, done, n));
   }
+}
+
+std::string StoppedMessage(const RunnerOptions& options, std::size_t done,
+                           std::size_t n) {
+  return fmt::format("{}{}stopped on request after {} of {} {}", options.label,
+                     options.label.empty() ? "" : ": ", done, n, options.unit);
 }
 
 }  // namespace vahf::experiment::internal

@@ -16,6 +16,7 @@
 
 #include "vahf/experiment/interrupt.h"
 #include "vahf/experiment/journal.h"
+#include "vahf/experiment/ranks.h"
 
 namespace vahf::experiment {
 
@@ -28,6 +29,10 @@ struct RunnerOptions {
   // Keeps each finished index and resumes those it holds (journal.h), for a
   // RunIndexed given a codec; null: nothing is kept.
   Journal* journal = nullptr;
+  // The processes the run is spread over (ranks.h); null or one rank: this
+  // process runs every index. With several, a RunIndexed given a codec
+  // runs this rank's share and gathers the rest; only rank 0 journals.
+  const Ranks* ranks = nullptr;
 };
 
 // How a journal keeps a result of type R: as bytes and back, exactly
@@ -43,6 +48,18 @@ namespace internal {
 // RunIndexed below. body must not throw for a reason other than fn's.
 void RunIndices(std::size_t n, const RunnerOptions& options,
                 const std::function<void(std::size_t)>& body);
+// The text of the Interrupted a stopped batch throws.
+std::string StoppedMessage(const RunnerOptions& options, std::size_t done, std::size_t n);
+// RunIndexed over options.ranks (several ranks): the indices the journal
+// holds (rank 0's) are read, the others dealt round-robin (the k-th one
+// missing goes to rank k mod size), each rank runs its share on its threads
+// with `run` (fn's result encoded), and every rank gets every index's bytes,
+// in index order. Rank 0 journals every result, its own as they finish, the
+// others' when they arrive. Errors as RunIndices: every rank throws the
+// exception of the lowest failing index, or Interrupted if a rank stopped.
+std::vector<std::string> RunIndicesOnRanks(
+    std::size_t n, const RunnerOptions& options,
+    const std::function<std::string(std::size_t)>& run);
 }  // namespace internal
 
 // Calls fn(i) for every i in [0, n) on `options.threads` worker threads, which
@@ -58,11 +75,22 @@ void RunIndices(std::size_t n, const RunnerOptions& options,
 // With options.journal and a codec, it is one batch of the journal: an
 // index the journal holds is decoded instead of run (fn is not called for
 // it), and every index run is journaled as it finishes. The results are the
-// same bits either way.
+// same bits either way. With options.ranks of several ranks and a codec, the
+// batch is spread over them (internal::RunIndicesOnRanks): every result is
+// then decoded from its bytes, on every rank, so each rank holds the same
+// bits whichever rank ran an index.
 template <class R>
 std::vector<R> RunIndexed(std::size_t n, const RunnerOptions& options,
                           const std::function<R(std::size_t)>& fn,
                           const ResultCodec<R>* codec = nullptr) {
+  if (codec && options.ranks && options.ranks->size() > 1) {
+    const std::vector<std::string> bytes = internal::RunIndicesOnRanks(
+        n, options, [&](std::size_t i) { return codec->encode(fn(i)); });
+    std::vector<R> results;
+    results.reserve(n);
+    for (const std::string& b : bytes) results.push_back(codec->decode(b));
+    return results;
+  }
   // optional<R>: R need not be default-constructible; each worker writes only
   // the slots of the indices it took.
   std::vector<std::optional<R>> slots(n);

@@ -57,9 +57,10 @@ int RunCalibration(const scene::ExperimentFile& file, const RunContext& context)
   const auto start = std::chrono::steady_clock::now();
   const std::vector<calibrate::CalibrationResult> stages = calibrate::Calibrate(
       file.scene, lab, file.Input<calibrate::CalibrationDesign>(), file.file,
-      settings.seed, trials, options,
-      [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
-  const report::RunInfo info{settings.threads, SecondsSince(start), settings.trials};
+      settings.seed, trials, options, [&](const std::string& line) {
+        if (settings.progress) std::fprintf(stderr, "%s\n", line.c_str());
+      });
+  const report::RunInfo info = RunInfoOf(settings, start);
   const report::RunOutput written = WriteLabRun(
       file, lab, context, trials, " per lab operator and parameter vector",
       KindSection(context, report::CalibrationSection(file, lab, stages)), info);

@@ -68,7 +68,7 @@ int RunComparison(const scene::ExperimentFile& file, const RunContext& context) 
   const compare::ComparisonResult result =
       compare::Compare(file.scene, lab, file.Input<compare::ComparisonDesign>(),
                        file.file, settings.seed, trials, options, pilot_options);
-  const report::RunInfo info{settings.threads, SecondsSince(start), settings.trials};
+  const report::RunInfo info = RunInfoOf(settings, start);
   const report::RunOutput written = WriteLabRun(
       file, lab, context, trials,
       result.fatigue.run.conditions.empty() ? " per lab operator"

@@ -136,8 +136,7 @@ int RunExperiment(const scene::ExperimentFile& file, const RunContext& given) {
   if (kind.run) return kind.run(file, context);
   const auto start = std::chrono::steady_clock::now();
   const experiment::ExperimentRun run = RunDesign(file, context.settings);
-  const report::RunInfo info{context.settings.threads, SecondsSince(start),
-                             context.settings.trials};
+  const report::RunInfo info = RunInfoOf(context.settings, start);
   const report::RunOutput written =
       report::WriteRunOutput(run, Sections(run), *context.directory, info);
   return FinishRun(file, context, info.wall_seconds, written);

@@ -66,16 +66,30 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+report::RunInfo RunInfoOf(const experiment::RunSettings& settings,
+                          std::chrono::steady_clock::time_point start) {
+  report::RunInfo info;
+  info.threads = settings.threads;
+  info.wall_seconds = SecondsSince(start);
+  info.trials_option = settings.trials;
+  info.ranks = settings.RankCount();
+  return info;
+}
+
 int FinishRun(const scene::ExperimentFile& file, const RunContext& context,
               double seconds, const report::RunOutput& written,
               const std::string& detail) {
   std::printf(
-      "%s: %s, seed %llu, %.1f s on %d thread(s)%s%s\nresults digest %s\n"
+      "%s: %s, seed %llu, %.1f s on %d thread(s)%s%s%s\nresults digest %s\n"
       "report: %s/report.md\n",
       file.name.c_str(), file.kind.c_str(),
       static_cast<unsigned long long>(context.settings.seed), seconds,
-      context.settings.threads, detail.empty() ? "" : ", ", detail.c_str(),
-      written.results_digest.c_str(), context.directory->path().c_str());
+      context.settings.threads,
+      context.settings.RankCount() > 1
+          ? fmt::format(" x {} ranks", context.settings.RankCount()).c_str()
+          : "",
+      detail.empty() ? "" : ", ", detail.c_str(), written.results_digest.c_str(),
+      context.directory->path().c_str());
   for (const std::string& failure : written.failed_plots)
     std::fprintf(stderr, "vahf: error: plot not rendered (results kept): %s\n",
                  failure.c_str());

@@ -24,8 +24,11 @@ std::string CheckOneScene(const scene::ExperimentFile& file);
 report::Section KindSection(const RunContext& context, report::Section section);
 
 double SecondsSince(std::chrono::steady_clock::time_point start);
+// What the output records of a run with these settings started at `start`.
+report::RunInfo RunInfoOf(const experiment::RunSettings& settings,
+                          std::chrono::steady_clock::time_point start);
 
-// Prints "NAME: KIND, seed S, X s on T thread(s)[, detail]", the results
+// Prints "NAME: KIND, seed S, X s on T thread(s)[ x R ranks][, detail]", the results
 // digest and the report's path, then any plot that failed (on stderr);
 // returns the exit status: 1 when a plot failed (the results are kept), else 0.
 int FinishRun(const scene::ExperimentFile& file, const RunContext& context,

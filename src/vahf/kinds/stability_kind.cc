@@ -43,7 +43,7 @@ int RunStability(const scene::ExperimentFile& file, const RunContext& context) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<experiment::StabilityTrial> trials = experiment::RunStabilityTrials(
       file.Input<experiment::StabilityDesign>(), settings.seed, options);
-  const report::RunInfo info{settings.threads, SecondsSince(start), settings.trials};
+  const report::RunInfo info = RunInfoOf(settings, start);
   report::RunHeader h;
   h.file = &file;
   h.first = &file;

@@ -1,7 +1,6 @@
 #include "vahf/kinds/verify.h"
 
 #include <fmt/format.h>
-#include <stdlib.h>  // mkdtemp (POSIX)
 
 #include <algorithm>
 #include <cstdio>
@@ -10,6 +9,7 @@
 #include <system_error>
 
 #include "vahf/core/error.h"
+#include "vahf/core/temporary_directory.h"
 #include "vahf/kinds/kind.h"
 #include "vahf/kinds/recorded_run.h"
 #include "vahf/report/manifest.h"
@@ -30,23 +30,13 @@ class RerunDirectory {
       output_ = keep;
       return;
     }
-    std::string pattern = (fs::temp_directory_path() / "vahf-verify-XXXXXX").string();
-    if (!mkdtemp(pattern.data()))
-      throw ComputationError(ComputationError::Reason::kRefused,
-                             "verify: cannot create a temporary directory " + pattern);
-    temporary_ = pattern;
-    output_ = temporary_ + "/rerun";
+    temporary_.emplace("vahf-verify");
+    output_ = temporary_->path() + "/rerun";
   }
-  ~RerunDirectory() {
-    std::error_code ignored;
-    if (!temporary_.empty()) fs::remove_all(temporary_, ignored);
-  }
-  RerunDirectory(const RerunDirectory&) = delete;
-  RerunDirectory& operator=(const RerunDirectory&) = delete;
   const std::string& output() const { return output_; }
 
  private:
-  std::string temporary_;
+  std::optional<TemporaryDirectory> temporary_;
   std::string output_;
 };
 
@@ -126,8 +116,12 @@ int Verify(const VerifyOptions& options) {
   std::string how = fmt::format("seed {}", i.seed);
   if (i.trials > 0) how += fmt::format(", --trials {}", i.trials);
   if (!i.overrides.empty()) how += ", --overrides " + i.overrides;
-  std::printf("re-running %s, %s, on %d thread(s)\n", i.experiment.c_str(), how.c_str(),
-              threads);
+  std::printf(
+      "re-running %s, %s, on %d thread(s)%s\n", i.experiment.c_str(), how.c_str(),
+      threads,
+      run.ranks > 1
+          ? fmt::format(" in one process (the run had {} MPI ranks)", run.ranks).c_str()
+          : "");
   std::fflush(stdout);
   const RerunDirectory rerun(options.keep);
   Rerun(run, threads, rerun.output());

@@ -101,6 +101,7 @@ nlohmann::json ManifestJson(const ManifestFields& f) {
       {"seed", f.seed},
       {"trials", f.trials},
       {"threads", f.threads},
+      {"ranks", f.ranks},
       {"parameters", ParametersToJson(f.parameters)},
       {"build", BuildJson(f.build)},
       {"result_files", f.result_files},
@@ -174,6 +175,8 @@ RecordedRun ReadManifest(const std::string& path) {
   i.seed = invocation->Required("seed").Unsigned();
   i.trials = invocation->Required("trials").Integer(0, 10'000'000);
   run.threads = static_cast<int>(root.Required("threads").Integer(1, 1024));
+  if (const auto ranks = root.Optional("ranks"))
+    run.ranks = static_cast<int>(ranks->Integer(1, 1 << 24));
   run.inputs.push_back(ReadInput(root.Required("experiment")));
   run.inputs.push_back(ReadInput(root.Required("scene")));
   if (const auto inputs = root.Optional("inputs"))

@@ -57,6 +57,7 @@ struct ManifestFields {
   std::uint64_t seed = 0;
   std::int64_t trials = 0;
   int threads = 1;
+  int ranks = 1;  // MPI ranks (experiment/ranks.h); results do not depend on it
   scene::Parameters parameters;  // the scene's, after its overrides
   BuildInfo build = GetBuildInfo();
   std::vector<std::string> result_files;  // the names ResultsDigest covered
@@ -65,7 +66,7 @@ struct ManifestFields {
 
 // {"format": "vahf-manifest/1", "invocation": {"experiment", "overrides",
 // "seed", "trials"}, "experiment": {"path", "sha256"}, "scene": {...},
-// "seed", "trials", "threads", "parameters": ParametersToJson,
+// "seed", "trials", "threads", "ranks", "parameters": ParametersToJson,
 // "build": {"version", "git_describe", "compiler", "compiler_version",
 // "build_type", "cxx_flags"}, "result_files": [...], "results_digest"}.
 // Keys are sorted, so dump() is deterministic.
@@ -85,6 +86,7 @@ struct RecordedRun {
   std::string file;  // the manifest's path, for messages
   Invocation invocation;
   int threads = 1;
+  int ranks = 1;  // "ranks", absent (1) in manifests written before MPI
   // Every input with its digest and the JSON pointer of its "sha256": the
   // experiment, the scene, then "inputs" in order.
   struct Input {

@@ -16,7 +16,8 @@ struct RunInfo {
   int threads = 1;
   double wall_seconds = 0;  // in report.md only, never in a result file
   int trials_option =
-      0;  // the --trials given, 0 for the file's (the manifest's invocation)
+      0;          // the --trials given, 0 for the file's (the manifest's invocation)
+  int ranks = 1;  // the MPI ranks it was spread over (1: none)
 };
 
 struct RunOutput {

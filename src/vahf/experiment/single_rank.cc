@@ -1,0 +1,16 @@
+// launched_ranks.h for a build without MPI.
+#include "vahf/core/error.h"
+#include "vahf/experiment/launched_ranks.h"
+
+namespace vahf::experiment {
+
+std::unique_ptr<Ranks> JoinLaunchedRanks(int*, char***) {
+  const std::string launched = LauncherVariable();
+  if (launched.empty()) return nullptr;
+  throw InputError("environment", "", launched,
+                   "this vahf was built without MPI, so each rank would run the whole "
+                   "experiment alone: install libopenmpi-dev (tools/setup) and build "
+                   "again, or run it without mpirun");
+}
+
+}  // namespace vahf::experiment
