@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Tests of `mpirun -n K vahf run` (docs/reproducibility.md, "Many machines:
 # MPI"): the paper run (2 cycles per condition) alone on 2 threads and on 2
-# and 3 ranks of 1 thread, a Table 1 run on 2 ranks of 2 threads, and a
+# and 3 ranks of 1 thread, a Table 1 run on 2 ranks of 2 threads and on 4, and a
 # calibration on 2 and 3 ranks end with the same results digest (and the same
 # calibrated.json); the manifest records the rank count; the ranks other than
 # 0 leave no files; a run stopped by Ctrl-C on 2 ranks resumes on 3 to the
@@ -63,13 +63,16 @@ else
   pass "the ranks other than 0 removed their temporary output"
 fi
 
-# --- Table 1 on 2 ranks of 2 threads.
+# --- Table 1 on 2 ranks of 2 threads and on 4 ranks.
 table1=$root/experiments/table1.json
 run run "$table1" --trials 12 --out "$tmp/table1"
 expect_status "table1 alone" 0
 on_ranks 2 run "$table1" --trials 12 --threads 2 --out "$tmp/table1-2x2"
 expect_status "table1 on 2 ranks x 2 threads" 0
 same_digest "table1 on 2 ranks x 2 threads" "$tmp/table1-2x2" "$tmp/table1"
+on_ranks 4 run "$table1" --trials 12 --out "$tmp/table1-4x1"
+expect_status "table1 on 4 ranks" 0
+same_digest "table1 on 4 ranks" "$tmp/table1-4x1" "$tmp/table1"
 
 # --- a calibration: its design evaluations spread the same way.
 calibrate=$root/experiments/calibrate_synthetic.json
