@@ -3,12 +3,15 @@
 // one-process results, each index run once; the lowest failing index's
 // error, with its class and fields, is thrown on every rank; a stop on any
 // rank stops all; rank 0's journal is read and completed with every rank's
-// results, so a resume on another rank count runs only what is missing.
-// Errors travel between ranks as bytes and come back as they went.
+// results, so a resume on another rank count runs only what is missing, and
+// its refusal stops every rank. Errors travel between ranks as bytes and come back as
+// they went.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -64,6 +67,10 @@ class ThreadRank : public Ranks {
   int size() const override { return group_->size(); }
   std::vector<std::string> AllGather(const std::string& mine) const override {
     return group_->AllGather(rank_, mine);
+  }
+  [[noreturn]] void Abort(int status) const override {
+    std::fprintf(stderr, "rank %d aborted the job with %d\n", rank_, status);
+    std::abort();  // the protocol never needs it: a test that gets here fails
   }
 
  private:
@@ -231,6 +238,31 @@ TEST(Spread, RankZerosJournalHoldsEveryRanksResultsAndResumesOnAnotherCount) {
   for (const Outcome& o : outcomes) {
     ASSERT_FALSE(o.error);
     for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(o.results[i], Value(i)) << i;
+  }
+  fs::remove_all(dir);
+}
+
+// Rank 0's journal refuses the batch (its size is not the journaled one's):
+// every rank throws that InputError, none waits for a rank that stopped.
+TEST(Spread, AJournalRefusalOnRankZeroStopsEveryRank) {
+  const std::string dir =
+      (fs::path(::testing::TempDir()) / "spread_test_refusal").string();
+  fs::remove_all(dir);
+  const nlohmann::json identity = {{"invocation", {{"seed", 1}}}, {"build", "x"}};
+  {
+    Journal journal(dir, identity, false);
+    for (const Outcome& o : RunOnRanks(2, 1, 10, Value, &journal)) ASSERT_FALSE(o.error);
+  }
+  Journal journal(dir, identity, true);
+  for (const Outcome& o : RunOnRanks(3, 1, 11, Value, &journal)) {
+    ASSERT_TRUE(o.error);
+    try {
+      std::rethrow_exception(o.error);
+    } catch (const InputError& e) {
+      EXPECT_NE(e.file().find("batch-0.log"), std::string::npos) << e.what();
+    } catch (...) {
+      ADD_FAILURE() << "not an InputError";
+    }
   }
   fs::remove_all(dir);
 }

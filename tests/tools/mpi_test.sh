@@ -5,8 +5,9 @@
 # calibration on 2 and 3 ranks end with the same results digest (and the same
 # calibrated.json); the manifest records the rank count; the ranks other than
 # 0 leave no files; a run stopped by Ctrl-C on 2 ranks resumes on 3 to the
-# same digest; a refused output path stops every rank with one error line;
-# other commands are refused on ranks.
+# same digest, and one of another seed is refused by rank 0 and stops every
+# rank; a refused output path stops every rank with one error line; other
+# commands are refused on ranks.
 #
 # Usage: mpi_test.sh VAHF_EXECUTABLE REPO_ROOT, with VAHF_MPIEXEC the mpirun
 # of the MPI vahf was built with (default: mpirun).
@@ -25,11 +26,12 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # often forbid (Open MPI's vader then fails with "Read -1, expected ...").
 export OMPI_MCA_btl_vader_single_copy_mechanism=none
 
-# on_ranks K ARGS...: `vahf ARGS...` on K ranks, as `run` does.
+# on_ranks K ARGS...: `vahf ARGS...` on K ranks, as `run` does; a job that
+# hangs (a rank waiting for one that stopped) is killed after 10 minutes.
 on_ranks() {
   local k=$1
   shift
-  "$mpirun" --oversubscribe -n "$k" "$vahf" "$@" >"$out" 2>"$err"
+  timeout 600 "$mpirun" --oversubscribe -n "$k" "$vahf" "$@" >"$out" 2>"$err"
   status=$?
 }
 
@@ -108,6 +110,10 @@ if [[ ! -e "$tmp/stopped" && -d "$tmp/stopped.partial/journal" ]]; then
 else
   fail "table1 on 2 ranks stopped by Ctrl-C: an output was written or no journal kept"
 fi
+on_ranks 3 run "$table1" --trials 12 --seed 2 --out "$tmp/stopped" --resume
+expect_status "--resume of another seed on 3 ranks (rank 0 refuses)" 2
+expect_in "--resume of another seed on 3 ranks (rank 0 refuses)" "$err" \
+  "journal/identity.json: /invocation = "
 on_ranks 3 run "$table1" --trials 12 --out "$tmp/stopped" --resume
 expect_status "--resume on 3 ranks" 0
 expect_in "--resume on 3 ranks" "$out" "resumed: "

@@ -198,44 +198,54 @@ struct RunArgs {
 
 // `ranks`: the MPI job's, when launched in one (launched_ranks.h). Every rank
 // runs the whole command; rank 0 writes the output, the others write theirs
-// into a temporary directory of their own, removed at the end.
+// into a temporary directory of their own, removed at the end, and every
+// rank ends with rank 0's status.
 int Run(const RunArgs& a, const vahf::experiment::Ranks* ranks) {
-  vahf::scene::ExperimentFile file = vahf::kinds::LoadExperiment(a.experiment);
-  if (!a.overrides.empty())
-    vahf::scene::ApplyOverrides(vahf::scene::LoadOverrides(a.overrides), &file);
+  std::optional<vahf::scene::ExperimentFile> file;
   vahf::kinds::RunContext context;
-  context.settings.seed = a.seed_given ? a.seed : file.seed;
-  context.settings.trials = a.trials;
-  context.settings.threads = a.threads;
-  context.settings.ranks = ranks;
-  std::string out = a.out.empty() ? "runs/" + file.name + "-seed" +
-                                        std::to_string(context.settings.seed)
-                                  : a.out;
-  bool resume = a.resume;
   std::optional<vahf::TemporaryDirectory> own;
-  if (ranks && ranks->rank() != 0) {
-    own.emplace("vahf-rank" + std::to_string(ranks->rank()));
-    out = own->path() + "/out";
-    resume = false;  // rank 0 keeps the journal
-    context.settings.progress = false;
-  }
-  // Checked and staged before any simulation: a refused path costs nothing.
-  // Rank 0's refusal stops every rank.
   std::optional<vahf::report::OutputDirectory> staged;
-  const auto stage = [&] { staged.emplace(out, resume); };
+  // The inputs read and the output checked and staged before any
+  // simulation: a refused path costs nothing. With several ranks, one rank's
+  // refusal (rank 0's output path, another's temporary directory) stops
+  // every rank alike.
+  const auto prepare = [&] {
+    file = vahf::kinds::LoadExperiment(a.experiment);
+    if (!a.overrides.empty())
+      vahf::scene::ApplyOverrides(vahf::scene::LoadOverrides(a.overrides), &*file);
+    context.settings.seed = a.seed_given ? a.seed : file->seed;
+    context.settings.trials = a.trials;
+    context.settings.threads = a.threads;
+    context.settings.ranks = ranks;
+    std::string out = a.out.empty() ? "runs/" + file->name + "-seed" +
+                                          std::to_string(context.settings.seed)
+                                    : a.out;
+    bool resume = a.resume;
+    if (ranks && ranks->rank() != 0) {
+      own.emplace("vahf-rank" + std::to_string(ranks->rank()));
+      out = own->path() + "/out";
+      resume = false;  // rank 0 keeps the journal
+      context.settings.progress = false;
+    }
+    staged.emplace(out, resume);
+  };
   if (ranks)
-    vahf::experiment::AllAgree(*ranks, stage);
+    vahf::experiment::AllAgree(*ranks, prepare);
   else
-    stage();
+    prepare();
   vahf::report::OutputDirectory& directory = *staged;
   context.directory = &directory;
   vahf::experiment::InstallInterruptHandler();
   try {
-    const int status = vahf::kinds::RunExperiment(file, context);
+    int status = vahf::kinds::RunExperiment(*file, context);
     if (a.resume)
       std::printf("resumed: %lld results taken from the journal, %lld computed\n",
                   static_cast<long long>(directory.Journaled().reused),
                   static_cast<long long>(directory.Journaled().written));
+    // Rank 0's status: another rank's plot that gnuplot could not render
+    // is no failure of the run.
+    if (ranks && ranks->size() > 1)
+      status = std::stoi(ranks->AllGather(std::to_string(status))[0]);
     return status;
   } catch (const vahf::experiment::Interrupted& e) {
     if (directory.Journaled().total() == 0) throw;
@@ -296,11 +306,22 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "vahf: error: %s\n", e.what());
     return vahf::kExitComputationFailure;
   }
-  // Errors are the same on every rank (ranks.h): rank 0 says it.
-  const bool quiet = ranks && ranks->rank() != 0;
-  const auto say = [quiet](const char* prefix, const char* what,
-                           const char* suffix = "") {
-    if (!quiet) std::fprintf(stderr, "vahf: %s: %s%s\n", prefix, what, suffix);
+  // Ends with an error. With several ranks, one every rank met alike (the
+  // command line, or agreed: ranks.h) is said by rank 0, and the ranks end
+  // normally; one this rank met alone is said with its rank and ends the job,
+  // which would otherwise wait for this rank forever.
+  const auto fail = [&ranks](int status, const char* prefix, const char* what,
+                             const char* suffix = "", bool alike = false) {
+    const bool several = ranks && ranks->size() > 1;
+    if (several && !alike && !vahf::experiment::ErrorAgreedByAllRanks()) {
+      std::fprintf(stderr, "vahf (rank %d of %d): %s: %s%s\n", ranks->rank(),
+                   ranks->size(), prefix, what, suffix);
+      std::fflush(stderr);
+      ranks->Abort(status);
+    }
+    if (!several || ranks->rank() == 0)
+      std::fprintf(stderr, "vahf: %s: %s%s\n", prefix, what, suffix);
+    return status;
   };
 
   CLI::App app{
@@ -505,15 +526,17 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // One line, as every input error (CLI11's exit() adds a second).
-    say("error", e.what());
-    return vahf::kExitInputError;
+    return fail(vahf::kExitInputError, "error", e.what(), "", true);
   }
+  if (ranks && ranks->size() > 1 && !*run)
+    return fail(vahf::kExitInputError, "error",
+                vahf::InputError("mpirun", "", std::to_string(ranks->size()) + " ranks",
+                                 "only `vahf run` spreads over MPI ranks: run the other "
+                                 "commands alone")
+                    .what(),
+                "", true);
 
   try {
-    if (ranks && ranks->size() > 1 && !*run)
-      throw vahf::InputError(
-          "mpirun", "", std::to_string(ranks->size()) + " ranks",
-          "only `vahf run` spreads over MPI ranks: run the other commands alone");
     if (*run) return Run(run_args, ranks.get());
     if (*check) return Check(check_path);
     if (*reference) return Reference(table_path);
@@ -542,19 +565,16 @@ int main(int argc, char** argv) {
       return 0;
     }
   } catch (const vahf::InputError& e) {
-    say("error", e.what());
-    return vahf::kExitInputError;
+    return fail(vahf::kExitInputError, "error", e.what());
   } catch (const vahf::experiment::Interrupted& e) {
-    say("interrupted", e.what(), "; no output was written");
-    return vahf::kExitInterrupted;
+    return fail(vahf::kExitInterrupted, "interrupted", e.what(),
+                "; no output was written");
   } catch (const vahf::ComputationError& e) {
-    say("error", e.what());
-    return vahf::kExitComputationFailure;
+    return fail(vahf::kExitComputationFailure, "error", e.what());
   } catch (const std::exception& e) {
     // Not one of ours: a library's exception or std::bad_alloc. The computation
     // failed all the same.
-    say("error", e.what());
-    return vahf::kExitComputationFailure;
+    return fail(vahf::kExitComputationFailure, "error", e.what());
   }
   return vahf::kExitComputationFailure;
 }

@@ -20,9 +20,11 @@ std::string LauncherVariable();
 // Joins the job: MPI_Init_thread (MPI_THREAD_FUNNELED: only the calling
 // thread talks to MPI, between batches) and MPI_COMM_WORLD as Ranks; the
 // object's destructor ends MPI. Null when LauncherVariable() is empty: a
-// process started alone never starts MPI. Without MPI in the build, a
-// launched process is an InputError naming the variable (each rank would run
-// the whole experiment alone). Call it once per process.
+// process started alone never starts MPI. A launcher that states another
+// size than MPI gives is an InputError (this MPI cannot talk to it). Without
+// MPI in the build, a process launched among several is an InputError naming
+// the variable (each rank would run the whole experiment alone), one
+// launched alone is null. Call it once per process.
 std::unique_ptr<Ranks> JoinLaunchedRanks(int* argc, char*** argv);
 
 }  // namespace vahf::experiment

@@ -4,6 +4,7 @@
 
 #include <climits>
 #include <cstdint>
+#include <cstdlib>
 
 #include "vahf/core/error.h"
 #include "vahf/experiment/launched_ranks.h"
@@ -27,17 +28,29 @@ class MpiRanks : public Ranks {
   MpiRanks(int* argc, char*** argv) {
     int provided = 0;
     Check(MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
-    // Errors come back as codes, turned into ComputationErrors, instead of
-    // aborting the job without a word.
-    MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-    MPI_Comm_size(MPI_COMM_WORLD, &size_);
-    if (provided < MPI_THREAD_FUNNELED)
-      throw ComputationError(ComputationError::Reason::kRefused,
-                             "MPI_Init_thread: this MPI cannot be used from a process "
-                             "with several threads (MPI_THREAD_FUNNELED)");
+    try {
+      // Errors come back as codes, turned into ComputationErrors, instead of
+      // aborting the job without a word.
+      Check(MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN),
+            "MPI_Comm_set_errhandler");
+      Check(MPI_Comm_rank(MPI_COMM_WORLD, &rank_), "MPI_Comm_rank");
+      Check(MPI_Comm_size(MPI_COMM_WORLD, &size_), "MPI_Comm_size");
+      if (provided < MPI_THREAD_FUNNELED)
+        throw ComputationError(ComputationError::Reason::kRefused,
+                               "MPI_Init_thread: this MPI cannot be used from a process "
+                               "with several threads (MPI_THREAD_FUNNELED)");
+      CheckTheLauncherAgrees();
+    } catch (...) {
+      MPI_Finalize();
+      throw;
+    }
   }
   ~MpiRanks() override { MPI_Finalize(); }
+
+  [[noreturn]] void Abort(int status) const override {
+    MPI_Abort(MPI_COMM_WORLD, status);
+    std::_Exit(status);  // MPI_Abort does not return; if it did, end this rank
+  }
 
   int rank() const override { return rank_; }
   int size() const override { return size_; }
@@ -64,8 +77,8 @@ class MpiRanks : public Ranks {
       total += sizes[r];
     }
     std::string all(static_cast<std::size_t>(total), '\0');
-    Check(MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_CHAR, all.data(),
-                         counts.data(), offsets.data(), MPI_CHAR, MPI_COMM_WORLD),
+    Check(MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_BYTE, all.data(),
+                         counts.data(), offsets.data(), MPI_BYTE, MPI_COMM_WORLD),
           "MPI_Allgatherv");
     std::vector<std::string> out(n);
     for (std::size_t r = 0; r < n; ++r)
@@ -75,6 +88,24 @@ class MpiRanks : public Ranks {
   }
 
  private:
+  // A launcher this MPI cannot talk to (MPICH's hydra starting Open MPI, a
+  // PMI Slurm lacks) leaves every process a job of its own: each would run
+  // the whole experiment and write the same output. The size the launcher
+  // states must be MPI's.
+  void CheckTheLauncherAgrees() const {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+      const char* value = std::getenv(name);
+      if (!value) continue;
+      if (std::atoi(value) != size_)
+        throw InputError(
+            "environment", "", std::string(name) + "=" + value,
+            fmt::format("the launcher started {} processes but MPI_Init gave "
+                        "a job of {}: this MPI cannot talk to that launcher "
+                        "(use the mpirun of the MPI vahf was built with)",
+                        value, size_));
+    }
+  }
+
   int rank_ = 0, size_ = 1;
 };
 

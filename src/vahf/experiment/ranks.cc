@@ -1,5 +1,7 @@
 #include "vahf/experiment/ranks.h"
 
+#include <atomic>
+
 #include "vahf/core/byte_fields.h"
 #include "vahf/core/error.h"
 #include "vahf/experiment/interrupt.h"
@@ -36,7 +38,14 @@ std::string EncodeException(const std::exception_ptr& error) {
   return w.Take();
 }
 
+namespace {
+std::atomic<bool> agreed{false};
+}  // namespace
+
+bool ErrorAgreedByAllRanks() { return agreed.load(); }
+
 void ThrowEncodedException(const std::string& bytes) {
+  agreed.store(true);
   ByteReader r(bytes);
   switch (r.U64()) {
     case kInput: {

@@ -25,16 +25,26 @@ class Ranks {
   // rank calls it, the same number of times in the same order. A transport
   // that fails is a ComputationError (kRefused).
   virtual std::vector<std::string> AllGather(const std::string& mine) const = 0;
+  // Ends every rank at once with `status` (MPI_Abort): for an error only this
+  // rank met, after which the others would wait for it forever.
+  [[noreturn]] virtual void Abort(int status) const = 0;
 };
 
 // An exception of the kinds a run throws (vahf::InputError,
 // vahf::ComputationError, Interrupted) as bytes, and thrown again from them on
-// another rank with the same class, fields and message, so every rank stops
-// with the error one of them met. Any other std::exception (a library's, or
-// std::bad_alloc) comes back as a ComputationError (kRefused) with its
-// message: the command's exit status for it is the same (core/error.h).
+// another rank as the same tier (core/error.h: a subclass comes back as its
+// base), with its fields and message, so every rank stops with the error one
+// of them met. Any other std::exception (a library's, or std::bad_alloc)
+// comes back as a ComputationError (kRefused) with its message: the
+// command's exit status for it is the same.
 std::string EncodeException(const std::exception_ptr& error);
 [[noreturn]] void ThrowEncodedException(const std::string& bytes);
+
+// True once this process threw an error every rank throws alike
+// (ThrowEncodedException, AllAgree): the ranks can end normally. Any other
+// error, with several ranks, is this rank's alone: the command ends the job
+// with Ranks::Abort.
+bool ErrorAgreedByAllRanks();
 
 // Runs `step` on every rank, then agrees: if it threw on any rank, every
 // rank throws the error of the lowest such rank. For a step only some ranks

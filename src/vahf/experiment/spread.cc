@@ -1,8 +1,9 @@
 // A batch of RunIndexed spread over ranks (runner.h, internal::RunIndicesOnRanks).
 //
 // One AllGather deals the batch (rank 0 sends which indices its journal
-// holds), a second gathers it: each rank sends one message, its status and
-// every result it has (docs/reproducibility.md, "Many machines: MPI"):
+// holds), a second gathers it, and a third agrees that rank 0 journaled the
+// others' results. In the second, each rank sends one message, its status
+// and every result it has (docs/reproducibility.md, "Many machines: MPI"):
 //
 //   U64 status (0 finished, 1 failed, 2 stopped)  U64 failing index
 //   Str encoded exception  U64 results  (U64 index  Str bytes) ...
@@ -90,43 +91,58 @@ std::string RunShare(const std::vector<std::size_t>& mine,
   return message.Take();
 }
 
-// Reads every rank's message, the same way on every rank, so every rank
-// decides alike: throws the lowest failing index's error, or Interrupted if a
-// rank stopped, else returns every index's bytes. Rank 0 journals the results
-// of the others (`batch`).
-std::vector<std::string> Collect(const std::vector<std::string>& messages, std::size_t n,
-                                 const RunnerOptions& options, Journal::Batch* batch) {
-  std::vector<std::optional<std::string>> out(n);
-  std::size_t lowest_failure = n, done = 0;
-  std::string failure;
-  bool stopped = false;
+// Every rank's message, read the same way on every rank.
+struct Gathered {
+  std::vector<std::optional<std::string>> out;  // by index
+  std::vector<std::size_t> from;                // the rank that sent each
+  std::size_t done = 0;                         // results received
+  std::string failure;                          // the lowest failing index's error
+  bool stopped = false;                         // a rank stopped on request
+};
+
+Gathered Read(const std::vector<std::string>& messages, std::size_t n) {
+  Gathered g;
+  g.out.resize(n);
+  g.from.resize(n);
+  std::uint64_t lowest_failure = 0;
   for (std::size_t from = 0; from < messages.size(); ++from) {
     ByteReader r(messages[from]);
     const std::uint64_t status = r.U64();
-    const std::uint64_t at = r.U64();
+    const std::uint64_t at = r.U64();  // n: after its last index (the meter threw)
     std::string error = r.Str();
-    if (status == kFailed && at < lowest_failure) {
-      lowest_failure = static_cast<std::size_t>(at);
-      failure = std::move(error);
+    if (status == kFailed && (g.failure.empty() || at < lowest_failure)) {
+      lowest_failure = at;
+      g.failure = std::move(error);
     }
-    stopped = stopped || status == kStopped;
+    g.stopped = g.stopped || status == kStopped;
     for (std::uint64_t k = r.U64(); k > 0; --k) {
       const std::uint64_t i = r.U64();
-      VAHF_CHECK(i < n && !out[i], "each index's result comes from one rank");
-      out[i] = r.Str();
-      ++done;
-      if (batch && from != 0) batch->Store(i, *out[i]);
+      VAHF_CHECK(i < n && !g.out[i], "each index's result comes from one rank");
+      g.out[i] = r.Str();
+      g.from[i] = from;
+      ++g.done;
     }
   }
-  if (!failure.empty()) ThrowEncodedException(failure);
-  if (stopped) throw Interrupted(StoppedMessage(options, done, n));
-  std::vector<std::string> all;
-  all.reserve(n);
-  for (std::optional<std::string>& o : out) {
-    VAHF_CHECK(o.has_value(), "every index ran on some rank");
-    all.push_back(std::move(*o));
+  return g;
+}
+
+// What rank 0 sends first: "M" and which indices its journal holds, or "E"
+// and the error opening the batch threw (a journal of another run), which
+// every rank then throws instead of waiting for a rank that stopped.
+std::string Deal(std::size_t n, const RunnerOptions& options,
+                 std::unique_ptr<Journal::Batch>* batch,
+                 std::vector<std::optional<std::string>>* held) {
+  try {
+    std::string mask(n, kToRun);
+    if (options.journal) {
+      *batch = options.journal->Begin(n, options.label);
+      for (std::size_t i = 0; i < n; ++i)
+        if (((*held)[i] = (*batch)->Find(i))) mask[i] = kJournaled;
+    }
+    return "M" + mask;
+  } catch (const std::exception&) {
+    return "E" + EncodeException(std::current_exception());
   }
-  return all;
 }
 
 }  // namespace
@@ -138,18 +154,34 @@ std::vector<std::string> RunIndicesOnRanks(
   // Rank 0 keeps the journal; the indices it holds are read, not run.
   std::unique_ptr<Journal::Batch> batch;
   std::vector<std::optional<std::string>> held(n);
-  std::string mask(n, kToRun);
-  if (ranks.rank() == 0 && options.journal) {
-    batch = options.journal->Begin(n, options.label);
-    for (std::size_t i = 0; i < n; ++i)
-      if ((held[i] = batch->Find(i))) mask[i] = kJournaled;
-  }
-  mask = ranks.AllGather(ranks.rank() == 0 ? mask : std::string())[0];
+  const std::string dealt = ranks.AllGather(
+      ranks.rank() == 0 ? Deal(n, options, &batch, &held) : std::string())[0];
+  VAHF_CHECK(!dealt.empty(), "rank 0 deals every batch");
+  if (dealt[0] == 'E') ThrowEncodedException(dealt.substr(1));
+  const std::string mask = dealt.substr(1);
   VAHF_CHECK(mask.size() == n, "every rank runs the same batch");
   const std::vector<std::size_t> mine = Share(mask, ranks.rank(), ranks.size());
   std::string message = RunShare(mine, held, options, run, batch.get());
   held.clear();
-  return Collect(ranks.AllGather(message), n, options, batch.get());
+  Gathered g = Read(ranks.AllGather(message), n);
+  // Rank 0 journals the others' results, even those of a failed or stopped
+  // batch; a refusal there (a full disk) stops every rank alike.
+  AllAgree(ranks, [&] {
+    if (batch)
+      for (std::size_t i = 0; i < n; ++i)
+        if (g.out[i] && g.from[i] != 0) batch->Store(i, *g.out[i]);
+  });
+  if (!g.failure.empty()) ThrowEncodedException(g.failure);
+  if (g.stopped)  // thrown alike on every rank, as every rank's own would be
+    ThrowEncodedException(EncodeException(
+        std::make_exception_ptr(Interrupted(StoppedMessage(options, g.done, n)))));
+  std::vector<std::string> all;
+  all.reserve(n);
+  for (std::optional<std::string>& o : g.out) {
+    VAHF_CHECK(o.has_value(), "every index ran on some rank");
+    all.push_back(std::move(*o));
+  }
+  return all;
 }
 
 }  // namespace vahf::experiment::internal

@@ -130,9 +130,16 @@ int RunExperiment(const scene::ExperimentFile& file, const RunContext& given) {
   std::vector<std::string> files = {file.file, file.overrides_path, file.scene_path};
   if (file.input)
     for (const std::string& f : file.input->InputFiles()) files.push_back(f);
-  context.settings.journal = &context.directory->OpenJournal(report::RunIdentity(
-      {file.file, file.overrides_path, context.settings.seed, context.settings.trials},
-      files));
+  const auto open = [&] {
+    context.settings.journal = &context.directory->OpenJournal(report::RunIdentity(
+        {file.file, file.overrides_path, context.settings.seed, context.settings.trials},
+        files));
+  };
+  // Rank 0's refusal (a journal of another run) stops every rank alike.
+  if (context.settings.ranks)
+    experiment::AllAgree(*context.settings.ranks, open);
+  else
+    open();
   if (kind.run) return kind.run(file, context);
   const auto start = std::chrono::steady_clock::now();
   const experiment::ExperimentRun run = RunDesign(file, context.settings);

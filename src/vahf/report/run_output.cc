@@ -225,13 +225,14 @@ RunOutput WriteSections(const RunHeader& h, const std::vector<Section>& sections
       "- experiment file: `{}` (kind {}), seed {}, cycles per condition: {}\n"
       "- integration: {} (the scenes' simulation/integrator, simulation/accuracy and "
       "contact/model; docs/experiments.md, precision, measures the error they buy)\n"
-      "- threads: {} on each of {} rank(s), wall time: {:.1f} s (not part of any result "
-      "file)\n"
+      "- threads: {}{}, wall time: {:.1f} s (not part of any result file)\n"
       "- results digest (SHA-256 over the CSV tables and summary.json): `{}`\n"
       "- program: {} ({}), {} {}\n\n",
       file.name, file.description, file.file, file.kind, h.seed, h.cycles_per_condition,
-      h.integration, info.threads, info.ranks, info.wall_seconds, digest, m.build.version,
-      m.build.git_describe, m.build.compiler_id, m.build.compiler_version);
+      h.integration, info.threads,
+      info.ranks > 1 ? fmt::format(" on each of {} MPI ranks", info.ranks) : "",
+      info.wall_seconds, digest, m.build.version, m.build.git_describe,
+      m.build.compiler_id, m.build.compiler_version);
   md += ClaimsMarkdown(sections);
   for (const Section& s : sections) md += SectionMarkdown(s, out, &result.failed_plots);
   out.Write("report.md", md);
