@@ -202,12 +202,12 @@ TEST(BuildDifferences, NamesEachFieldAndLibraryThatDiffers) {
   const nlohmann::json mine = ManifestJson(Fields(1))["build"];
   EXPECT_TRUE(BuildDifferences(mine, other).empty());
   other.compiler_version = "99.1";
-  other.libraries.emplace_back("MPI", "4.1");
+  other.libraries.emplace_back("HDF5", "1.10");  // a library the run lacked
   const std::vector<std::string> d = BuildDifferences(mine, other);
   ASSERT_EQ(d.size(), 2u);
   EXPECT_EQ(d[0], "compiler_version: " + GetBuildInfo().compiler_version +
                       " (run) vs 99.1 (this program)");
-  EXPECT_EQ(d[1], "libraries/MPI: (none) (run) vs 4.1 (this program)");
+  EXPECT_EQ(d[1], "libraries/HDF5: (none) (run) vs 1.10 (this program)");
 }
 
 }  // namespace
