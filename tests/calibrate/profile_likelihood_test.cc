@@ -84,6 +84,27 @@ TEST(ProfileEnd, ANonFiniteRiseCountsAsBeyondAndIsBisected) {
   EXPECT_LE(end.bound, 1.3);
 }
 
+TEST(ProfileEnd, AJumpInTheCostIsBisectedAndItsEndWasEvaluated) {
+  // A residual that changes branch at v = 0.437 (as a chamfer contact that
+  // starts or stops): the rise jumps from well inside to well beyond the
+  // target there, so the end is the jump. Regula falsi across it keeps its
+  // inside end; bisection closes in. When the calls run out the bound is a
+  // point the search evaluated beyond the target: an interpolation across
+  // the jump would be an end no call has shown to be outside.
+  constexpr double kJump = 0.437;
+  const auto rise = [&](double v) { return v < kJump ? 2 * v : 6.0; };
+  for (int calls : {6, 8, 12}) {
+    const ProfileEnd end = ProfileEndToward(rise, 0.0, 10.0, 1.0, kRise, calls);
+    EXPECT_TRUE(end.reached);
+    EXPECT_FALSE(end.open);
+    EXPECT_GE(end.bound, kJump) << calls << " calls";
+    EXPECT_LE(end.bound, kJump + 0.05) << calls << " calls";
+    bool evaluated = false;
+    for (const auto& [v, r] : end.points) evaluated |= v == end.bound && r >= kRise;
+    EXPECT_TRUE(evaluated) << calls << " calls: the bound " << end.bound;
+  }
+}
+
 TEST(ProfileEnd, RunningOutOfCallsInsideSaysSo) {
   // A profile that rises slowly: two calls cannot reach the target.
   const auto rise = [](double v) { return 1e-4 * v * v; };

@@ -17,9 +17,58 @@ constexpr double kMaxGrowth = 4.0;
 // Regula falsi stays this fraction of the bracket away from its ends, so
 // that a profile far from linear still shrinks the bracket each call.
 constexpr double kBracketMargin = 0.1;
+// Regula falsi that moves the same end of the bracket this many calls in a
+// row meets a profile far from linear there (across a jump of the cost,
+// where one residual changes branch): the next call bisects, as the
+// safeguard of Dekker's and Brent's root finders (R. P. Brent, Algorithms
+// for Minimization without Derivatives, Prentice-Hall 1973, Ch. 4).
+constexpr int kFalsiRun = 2;
 // Halvings of a Gauss-Newton step that does not lower the cost before the
 // re-fit stops where it is.
 constexpr int kMaxHalvings = 3;
+
+// The search's state along one side, in distances from the estimate: the
+// farthest point inside (z below the target) and the one before it, the
+// nearest beyond, and which end the last calls moved.
+struct EndBracket {
+  double target_z;
+  double in_d = 0, in_z = 0, prev_in_d = 0, prev_in_z = 0;
+  double out_d = 0, out_z = 0;
+  bool beyond = false;
+  int moved = 0, moved_run = 0;  // +1 inside, -1 beyond; calls in a row
+
+  void Record(double d, double z) {
+    const int side = z < target_z ? 1 : -1;
+    moved_run = side == moved ? moved_run + 1 : 1;
+    moved = side;
+    if (side > 0) {
+      prev_in_d = in_d;
+      prev_in_z = in_z;
+      in_d = d;
+      in_z = z;
+    } else {
+      out_d = d;
+      out_z = z;
+      beyond = true;
+    }
+  }
+
+  // The next distance to try: regula falsi on z in the bracket (bisection
+  // when z beyond is infinite or regula falsi stalls), the secant through
+  // the inside points before one lies beyond.
+  double Next() const {
+    if (beyond) {
+      const double width = out_d - in_d;
+      if (moved_run >= kFalsiRun || !std::isfinite(out_z)) return in_d + 0.5 * width;
+      const double falsi = in_d + (target_z - in_z) * width / (out_z - in_z);
+      return std::clamp(falsi, in_d + kBracketMargin * width,
+                        out_d - kBracketMargin * width);
+    }
+    const double slope = (in_z - prev_in_z) / (in_d - prev_in_d);
+    const double next = slope > 0 ? in_d + (target_z - in_z) / slope : kMaxGrowth * in_d;
+    return std::min(next, kMaxGrowth * in_d);
+  }
+};
 
 }  // namespace
 
@@ -38,18 +87,7 @@ ProfileEnd ProfileEndToward(const std::function<double(double)>& rise, double es
   const auto toward_edge = [&](double v) {
     return dir > 0 ? std::min(v, edge) : std::max(v, edge);
   };
-  const double target_z = std::sqrt(2 * target_rise);
-  // The farthest point inside (z below the target) and the nearest beyond,
-  // as distances from the estimate along the side.
-  double in_d = 0, in_z = 0, prev_in_d = 0, prev_in_z = 0;
-  double out_d = 0, out_z = 0;
-  bool beyond = false;
-  // Regula falsi on z in the bracket (bisection when z beyond is infinite).
-  const auto falsi = [&] {
-    const double width = out_d - in_d;
-    return std::isfinite(out_z) ? in_d + (target_z - in_z) * width / (out_z - in_z)
-                                : in_d + 0.5 * width;
-  };
+  EndBracket b{std::sqrt(2 * target_rise)};
   double v = toward_edge(first);
   if (!((v - estimate) * dir > 0)) v = edge;  // a first guess on the wrong side
   for (int call = 0; call < max_calls; ++call) {
@@ -57,44 +95,24 @@ ProfileEnd ProfileEndToward(const std::function<double(double)>& rise, double es
     out.points.emplace_back(v, r);
     const double z = std::isfinite(r) ? std::sqrt(2 * std::max(r, 0.0))
                                       : std::numeric_limits<double>::infinity();
-    const double d = (v - estimate) * dir;
     // Accepted only at or beyond the target, so that an end found is never
     // inside the interval it bounds.
-    if (z >= target_z && z <= (1 + z_tolerance) * target_z) {
+    if (z >= b.target_z && z <= (1 + z_tolerance) * b.target_z) {
       out.bound = v;
       return out;
     }
-    if (z < target_z) {
-      prev_in_d = in_d;
-      prev_in_z = in_z;
-      in_d = d;
-      in_z = z;
-      if (v == edge) {
-        out.bound = edge;
-        out.open = true;
-        return out;
-      }
-    } else {
-      out_d = d;
-      out_z = z;
-      beyond = true;
+    b.Record((v - estimate) * dir, z);
+    if (z < b.target_z && v == edge) {
+      out.bound = edge;
+      out.open = true;
+      return out;
     }
-    double next = 0;
-    if (beyond) {
-      const double width = out_d - in_d;
-      next = std::clamp(falsi(), in_d + kBracketMargin * width,
-                        out_d - kBracketMargin * width);
-    } else {
-      const double slope = (in_z - prev_in_z) / (in_d - prev_in_d);
-      next = slope > 0 ? in_d + (target_z - in_z) / slope : kMaxGrowth * in_d;
-      next = std::min(next, kMaxGrowth * in_d);
-    }
-    v = toward_edge(estimate + dir * next);
+    v = toward_edge(estimate + dir * b.Next());
   }
-  if (beyond) {  // the last regula falsi point of the bracket
-    out.bound = estimate + dir * falsi();
+  if (b.beyond) {  // the nearest point evaluated beyond: never an unevaluated end
+    out.bound = estimate + dir * b.out_d;
   } else {
-    out.bound = estimate + dir * in_d;
+    out.bound = estimate + dir * b.in_d;
     out.reached = false;
   }
   return out;

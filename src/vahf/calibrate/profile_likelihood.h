@@ -17,7 +17,8 @@
 // Analysis and Its Applications, Wiley 1988, Sec. 6.1, the profile t
 // function): from a first guess (the Wald end), the secant through the
 // inside points extrapolates toward z = sqrt(2 target), and once a point
-// lies beyond it, regula falsi on the bracket closes in.
+// lies beyond it, regula falsi on the bracket closes in, bisecting when it
+// stalls.
 #pragma once
 #include <Eigen/Core>
 #include <functional>
@@ -27,7 +28,7 @@
 namespace vahf::calibrate {
 
 struct ProfileEnd {
-  double bound = 0;     // where the rise reaches the target, or the edge
+  double bound = 0;     // an evaluated point at or beyond the target, or the edge
   bool open = false;    // the rise stays below the target up to the edge
   bool reached = true;  // false: the calls ran out with every point inside;
                         // `bound` is then the farthest of them
@@ -40,6 +41,11 @@ struct ProfileEnd {
 // negative one as 0), `first` the first value tried (clamped to the edge),
 // at most `max_calls` calls. A point at or up to `z_tolerance` (relative)
 // beyond the target's signed root ends the search: an end is never inside.
+// When the calls run out with the end bracketed, the bound is the nearest
+// point evaluated beyond the target, never an interpolation between them
+// (across a jump of the cost one would lie inside). Regula falsi that keeps
+// one end of the bracket is bisected instead (a jump, or a profile far from
+// linear in the bracket).
 ProfileEnd ProfileEndToward(const std::function<double(double)>& rise, double estimate,
                             double edge, double first, double target_rise, int max_calls,
                             double z_tolerance = 0.05);
