@@ -2,11 +2,11 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
 #include <map>
-#include <sstream>
+#include <optional>
 
 #include "vahf/core/error.h"
+#include "vahf/core/whole_file.h"
 #include "vahf/data/csv.h"
 
 namespace vahf::data {
@@ -32,11 +32,9 @@ void CheckUnique(std::map<std::string, int>& first_line, const CsvCell& code) {
 }
 
 std::string ReadText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "file", "", "cannot open the file for reading");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  std::optional<std::string> text = ReadWholeFile(path);
+  if (!text) throw InputError(path, "file", "", "cannot open the file for reading");
+  return *std::move(text);
 }
 
 }  // namespace

@@ -6,17 +6,16 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <tuple>
 
 #include "vahf/core/atomic_file.h"
 #include "vahf/core/error.h"
+#include "vahf/core/whole_file.h"
 #include "vahf/data/csv.h"
 #include "vahf/scene/experiment_file.h"
 #include "vahf/scene/json_reader.h"
@@ -137,11 +136,9 @@ std::string ReadDiskFile(const TableSpec& spec, const JsonNode& file_node) {
   if (!fs::exists(spec.resolved, ec)) file_node.Fail("no such file: " + spec.resolved);
   if (fs::is_directory(spec.resolved, ec))
     file_node.Fail("names a folder, not a file: " + spec.resolved);
-  std::ifstream in(spec.resolved, std::ios::binary);
-  if (!in) file_node.Fail("cannot open " + spec.resolved + " for reading");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  std::optional<std::string> text = ReadWholeFile(spec.resolved);
+  if (!text) file_node.Fail("cannot open " + spec.resolved + " for reading");
+  return *std::move(text);
 }
 
 // Reads and binds one file; a file without data rows declares nothing and

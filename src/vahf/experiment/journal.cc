@@ -8,13 +8,13 @@
 #include <charconv>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <system_error>
 
 #include "vahf/core/atomic_file.h"
 #include "vahf/core/digest.h"
 #include "vahf/core/error.h"
+#include "vahf/core/whole_file.h"
 
 namespace vahf::experiment {
 namespace {
@@ -30,12 +30,8 @@ constexpr const char* kIdentityFile = "identity.json";
       fmt::format("journal: cannot {} {}: {}", what, path, std::strerror(error)));
 }
 
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+// A batch or identity file; empty when there is none yet.
+std::string ReadAll(const std::string& path) { return ReadWholeFile(path).value_or(""); }
 
 // What a record's digest covers: its index, its length and its bytes.
 std::string RecordDigest(std::size_t index, const std::string& bytes) {

@@ -3,12 +3,11 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <system_error>
 
 #include "vahf/core/digest.h"
 #include "vahf/core/error.h"
+#include "vahf/core/whole_file.h"
 #include "vahf/kinds/kind.h"
 #include "vahf/scene/overrides.h"
 
@@ -49,13 +48,7 @@ scene::ExperimentFile LoadRecordedExperiment(const report::RecordedRun& run) {
 std::optional<std::string> ReadResultFile(const std::string& run_dir,
                                           const std::string& name) {
   const fs::path path = fs::path(run_dir) / name;
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  return ReadWholeFile(path.string());
 }
 
 experiment::RunSettings RecordedSettings(const report::RecordedRun& run, int threads) {

@@ -6,12 +6,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <set>
-#include <sstream>
 
 #include "vahf/core/error.h"
+#include "vahf/core/whole_file.h"
 
 namespace vahf::scene {
 namespace {
@@ -177,11 +176,9 @@ nlohmann::json ReadJsonFile(const std::string& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
     throw InputError(path, "", "", "is a directory, not a JSON file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "", "cannot open the file for reading");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return ParseJsonText(buffer.str(), path);
+  const std::optional<std::string> text = ReadWholeFile(path);
+  if (!text) throw InputError(path, "", "", "cannot open the file for reading");
+  return ParseJsonText(*text, path);
 }
 
 nlohmann::json ParseJsonText(const std::string& text, const std::string& file) {
