@@ -315,7 +315,7 @@ TEST(Spread, AllAgreeThrowsOneRanksRefusalOnEveryRank) {
     ranks.emplace_back([&, r] {
       const ThreadRank rank(&group, r);
       try {
-        AllAgree(rank, [r] {
+        AllAgree(&rank, [r] {
           if (r == 1) throw InputError("out", "", "dir", "refused on rank 1");
         });
       } catch (const InputError& e) {
@@ -324,6 +324,16 @@ TEST(Spread, AllAgreeThrowsOneRanksRefusalOnEveryRank) {
     });
   for (std::thread& t : ranks) t.join();
   for (const std::string& s : seen) EXPECT_EQ(s, "out = dir: refused on rank 1");
+}
+
+// Without ranks (one process) AllAgree runs the step alone, its error as
+// thrown.
+TEST(Spread, AllAgreeWithoutRanksRunsTheStepAlone) {
+  int runs = 0;
+  AllAgree(nullptr, [&] { ++runs; });
+  EXPECT_EQ(runs, 1);
+  EXPECT_THROW(AllAgree(nullptr, [] { throw InputError("out", "", "dir", "refused"); }),
+               InputError);
 }
 
 }  // namespace

@@ -651,7 +651,7 @@ status=$?
 expect_status "run interrupted by SIGINT" 130
 expect_in "run interrupted by SIGINT" "$err" "vahf: interrupted: "
 expect_in "run interrupted by SIGINT" "$err" \
-  "are journaled in $tmp/int.partial: the same command with --resume continues the run"
+  "are journaled in $tmp/int.partial (the same command with --resume continues the run); no output was written"
 if [[ ! -e "$tmp/int" && "$(ls "$tmp/int.partial")" == journal ]]; then
   pass "run interrupted by SIGINT: no output directory, the staging holds the journal only"
 else

@@ -229,10 +229,7 @@ int Run(const RunArgs& a, const vahf::experiment::Ranks* ranks) {
     }
     staged.emplace(out, resume);
   };
-  if (ranks)
-    vahf::experiment::AllAgree(*ranks, prepare);
-  else
-    prepare();
+  vahf::experiment::AllAgree(ranks, prepare);
   vahf::report::OutputDirectory& directory = *staged;
   context.directory = &directory;
   vahf::experiment::InstallInterruptHandler();
@@ -250,8 +247,8 @@ int Run(const RunArgs& a, const vahf::experiment::Ranks* ranks) {
   } catch (const vahf::experiment::Interrupted& e) {
     if (directory.Journaled().total() == 0) throw;
     throw vahf::experiment::Interrupted(fmt::format(
-        "{}; its {} finished results are journaled in {}: the same command with "
-        "--resume continues the run",
+        "{}; its {} finished results are journaled in {} (the same command with "
+        "--resume continues the run)",
         e.what(), directory.Journaled().total(), directory.staging()));
   }
 }

@@ -44,6 +44,11 @@ std::atomic<bool> agreed{false};
 
 bool ErrorAgreedByAllRanks() { return agreed.load(); }
 
+void ThrowAgreed(const std::exception_ptr& error) {
+  agreed.store(true);
+  std::rethrow_exception(error);
+}
+
 void ThrowEncodedException(const std::string& bytes) {
   agreed.store(true);
   ByteReader r(bytes);
@@ -70,14 +75,15 @@ void ThrowEncodedException(const std::string& bytes) {
   }
 }
 
-void AllAgree(const Ranks& ranks, const std::function<void()>& step) {
+void AllAgree(const Ranks* ranks, const std::function<void()>& step) {
+  if (!ranks) return step();
   std::string mine;  // empty: the step succeeded here
   try {
     step();
   } catch (const std::exception&) {
     mine = EncodeException(std::current_exception());
   }
-  for (const std::string& error : ranks.AllGather(mine))
+  for (const std::string& error : ranks->AllGather(mine))
     if (!error.empty()) ThrowEncodedException(error);
 }
 

@@ -46,10 +46,15 @@ std::string EncodeException(const std::exception_ptr& error);
 // with Ranks::Abort.
 bool ErrorAgreedByAllRanks();
 
+// Throws `error`, which every rank throws alike (each rank has made it from
+// the same gathered bytes), as agreed.
+[[noreturn]] void ThrowAgreed(const std::exception_ptr& error);
+
 // Runs `step` on every rank, then agrees: if it threw on any rank, every
 // rank throws the error of the lowest such rank. For a step only some ranks
 // take (rank 0 checks the output directory), so that a refusal there stops
 // every rank instead of leaving the others waiting in their next AllGather.
-void AllAgree(const Ranks& ranks, const std::function<void()>& step);
+// Without ranks (null: one process) it runs `step` alone.
+void AllAgree(const Ranks* ranks, const std::function<void()>& step);
 
 }  // namespace vahf::experiment

@@ -166,15 +166,14 @@ std::vector<std::string> RunIndicesOnRanks(
   Gathered g = Read(ranks.AllGather(message), n);
   // Rank 0 journals the others' results, even those of a failed or stopped
   // batch; a refusal there (a full disk) stops every rank alike.
-  AllAgree(ranks, [&] {
+  AllAgree(&ranks, [&] {
     if (batch)
       for (std::size_t i = 0; i < n; ++i)
         if (g.out[i] && g.from[i] != 0) batch->Store(i, *g.out[i]);
   });
   if (!g.failure.empty()) ThrowEncodedException(g.failure);
   if (g.stopped)  // thrown alike on every rank, as every rank's own would be
-    ThrowEncodedException(EncodeException(
-        std::make_exception_ptr(Interrupted(StoppedMessage(options, g.done, n)))));
+    ThrowAgreed(std::make_exception_ptr(Interrupted(StoppedMessage(options, g.done, n))));
   std::vector<std::string> all;
   all.reserve(n);
   for (std::optional<std::string>& o : g.out) {

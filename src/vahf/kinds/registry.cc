@@ -136,10 +136,7 @@ int RunExperiment(const scene::ExperimentFile& file, const RunContext& given) {
         files));
   };
   // Rank 0's refusal (a journal of another run) stops every rank alike.
-  if (context.settings.ranks)
-    experiment::AllAgree(*context.settings.ranks, open);
-  else
-    open();
+  experiment::AllAgree(context.settings.ranks, open);
   if (kind.run) return kind.run(file, context);
   const auto start = std::chrono::steady_clock::now();
   const experiment::ExperimentRun run = RunDesign(file, context.settings);
