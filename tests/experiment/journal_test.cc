@@ -121,6 +121,24 @@ TEST_F(JournalTest, ARecordWhoseBytesChangedIsNotRead) {
   EXPECT_EQ(j.torn(), 1);
 }
 
+// Of the inputs, the one file whose digest changed is named, as a JSON
+// pointer (its '/' written ~1), with both digests.
+TEST_F(JournalTest, AChangedInputIsNamedWithBothDigests) {
+  nlohmann::json mine = identity_;
+  mine["inputs"] = {{"lab/dataset.json", "aa"}, {"lab/trials.csv", "bb"}};
+  { Journal j(dir_, mine, false); }
+  nlohmann::json changed = mine;
+  changed["inputs"]["lab/trials.csv"] = "cc";
+  try {
+    Journal j(dir_, changed, true);
+    ADD_FAILURE() << "a changed lab table resumed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/inputs/lab~1trials.csv");
+    EXPECT_EQ(e.value(), "\"bb\"");
+    EXPECT_NE(e.rule().find("this command gives \"cc\":"), std::string::npos);
+  }
+}
+
 TEST_F(JournalTest, ResumingAnotherRunIsRefused) {
   {
     Journal j(dir_, identity_, false);
@@ -133,9 +151,10 @@ TEST_F(JournalTest, ResumingAnotherRunIsRefused) {
     ADD_FAILURE() << "another seed resumed";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), (fs::path(dir_) / "identity.json").string());
-    EXPECT_EQ(e.where(), "/invocation");
-    EXPECT_EQ(e.value(), "{\"seed\":1}");
-    EXPECT_NE(e.rule().find("this command gives {\"seed\":2}"), std::string::npos);
+    // The first place the two differ, within the member.
+    EXPECT_EQ(e.where(), "/invocation/seed");
+    EXPECT_EQ(e.value(), "1");
+    EXPECT_NE(e.rule().find("this command gives 2:"), std::string::npos);
   }
   Journal j(dir_, identity_, true);
   try {

@@ -113,7 +113,7 @@ fi
 on_ranks 3 run "$table1" --trials 12 --seed 2 --out "$tmp/stopped" --resume
 expect_status "--resume of another seed on 3 ranks (rank 0 refuses)" 2
 expect_in "--resume of another seed on 3 ranks (rank 0 refuses)" "$err" \
-  "journal/identity.json: /invocation = "
+  "journal/identity.json: /invocation/seed = "
 on_ranks 3 run "$table1" --trials 12 --out "$tmp/stopped" --resume
 expect_status "--resume on 3 ranks" 0
 expect_in "--resume on 3 ranks" "$out" "resumed: "

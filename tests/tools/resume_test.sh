@@ -4,8 +4,9 @@
 # work) and resumed end with the results digest of an uninterrupted run, and
 # run only what was missing; a run stopped by SIGINT resumes too; a journal
 # whose last record was torn (as by a power loss) resumes to the same digest;
-# --resume of another command (another seed), --resume with nothing to
-# resume, and a fresh run onto a stopped run's journal exit 2 with one line.
+# --resume of another command (another seed) or after a lab table changed,
+# --resume with nothing to resume, and a fresh run onto a stopped run's
+# journal exit 2 with one line.
 #
 # Usage: resume_test.sh VAHF_EXECUTABLE REPO_ROOT
 set -uo pipefail
@@ -57,7 +58,7 @@ expect_in "a fresh run onto a stopped run's journal" "$err" \
 run run "$table1" --trials 6 --seed 2 --out "$tmp/killed" --resume
 expect_status "--resume with another seed" 2
 expect_lines "--resume with another seed" "$err" 1
-expect_in "--resume with another seed" "$err" "journal/identity.json: /invocation = "
+expect_in "--resume with another seed" "$err" "journal/identity.json: /invocation/seed = 1: "
 run run "$table1" --trials 6 --out "$tmp/killed" --resume
 expect_status "--resume after SIGKILL" 0
 expect_in "--resume after SIGKILL" "$out" \
@@ -96,8 +97,11 @@ else
   fail "--resume after SIGINT and a torn record: digest $(digest "$tmp/stopped")"
 fi
 
-# --- a calibration: killed after several design evaluations, resumed.
-calibrate=$root/experiments/calibrate_synthetic.json
+# --- a calibration: killed after several design evaluations, resumed. It
+# runs from a copy of experiments/ and data/, so that a lab table can change.
+mkdir -p "$tmp/repo"
+cp -r "$root/experiments" "$root/data" "$tmp/repo/"
+calibrate=$tmp/repo/experiments/calibrate_synthetic.json
 run run "$calibrate" --trials 4 --out "$tmp/calibration"
 expect_status "run calibrate" 0
 "$vahf" run "$calibrate" --trials 4 --out "$tmp/cal_killed" >"$out" 2>"$err" &
@@ -109,6 +113,17 @@ if ((batches >= 2)); then
 else
   fail "run calibrate killed by SIGKILL: $batches design evaluations journaled (want 2 or more)"
 fi
+# A lab table edited since (a comment line: the dataset still loads) is not
+# the journaled run's: --resume refuses it, naming the table's entry.
+table=$tmp/repo/data/synthetic_block/trials.csv
+cp "$table" "$tmp/trials.csv.orig"
+echo "# edited after the run was stopped" >>"$table"
+run run "$calibrate" --trials 4 --out "$tmp/cal_killed" --resume
+expect_status "--resume after a lab table changed" 2
+expect_lines "--resume after a lab table changed" "$err" 1
+expect_in "--resume after a lab table changed" "$err" "journal/identity.json: /inputs = "
+expect_in "--resume after a lab table changed" "$err" "trials.csv"
+cp "$tmp/trials.csv.orig" "$table"
 run run "$calibrate" --trials 4 --out "$tmp/cal_killed" --resume
 expect_status "--resume a calibration" 0
 expect_in "--resume a calibration" "$out" "resumed: "

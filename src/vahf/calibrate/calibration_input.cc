@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "vahf/core/error.h"
+#include "vahf/data/lab_dataset.h"
 #include "vahf/scene/overrides.h"
 #include "vahf/scene/parameter_table.h"
 
@@ -91,6 +92,10 @@ CalibrationStage ReadStage(const JsonNode& node, const CalibrationDesign& d,
 }
 
 }  // namespace
+
+std::vector<std::string> CalibrationDesign::InputFiles() const {
+  return data::LabDatasetFiles(data::LoadLabDataset(lab_path));
+}
 
 void ReadCalibration(const JsonNode& root, const std::string& path, ExperimentFile* e) {
   CalibrationDesign d;

@@ -41,7 +41,10 @@ struct CalibrationStage {
 // (calibrate/calibration.h), in stages: each stage starts from the scene with
 // every earlier stage's estimates (a sequential calibration).
 struct CalibrationDesign : scene::KindInputOf<CalibrationDesign> {
-  std::string lab_path;                  // the lab dataset's manifest
+  std::string lab_path;  // the lab dataset's manifest
+  // The lab dataset's files (data::LabDatasetFiles): a resumed calibration
+  // checks them against its journal.
+  std::vector<std::string> InputFiles() const override;
   std::vector<CalibrationStage> stages;  // at least one
   // Robust loss on the whitened residuals: "huber", "cauchy" or "none"; its
   // scale in standard deviations (residuals beyond it are down-weighted).

@@ -3,7 +3,13 @@
 #include <memory>
 #include <utility>
 
+#include "vahf/data/lab_dataset.h"
+
 namespace vahf::compare {
+
+std::vector<std::string> ComparisonDesign::InputFiles() const {
+  return data::LabDatasetFiles(data::LoadLabDataset(lab_path));
+}
 
 void ReadComparison(const scene::JsonNode& root, const std::string& path,
                     scene::ExperimentFile* e) {

@@ -16,6 +16,8 @@ namespace vahf::compare {
 // (compare/comparison.h).
 struct ComparisonDesign : scene::KindInputOf<ComparisonDesign> {
   std::string lab_path;  // the lab dataset's manifest
+  // The lab dataset's files (data::LabDatasetFiles), as CalibrationDesign's.
+  std::vector<std::string> InputFiles() const override;
   std::vector<scene::FitTarget> quantities;
   // The hour of work that segment quantities are read from (the file's
   // "fatigue", as the fatigue kind reads it).

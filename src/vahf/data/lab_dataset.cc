@@ -629,6 +629,15 @@ LabDataset ParseLabDataset(const nlohmann::json& manifest,
   return Parse(manifest, manifest_path, ReadDiskFile);
 }
 
+std::vector<std::string> LabDatasetFiles(const LabDataset& dataset) {
+  std::vector<std::string> out = {dataset.file};
+  for (const std::string& f :
+       {dataset.trials_file, dataset.segments_file, dataset.summaries_file})
+    if (!f.empty()) out.push_back(dataset.folder + "/" + f);
+  for (const SensorTrack& t : dataset.tracks) out.push_back(t.file);
+  return out;
+}
+
 LabDataset LoadLabDataset(const std::string& manifest_path) {
   return ParseLabDataset(scene::ReadJsonFile(manifest_path), manifest_path);
 }

@@ -85,6 +85,11 @@ LabDataset LoadLabDataset(const std::string& manifest_path);
 LabDataset ParseLabDataset(const nlohmann::json& manifest,
                            const std::string& manifest_path);
 
+// The manifest and every file it names (its tables, then its tracks), as a
+// run that reads the dataset records them (manifest.json) and checks them
+// before it resumes (the journal's identity).
+std::vector<std::string> LabDatasetFiles(const LabDataset& dataset);
+
 // Writes `dataset` into `folder` (created if need be): the CSV files, in SI
 // units (segment bounds in minutes) with numbers in their shortest round-trip
 // form, then dataset.json, each file atomically. The files are checked by

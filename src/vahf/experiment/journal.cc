@@ -67,6 +67,37 @@ bool ReadRecord(const std::string& text, std::size_t* pos, std::size_t* index,
   return true;
 }
 
+// The value at `pointer` in `json`, as a message shows it; "(none)" where
+// there is none.
+std::string ShownAt(const nlohmann::json& json, const std::string& pointer) {
+  const nlohmann::json::json_pointer p(pointer);
+  return json.contains(p) ? Shown(json.at(p)) : "(none)";
+}
+
+// Refuses a journal whose identity (journal.h) differs from this command's
+// in any member this command has, naming the first place it differs: within
+// a member, the first entry JSON Patch's diff gives (RFC 6902), so that of
+// the inputs the one file that changed is named with its digests.
+void CheckIdentity(const std::string& identity_path, const nlohmann::json& journaled,
+                   const nlohmann::json& identity) {
+  for (const auto& [key, value] : identity.items()) {
+    const std::string member = (nlohmann::json::json_pointer() / key).to_string();
+    if (journaled.is_object() && journaled.contains(key) && journaled[key] == value)
+      continue;
+    std::string where = member;
+    if (journaled.is_object() && journaled.contains(key)) {
+      const nlohmann::json patch = nlohmann::json::diff(journaled[key], value);
+      if (!patch.empty()) where += patch[0]["path"].get<std::string>();
+    }
+    throw InputError(
+        identity_path, where,
+        journaled.is_object() ? ShownAt(journaled, where) : "(none)",
+        fmt::format("the journaled run had this; this command gives {}: --resume "
+                    "continues only the same run (without it, the run starts afresh)",
+                    ShownAt(identity, where)));
+  }
+}
+
 }  // namespace
 
 Journal::Journal(std::string directory, const nlohmann::json& identity, bool resume)
@@ -85,15 +116,7 @@ Journal::Journal(std::string directory, const nlohmann::json& identity, bool res
                      "is missing: there is no journaled run here to resume");
   const nlohmann::json journaled = nlohmann::json::parse(ReadAll(identity_path), nullptr,
                                                          /*allow_exceptions=*/false);
-  for (const auto& [key, value] : identity.items())
-    if (!journaled.is_object() || !journaled.contains(key) || journaled[key] != value)
-      throw InputError(
-          identity_path, "/" + key,
-          journaled.is_object() && journaled.contains(key) ? Shown(journaled[key])
-                                                           : "(none)",
-          fmt::format("the journaled run had this; this command gives {}: --resume "
-                      "continues only the same run (without it, the run starts afresh)",
-                      Shown(value)));
+  CheckIdentity(identity_path, journaled, identity);
 }
 
 Journal::~Journal() = default;

@@ -14,10 +14,8 @@ report::RunOutput WriteLabRun(const scene::ExperimentFile& file,
   h.trials = trials;
   h.cycles_per_condition = std::to_string(trials) + cycles;
   h.integration = report::IntegrationText(file.scene.params);
-  h.inputs = {file.scene_path, lab.file};
-  for (const std::string& f : {lab.trials_file, lab.segments_file, lab.summaries_file})
-    if (!f.empty()) h.inputs.push_back(lab.folder + "/" + f);
-  for (const auto& t : lab.tracks) h.inputs.push_back(t.file);
+  h.inputs = {file.scene_path};
+  for (const std::string& f : data::LabDatasetFiles(lab)) h.inputs.push_back(f);
   if (!file.overrides_path.empty()) h.inputs.push_back(file.overrides_path);
   return report::WriteSections(h, {section}, *context.directory, info);
 }
