@@ -190,3 +190,39 @@ TEST(SecantLeastSquares, AStartWithoutAValueHasNoCost) {
 
 }  // namespace
 }  // namespace vahf::calibrate
+
+namespace vahf::calibrate {
+namespace {
+
+// Linear residuals: forward differences give the exact Jacobian; a column
+// whose forward point passes its bound is differenced backward; one that
+// has no value either way keeps what it had.
+TEST(DifferenceColumns, ForwardBackwardOrKept) {
+  Eigen::MatrixXd a(3, 2);
+  a << 1, 0, 0, 2, 1, 1;
+  const Eigen::Vector3d b(1, 2, 4);
+  const Eigen::Vector2d y(1.0, 0.0);
+  bool first_fixed = false;  // no value where y(0) moves
+  int backward = 0;
+  const ResidualVector f = [&](const Eigen::VectorXd& z, Eigen::VectorXd* r) {
+    if (first_fixed && z(0) != y(0)) return false;
+    backward += z(1) < y(1);
+    *r = a * z - b;
+    return true;
+  };
+  const Eigen::VectorXd r0 = a * y - b;
+  // y(1) at 0 steps by 0.05 of 1; its upper bound 0.01 forces the backward step.
+  const Eigen::Vector2d lower(-10, -10), upper(10, 0.01);
+  Eigen::MatrixXd j = Eigen::MatrixXd::Zero(3, 2);
+  DifferenceColumns(f, y, r0, lower, upper, 0.05, &j);
+  EXPECT_NEAR((j - a).norm(), 0, 1e-12);
+  EXPECT_EQ(backward, 1);
+  first_fixed = true;
+  j.setConstant(7.0);
+  DifferenceColumns(f, y, r0, lower, upper, 0.05, &j);
+  EXPECT_EQ(j.col(0), Eigen::Vector3d::Constant(7.0));
+  EXPECT_NEAR((j.col(1) - a.col(1)).norm(), 0, 1e-12);
+}
+
+}  // namespace
+}  // namespace vahf::calibrate

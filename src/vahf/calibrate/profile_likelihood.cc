@@ -164,4 +164,22 @@ SecantFit SecantLeastSquares(const ResidualVector& f, const Eigen::VectorXd& sta
   return out;
 }
 
+void DifferenceColumns(const ResidualVector& residuals, const Eigen::VectorXd& y,
+                       const Eigen::VectorXd& r0, const Eigen::VectorXd& lower,
+                       const Eigen::VectorXd& upper, double relative_step,
+                       Eigen::MatrixXd* jacobian) {
+  for (Eigen::Index k = 0; k < y.size(); ++k) {
+    const double h = relative_step * (y(k) != 0 ? std::abs(y(k)) : 1.0);
+    for (double step : {h, -h}) {
+      Eigen::VectorXd z = y;
+      z(k) += step;
+      if (!(z(k) >= lower(k) && z(k) <= upper(k))) continue;
+      Eigen::VectorXd r;
+      if (!residuals(z, &r)) continue;
+      jacobian->col(k) = (r - r0) / step;
+      break;
+    }
+  }
+}
+
 }  // namespace vahf::calibrate

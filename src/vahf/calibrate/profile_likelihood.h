@@ -76,4 +76,15 @@ SecantFit SecantLeastSquares(const ResidualVector& f, const Eigen::VectorXd& sta
                              const Eigen::VectorXd& upper, int max_evaluations,
                              double cost_tolerance);
 
+// The columns of *jacobian (m x q) anew by forward differences of `f` at y
+// (where its residuals are r0) over `relative_step` of each value (of 1
+// where the value is 0), backward where the forward point is outside
+// [lower, upper] or has no value; a column that can be differenced neither
+// way is kept. A profile value's re-fit calls it before its secant steps
+// (docs/calibration.md, Profile intervals: why anew at each value).
+void DifferenceColumns(const ResidualVector& f, const Eigen::VectorXd& y,
+                       const Eigen::VectorXd& r0, const Eigen::VectorXd& lower,
+                       const Eigen::VectorXd& upper, double relative_step,
+                       Eigen::MatrixXd* jacobian);
+
 }  // namespace vahf::calibrate

@@ -36,35 +36,6 @@ constexpr double kRefitTolerance = 0.005;
 // with d2 held gave 0.57, 0.78 and 1.13 at d2 = 0.35, 0.37 and 0.39.
 constexpr int kRefitRounds = 4;
 
-// The columns of *jacobian (the whitened residuals r0 at y, m x q) anew by
-// forward differences over the fit's step (spec.relative_step of each
-// value; backward where the forward point is invalid; a column that can be
-// differenced neither way is kept). Why anew at each profile value: the
-// reach curve bends the valley, so that d1's slope at the estimate is not
-// its slope where kappa's profile goes, and Broyden's updates from steps
-// shorter than the difference step measure the common random numbers'
-// roughness, not the slope. Measured on coverage datasets 3 and 6, whose
-// kappa profiles ended at 294.5 and 297.4 with Broyden's updates alone:
-// full Levenberg-Marquardt re-fits with kappa held at 300 rose only 1.26
-// and 0.82 above the estimate's cost.
-void DifferenceColumns(const ResidualVector& residuals, const Eigen::VectorXd& y,
-                       const Eigen::VectorXd& r0, const Eigen::VectorXd& lower,
-                       const Eigen::VectorXd& upper, double relative_step,
-                       Eigen::MatrixXd* jacobian) {
-  for (Eigen::Index k = 0; k < y.size(); ++k) {
-    const double h = relative_step * (y(k) != 0 ? std::abs(y(k)) : 1.0);
-    for (double step : {h, -h}) {
-      Eigen::VectorXd z = y;
-      z(k) += step;
-      if (!(z(k) >= lower(k) && z(k) <= upper(k))) continue;
-      Eigen::VectorXd r;
-      if (!residuals(z, &r)) continue;
-      jacobian->col(k) = (r - r0) / step;
-      break;
-    }
-  }
-}
-
 // The profile's value with *at's held parameters where they are: the least
 // cost over the parameters `free`, re-fitted from *at (a valid point) by
 // secant steps on `jacobian` (the whitened residuals' derivatives in those
@@ -93,6 +64,14 @@ double Refit(VirtualModel& model, const CalibrationSpec& spec, const StageSpec& 
             (stats[t].value - targets[t].lab.value) / sigma[t];
       return r->allFinite();
     };
+    // The Jacobian differenced anew at each profile value: the
+    // reach curve bends the valley, so that d1's slope at the estimate is not
+    // its slope where kappa's profile goes, and Broyden's updates from steps
+    // shorter than the difference step measure the common random numbers'
+    // roughness, not the slope. Measured on coverage datasets 3 and 6, whose
+    // kappa profiles ended at 294.5 and 297.4 with Broyden's updates alone:
+    // full Levenberg-Marquardt re-fits with kappa held at 300 rose only 1.26
+    // and 0.82 above the estimate's cost.
     Eigen::VectorXd r0;
     if (residuals(y, &r0))
       DifferenceColumns(residuals, y, r0, lower, upper, spec.relative_step, jacobian);
