@@ -120,12 +120,19 @@ TEST(ProfileEnd, RunningOutOfCallsInsideSaysSo) {
 namespace vahf::calibrate {
 namespace {
 
+// Linear residuals a y - b, three of two parameters.
+Eigen::MatrixXd LinearA() {
+  Eigen::MatrixXd a(3, 2);
+  a << 1, 0, 0, 2, 1, 1;
+  return a;
+}
+const Eigen::Vector3d kLinearB(1, 2, 4);
+
 // Linear residuals: one Gauss-Newton step on the exact Jacobian lands on
 // the least-squares solution, and the cost there is the residual's.
 TEST(SecantLeastSquares, LinearResidualsAreSolvedInOneStep) {
-  Eigen::MatrixXd a(3, 2);
-  a << 1, 0, 0, 2, 1, 1;
-  const Eigen::Vector3d b(1, 2, 4);
+  const Eigen::MatrixXd a = LinearA();
+  const Eigen::Vector3d& b = kLinearB;
   const ResidualVector f = [&](const Eigen::VectorXd& y, Eigen::VectorXd* r) {
     *r = a * y - b;
     return true;
@@ -188,19 +195,12 @@ TEST(SecantLeastSquares, AStartWithoutAValueHasNoCost) {
   EXPECT_EQ(fit.evaluations, 1);
 }
 
-}  // namespace
-}  // namespace vahf::calibrate
-
-namespace vahf::calibrate {
-namespace {
-
 // Linear residuals: forward differences give the exact Jacobian; a column
 // whose forward point passes its bound is differenced backward; one that
 // has no value either way keeps what it had.
 TEST(DifferenceColumns, ForwardBackwardOrKept) {
-  Eigen::MatrixXd a(3, 2);
-  a << 1, 0, 0, 2, 1, 1;
-  const Eigen::Vector3d b(1, 2, 4);
+  const Eigen::MatrixXd a = LinearA();
+  const Eigen::Vector3d& b = kLinearB;
   const Eigen::Vector2d y(1.0, 0.0);
   bool first_fixed = false;  // no value where y(0) moves
   int backward = 0;
