@@ -9,7 +9,8 @@ namespace vahf {
 
 std::optional<std::string> ReadWholeFile(const std::string& path) {
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) return std::nullopt;
+  // A pipe (bash's <(...)) is read like a file; a directory opens but has no bytes.
+  if (std::filesystem::is_directory(path, error)) return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
   std::ostringstream buffer;

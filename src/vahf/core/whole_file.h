@@ -8,7 +8,7 @@
 
 namespace vahf {
 
-// The bytes of the regular file at `path`; nothing when it is missing, a
+// The bytes of the file (or pipe) at `path`; nothing when it is missing, a
 // directory, or cannot be opened or read. The caller says what that means
 // for its input (an InputError naming the file, or no journal yet).
 std::optional<std::string> ReadWholeFile(const std::string& path);

@@ -48,6 +48,8 @@ scene::ExperimentFile LoadRecordedExperiment(const report::RecordedRun& run) {
 std::optional<std::string> ReadResultFile(const std::string& run_dir,
                                           const std::string& name) {
   const fs::path path = fs::path(run_dir) / name;
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) return std::nullopt;  // a result is a file
   return ReadWholeFile(path.string());
 }
 
