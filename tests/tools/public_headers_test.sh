@@ -35,6 +35,8 @@ while read -r lib; do
     OpenSSL::*) patterns+=("openssl/") ;;
     embree) patterns+=("embree[0-9]*/") ;;
     Ceres::*) patterns+=("ceres/|glog/|gflags/") ;;  # Ceres' headers include glog's
+    # Siconos numerics' headers also include each other by bare name.
+    Siconos::*) patterns+=("siconos/|(NonSmoothDrivers|FrictionContactProblem|Friction_cst|NumericsMatrix|SparseBlockMatrix|SolverOptions|sn_error_handling|SiconosConfig|NumericsFwd)\.h") ;;
     *) fail "src/CMakeLists.txt links $lib PRIVATE, which this script does not know: add its headers" ;;
   esac
 done < <(private_libraries)

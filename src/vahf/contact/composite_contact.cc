@@ -7,6 +7,50 @@ namespace vahf::contact {
 CompositeContact::CompositeContact(std::vector<std::shared_ptr<const ContactModel>> parts)
     : parts_(std::move(parts)) {}
 
+namespace {
+
+// Adds part loads f (and their derivative pj) to out.
+void Add(const ContactForces& f, const ContactJacobian* pj, ContactForces* out,
+         ContactJacobian* jacobian) {
+  out->normal_force += f.normal_force;
+  out->friction_force += f.friction_force;
+  out->film_force += f.film_force;
+  out->torque += f.torque;
+  out->points_in_contact += f.points_in_contact;
+  out->rim_points_in_contact += f.rim_points_in_contact;
+  out->max_depth = std::max(out->max_depth, f.max_depth);
+  if (jacobian) {
+    jacobian->normal_force += pj->normal_force;
+    jacobian->friction_force += pj->friction_force;
+    jacobian->film_force += pj->film_force;
+    jacobian->torque += pj->torque;
+  }
+}
+
+}  // namespace
+
+bool CompositeContact::AddContactPoints(const RigidMotion& m, double margin,
+                                        ContactCounters& counters,
+                                        std::vector<ContactPoint>* points) const {
+  for (const auto& part : parts_)
+    if (!part->AddContactPoints(m, margin, counters, points)) return false;
+  return true;
+}
+
+ContactForces CompositeContact::SmoothLoads(const RigidMotion& m,
+                                            ContactCounters& counters,
+                                            ContactJacobian* jacobian) const {
+  ContactForces out;
+  ContactJacobian part_jacobian;
+  for (const auto& part : parts_) {
+    if (jacobian) part_jacobian = ContactJacobian{};
+    const ContactForces f =
+        part->SmoothLoads(m, counters, jacobian ? &part_jacobian : nullptr);
+    Add(f, &part_jacobian, &out, jacobian);
+  }
+  return out;
+}
+
 ContactForces CompositeContact::DoEvaluate(const RigidMotion& m,
                                            ContactCounters& counters,
                                            ContactJacobian* jacobian) const {
@@ -15,19 +59,7 @@ ContactForces CompositeContact::DoEvaluate(const RigidMotion& m,
   for (const auto& part : parts_) {
     const ContactForces f =
         part->Evaluate(m, &counters, jacobian ? &part_jacobian : nullptr);
-    out.normal_force += f.normal_force;
-    out.friction_force += f.friction_force;
-    out.film_force += f.film_force;
-    out.torque += f.torque;
-    out.points_in_contact += f.points_in_contact;
-    out.rim_points_in_contact += f.rim_points_in_contact;
-    out.max_depth = std::max(out.max_depth, f.max_depth);
-    if (jacobian) {
-      jacobian->normal_force += part_jacobian.normal_force;
-      jacobian->friction_force += part_jacobian.friction_force;
-      jacobian->film_force += part_jacobian.film_force;
-      jacobian->torque += part_jacobian.torque;
-    }
+    Add(f, &part_jacobian, &out, jacobian);
   }
   if (!parts_.empty())
     counters.evaluations -= parts_.size() - 1;  // one evaluation of the whole

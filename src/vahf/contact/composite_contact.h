@@ -15,6 +15,15 @@ class CompositeContact final : public ContactModel {
  public:
   explicit CompositeContact(std::vector<std::shared_ptr<const ContactModel>> parts);
 
+  // Every part's points, in the parts' order; false when any part has none
+  // to give.
+  bool AddContactPoints(const RigidMotion& motion, double margin,
+                        ContactCounters& counters,
+                        std::vector<ContactPoint>* points) const override;
+  // The parts' smooth loads summed in order.
+  ContactForces SmoothLoads(const RigidMotion& motion, ContactCounters& counters,
+                            ContactJacobian* jacobian) const override;
+
  protected:
   ContactForces DoEvaluate(const RigidMotion& motion, ContactCounters& counters,
                            ContactJacobian* jacobian) const override;

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <vector>
 
 namespace vahf::contact {
 
@@ -67,6 +68,18 @@ struct ContactCounters {
   std::uint64_t Tests() const { return point_queries + rim_queries + edge_tests; }
 };
 
+// A point where the moving part meets, or may meet within a step, a fixed
+// part: a unilateral constraint of a nonsmooth stepper (docs/design.md
+// decision 19). Its relative velocity is the moving part's at the point,
+// v + w x r, read along the normal and two tangents the stepper chooses.
+struct ContactPoint {
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();  // moving origin to the point, world, m
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, world: the way the fixed
+                                                      // part pushes the moving one
+  double gap = 0;  // signed distance along the normal, m; below 0: overlap
+  double mu = 0;   // the pair's Coulomb coefficient
+};
+
 class ContactModel {
  public:
   virtual ~ContactModel() = default;
@@ -80,6 +93,25 @@ class ContactModel {
     ContactCounters scratch;
     if (jacobian) *jacobian = ContactJacobian{};
     return DoEvaluate(motion, counters ? *counters : scratch, jacobian);
+  }
+
+  // For a nonsmooth stepper: appends to *points the model's contact points at
+  // `motion` whose gap is below `margin` (m), adding the work to `counters`.
+  // False when the model cannot: its contact is a penalty on sampled points,
+  // not the exact geometry (a model of solids that are not both revolved).
+  virtual bool AddContactPoints(const RigidMotion& motion, double margin,
+                                ContactCounters& counters,
+                                std::vector<ContactPoint>* points) const {
+    (void)motion, (void)margin, (void)counters, (void)points;
+    return false;
+  }
+  // For a nonsmooth stepper: the model's loads that stay smooth there (the
+  // oil film, squeeze_film.h); none for a contact of solids. With
+  // `jacobian` (zeroed by the caller), their derivative added to it.
+  virtual ContactForces SmoothLoads(const RigidMotion& motion, ContactCounters& counters,
+                                    ContactJacobian* jacobian) const {
+    (void)motion, (void)counters, (void)jacobian;
+    return {};
   }
 
  protected:

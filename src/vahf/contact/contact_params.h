@@ -104,6 +104,16 @@ struct ContactParams : ContactLaw {
   // three times a composite roughness of 0.3 um; not measured for these
   // parts, a calibratable parameter.
   double film_floor = 1e-6;
+  // Newton's coefficient of restitution of the parts' dry solids, for the
+  // MoreauJean stepper's impact law (docs/physics.md, "Nonsmooth stepping";
+  // the oil's part is the squeeze film's, not counted twice). Published
+  // values for steel on steel lie between about 0.5 and 0.9, falling with
+  // speed and with the parts' own vibration (W. Goldsmith, Impact, 1960,
+  // Ch. 7); 0.5, the lower end for long parts whose impacts excite their own
+  // bending, is an assumption of this harness, not a measurement of these
+  // parts: a calibratable parameter. The compliant path's dissipation is its
+  // own (Hunt-Crossley, `dissipation`).
+  double restitution = 0.5;
 };
 
 }  // namespace vahf::contact

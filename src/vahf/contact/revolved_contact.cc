@@ -29,13 +29,12 @@ RevolvedContact::RevolvedContact(Solid moving, std::vector<Solid> fixed,
                                  const PenaltyLaw& params)
     : moving_(std::move(moving)), fixed_(std::move(fixed)), params_(params) {}
 
-ContactForces RevolvedContact::DoEvaluate(const RigidMotion& m, ContactCounters& counters,
-                                          ContactJacobian* jacobian) const {
-  ++counters.evaluations;
-  ContactForces out;
+template <typename Visit>
+void RevolvedContact::ForEachPass(const RigidMotion& m, double margin,
+                                  ContactCounters& counters, Visit visit) const {
   for (const Solid& f : fixed_) {
     // Broad phase: bounding spheres about the two frame origins.
-    const double reach = f.bounding_radius + moving_.bounding_radius;
+    const double reach = f.bounding_radius + moving_.bounding_radius + margin;
     if ((m.pose.translation() - f.pose.translation()).squaredNorm() > reach * reach) {
       ++counters.pairs_skipped;
       continue;
@@ -43,14 +42,76 @@ ContactForces RevolvedContact::DoEvaluate(const RigidMotion& m, ContactCounters&
     const double mu = PairFriction(moving_.friction, f.friction);
     const Eigen::Isometry3d moving_in_fixed = f.pose.inverse() * m.pose;
     const Eigen::Isometry3d fixed_in_moving = moving_in_fixed.inverse();
-    EvaluatePass(
-        {moving_, f, moving_in_fixed, f.pose.linear(), fixed_in_moving, true, mu}, m,
-        counters, &out, jacobian);
-    EvaluatePass({f, moving_, fixed_in_moving, m.pose.linear(),
-                  Eigen::Isometry3d::Identity(), false, mu},
-                 m, counters, &out, jacobian);
+    visit(Pass{moving_, f, moving_in_fixed, f.pose.linear(), fixed_in_moving, true, mu});
+    visit(Pass{f, moving_, fixed_in_moving, m.pose.linear(),
+               Eigen::Isometry3d::Identity(), false, mu});
   }
+}
+
+ContactForces RevolvedContact::DoEvaluate(const RigidMotion& m, ContactCounters& counters,
+                                          ContactJacobian* jacobian) const {
+  ++counters.evaluations;
+  ContactForces out;
+  ForEachPass(m, 0.0, counters,
+              [&](const Pass& pass) { EvaluatePass(pass, m, counters, &out, jacobian); });
   return out;
+}
+
+bool RevolvedContact::AddContactPoints(const RigidMotion& m, double margin,
+                                       ContactCounters& counters,
+                                       std::vector<ContactPoint>* points) const {
+  ++counters.evaluations;
+  ForEachPass(m, margin, counters,
+              [&](const Pass& pass) { PassPoints(pass, m, margin, counters, points); });
+  return true;
+}
+
+void RevolvedContact::PassPoints(const Pass& pass, const RigidMotion& m, double margin,
+                                 ContactCounters& counters,
+                                 std::vector<ContactPoint>* points) const {
+  const Eigen::Matrix3d& R = pass.rim_to_field.linear();
+  const double sign = pass.moving_rim ? 1.0 : -1.0;
+  for (const RimCircle& rim : pass.rims.rims) {
+    const PlacedCircle circle{pass.rim_to_field * Eigen::Vector3d(0, 0, rim.height),
+                              R.col(0), R.col(1), rim.radius};
+    const NearEdges solid = NearCircle(pass.field.field, circle, margin);
+    Arc arcs[kMaxArcs];
+    const int n = InsideArcs(circle, solid, arcs, &counters.rim_queries,
+                             &counters.edge_tests, margin);
+    if (n == 0) ++counters.rims_skipped;
+    const auto add = [&](double angle) {
+      const Eigen::Vector3d p = circle.At(angle);
+      ++counters.rim_queries;
+      const Distance d = solid.At(p, &counters.edge_tests);
+      ContactPoint c;
+      c.r = m.pose.linear() * (pass.field_to_moving * p);
+      c.normal =
+          sign * (pass.field_to_world * solid.LoadNormal(p, d, params_.edge_blend));
+      c.gap = d.distance;
+      c.mu = pass.mu;
+      points->push_back(c);
+    };
+    // The arcs inside the solid, for the ends of a contact's extent.
+    Arc inside[kMaxArcs];
+    int m = -1;
+    for (int k = 0; k < n; ++k) {
+      const double peak = DeepestAngle(circle, solid, arcs[k], &counters.rim_queries,
+                                       &counters.edge_tests);
+      if (arcs[k].whole()) {
+        for (int i = 0; i < kCirclePoints; ++i) add(peak + 2 * M_PI * i / kCirclePoints);
+        continue;
+      }
+      add(peak);
+      if (!(points->back().gap < 0)) continue;
+      if (m < 0)
+        m = InsideArcs(circle, solid, inside, &counters.rim_queries,
+                       &counters.edge_tests);
+      for (int j = 0; j < m; ++j)
+        if (!inside[j].whole() && inside[j].begin >= arcs[k].begin &&
+            inside[j].end <= arcs[k].end)
+          add(inside[j].begin), add(inside[j].end);
+    }
+  }
 }
 
 void RevolvedContact::EvaluatePass(const Pass& pass, const RigidMotion& m,

@@ -68,6 +68,18 @@ class RevolvedContact final : public ContactModel {
   RevolvedContact(Solid moving, std::vector<Solid> fixed, const PenaltyLaw& params);
 
   static constexpr int kCircleNodes = 16;
+  // A nonsmooth stepper's points on a whole circle within the margin: evenly
+  // spaced from its deepest point.
+  static constexpr int kCirclePoints = 8;
+
+  // The exact geometry's contact points (docs/design.md decision 19): for
+  // every rim arc within `margin` of the other solid, both ways, its deepest
+  // point, and where it overlaps the solid the ends of each arc inside it
+  // (the extent of the contact, which carries a moment); a whole circle,
+  // kCirclePoints from its deepest point.
+  bool AddContactPoints(const RigidMotion& motion, double margin,
+                        ContactCounters& counters,
+                        std::vector<ContactPoint>* points) const override;
 
  protected:
   ContactForces DoEvaluate(const RigidMotion& motion, ContactCounters& counters,
@@ -87,6 +99,14 @@ class RevolvedContact final : public ContactModel {
   };
   void EvaluatePass(const Pass& pass, const RigidMotion& m, ContactCounters& counters,
                     ContactForces* out, ContactJacobian* jacobian) const;
+  // The passes of the fixed solids whose spheres lie within `margin` of the
+  // moving one's, in order, two a solid (its rims against the moving solid's
+  // field come second); the others counted as skipped.
+  template <typename Visit>
+  void ForEachPass(const RigidMotion& m, double margin, ContactCounters& counters,
+                   Visit visit) const;
+  void PassPoints(const Pass& pass, const RigidMotion& m, double margin,
+                  ContactCounters& counters, std::vector<ContactPoint>* points) const;
   // The line load of one arc of `circle` (in the field's frame).
   void IntegrateArc(const Pass& pass, const PlacedCircle& circle, const NearEdges& solid,
                     const Arc& arc, const RigidMotion& m, ContactCounters& counters,

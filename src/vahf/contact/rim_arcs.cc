@@ -22,12 +22,13 @@ constexpr double kCrossingTolerance = 1e-12;
 // The circle's points, signed distances and their slopes along the angle.
 class CircleField {
  public:
+  // f is the signed distance less `margin` (InsideArcs).
   CircleField(const PlacedCircle& c, const NearEdges& solid, std::uint64_t* queries,
-              std::uint64_t* edges)
-      : c_(c), solid_(solid), queries_(queries), edges_(edges) {}
+              std::uint64_t* edges, double margin = 0)
+      : c_(c), solid_(solid), queries_(queries), edges_(edges), margin_(margin) {}
 
   struct Value {
-    double f;            // signed distance, m
+    double f;            // signed distance (less the margin), m
     double slope;        // df/dphi, m/rad
     Eigen::Vector2d q;   // the point's meridian coordinates (r, z), m
     Eigen::Vector2d dq;  // their slopes d(r, z)/dphi, m/rad (the scan's only)
@@ -41,6 +42,7 @@ class CircleField {
   // (the scan's tests).
   Value At(double cs, double sn) const { return Query(cs, sn, true); }
   const NearEdges& solid() const { return solid_; }
+  double margin() const { return margin_; }
 
  private:
   Value Query(double cs, double sn, bool trace_slopes) const {
@@ -49,7 +51,8 @@ class CircleField {
     Eigen::Vector2d q;
     const Distance d = solid_.At(p, edges_, &q);
     const Eigen::Vector3d t = cs * c_.y - sn * c_.x;  // dP/dphi over the radius
-    Value v{d.distance, c_.radius * d.normal.dot(t), q, Eigen::Vector2d::Zero()};
+    Value v{d.distance - margin_, c_.radius * d.normal.dot(t), q,
+            Eigen::Vector2d::Zero()};
     if (trace_slopes) {
       const Eigen::Vector3d dp = c_.radius * t;
       // r' = (P_xy . P'_xy) / r; on the axis, where r has no slope, 0.
@@ -62,6 +65,7 @@ class CircleField {
   const NearEdges& solid_;
   std::uint64_t* queries_;
   std::uint64_t* edges_;
+  double margin_;
 };
 
 struct Sample {
@@ -319,8 +323,11 @@ struct EdgeLines {
 };
 
 struct Scan {
-  Scan(const CircleField& f, const Bounds& b)
-      : field(f), bounds(b), lines(f.solid(), b) {}
+  // With a margin the crossings lie on the surface's offset, which near a
+  // corner follows no edge's line: no line test then.
+  Scan(const CircleField& f, const Bounds& b) : field(f), bounds(b), lines(f.solid(), b) {
+    if (f.margin() != 0) lines.count = 0;
+  }
   const CircleField& field;
   Bounds bounds;
   EdgeLines lines;
@@ -430,9 +437,9 @@ MeridianBox TraceBox(const PlacedCircle& c) {
 }
 
 int InsideArcs(const PlacedCircle& c, const NearEdges& solid, Arc arcs[kMaxArcs],
-               std::uint64_t* queries, std::uint64_t* edges) {
+               std::uint64_t* queries, std::uint64_t* edges, double margin) {
   if (solid.clear()) return 0;
-  const CircleField field(c, solid, queries, edges);
+  const CircleField field(c, solid, queries, edges, margin);
   Scan scan(field,
             TravelBounds(c, std::max(0.0, solid.box().r_min), solid.corner_distance()));
   const double step = 2 * M_PI / kSamples;

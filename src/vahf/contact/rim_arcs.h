@@ -33,6 +33,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -62,19 +63,28 @@ struct Arc {
 // frame, widened by a margin far above the rounding of its sums.
 MeridianBox TraceBox(const PlacedCircle& c);
 
-// The solid as the circle can meet it: the edges near its trace box.
-inline NearEdges NearCircle(const SignedDistance& solid, const PlacedCircle& c) {
-  return solid.Near(TraceBox(c));
+// The solid as the circle can meet it: the edges near its trace box, the
+// box widened by `margin` (m) on every side (InsideArcs' margin).
+inline NearEdges NearCircle(const SignedDistance& solid, const PlacedCircle& c,
+                            double margin = 0) {
+  MeridianBox box = TraceBox(c);
+  if (margin > 0) {
+    box.r_min = std::max(0.0, box.r_min - margin);
+    box.r_max += margin, box.z_min -= margin, box.z_max += margin;
+  }
+  return solid.Near(box);
 }
 
 inline constexpr int kMaxArcs = 8;
 
 // The arcs of the circle inside the solid, in increasing angle, at most
-// kMaxArcs (more are left out; two parts touch along at most a few). `solid`
-// is NearCircle(the solid, c). Adds the signed-distance queries it made to
-// *queries and the profile edges they examined to *edges.
+// kMaxArcs (more are left out; two parts touch along at most a few); with a
+// margin (m), the arcs closer to it than the margin (a nonsmooth stepper's
+// candidate contacts). `solid` is NearCircle(the solid, c, margin). Adds the
+// signed-distance queries it made to *queries and the profile edges they
+// examined to *edges.
 int InsideArcs(const PlacedCircle& c, const NearEdges& solid, Arc arcs[kMaxArcs],
-               std::uint64_t* queries, std::uint64_t* edges);
+               std::uint64_t* queries, std::uint64_t* edges, double margin = 0);
 
 // The angle of an arc's deepest point, the least signed distance: where the
 // distance's slope changes sign, by regula falsi (Illinois) from the arc's

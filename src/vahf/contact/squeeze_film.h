@@ -68,6 +68,17 @@ class SqueezeFilm final : public ContactModel {
 
   const std::vector<FilmFace>& faces() const { return faces_; }
 
+  // The film is smooth: a nonsmooth stepper takes its load as it is and
+  // finds no contact point in it.
+  bool AddContactPoints(const RigidMotion&, double, ContactCounters&,
+                        std::vector<ContactPoint>*) const override {
+    return true;
+  }
+  ContactForces SmoothLoads(const RigidMotion& motion, ContactCounters& counters,
+                            ContactJacobian* jacobian) const override {
+    return Evaluate(motion, &counters, jacobian);
+  }
+
  protected:
   ContactForces DoEvaluate(const RigidMotion& motion, ContactCounters& counters,
                            ContactJacobian* jacobian) const override;

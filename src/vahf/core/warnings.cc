@@ -16,6 +16,8 @@ const char* WarningName(WarningKind kind) {
       return "integrator_retry";
     case WarningKind::kIntegratorFailure:
       return "integrator_failure";
+    case WarningKind::kContactSolver:
+      return "contact_solver";
   }
   return "?";
 }

@@ -16,11 +16,12 @@ enum class WarningKind {
   kStepSizeFloor,      // an accepted step was shorter than simulation/step_floor
   kIntegratorRetry,    // the integrator failed a convergence or realization and retried
   kIntegratorFailure,  // the integrator gave up (the trial is a numerical failure)
+  kContactSolver,      // a nonsmooth step's contact problem ended unconverged
 };
-inline constexpr int kWarningKinds = 5;
+inline constexpr int kWarningKinds = 6;
 
 // Short machine name: non_finite_state, penetration_bound, step_size_floor,
-// integrator_retry, integrator_failure.
+// integrator_retry, integrator_failure, contact_solver.
 const char* WarningName(WarningKind kind);
 
 struct WarningEntry {

@@ -20,12 +20,12 @@ static_assert(sizeof(sim::TrialCounters) == 14 * 8, "encode the new counter");
 static_assert(sizeof(human::FactorValues) == 9 * 8, "encode the new factor");
 static_assert(sizeof(sim::PhaseSeconds) == 6 * 8, "encode the new phase");
 static_assert(sizeof(sim::TraceRow) == 288, "encode the new field of TraceRow");
-static_assert(sizeof(sim::TrialResult) == 960, "encode the new field of TrialResult");
-static_assert(sizeof(Warnings) == 5 * 48, "encode the new field of Warnings");
-static_assert(sizeof(PartRun) == 976, "encode the new field of PartRun");
-static_assert(sizeof(CycleResult) == 296, "encode the new field of CycleResult");
-static_assert(sizeof(CycleRecord) == 336, "encode the new field of CycleRecord");
-static_assert(sizeof(StabilityTrial) == 1024, "encode the new field of StabilityTrial");
+static_assert(sizeof(sim::TrialResult) == 1008, "encode the new field of TrialResult");
+static_assert(sizeof(Warnings) == 6 * 48, "encode the new field of Warnings");
+static_assert(sizeof(PartRun) == 1024, "encode the new field of PartRun");
+static_assert(sizeof(CycleResult) == 344, "encode the new field of CycleResult");
+static_assert(sizeof(CycleRecord) == 384, "encode the new field of CycleRecord");
+static_assert(sizeof(StabilityTrial) == 1072, "encode the new field of StabilityTrial");
 
 [[noreturn]] void NotAnEncoding(const std::string& why) {
   throw ComputationError(ComputationError::Reason::kRefused,

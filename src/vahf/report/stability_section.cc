@@ -12,8 +12,8 @@ namespace vahf::report {
 namespace {
 
 // The report's short names of the warning kinds, in WarningKind order.
-constexpr const char* kShortNames[kWarningKinds] = {"nonfinite", "pen", "floor", "retry",
-                                                    "fail"};
+constexpr const char* kShortNames[kWarningKinds] = {"nonfinite", "pen",  "floor",
+                                                    "retry",     "fail", "solver"};
 
 nlohmann::json WarningCounts(const Warnings& w) {
   nlohmann::json out = nlohmann::json::object();
@@ -235,7 +235,8 @@ std::vector<std::string> CellMarkdown(const Cell& cell) {
 constexpr const char* kLegend =
     "\nWarnings (counts over accepted steps): pen = penetration_bound (contact deeper "
     "than the bound), retry = integrator_retry, floor = step_size_floor, nonfinite = "
-    "non_finite_state, fail = integrator_failure. Steps: accepted steps (the largest "
+    "non_finite_state, fail = integrator_failure, solver = contact_solver. Steps: "
+    "accepted steps (the largest "
     "over seeds). CPU and the real-time factor (simulated over CPU seconds, the trial's "
     "thread) are measured on this machine, outside the results digest "
     "(stability_cost.csv, measured.json); over several seeds CPU is their sum.\n\n"

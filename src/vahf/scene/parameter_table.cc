@@ -344,6 +344,9 @@ std::vector<ParamSpec> Lubrication() {
       {"contact", "film_floor", "m", R::kClosed, 1e-9, 1e-3,
        "thinnest oil film the squeeze law admits (smooth cap of the eccentricity)",
        VAHF_REAL(contact.film_floor)},
+      {"contact", "restitution", "1", R::kClosed, 0, 1,
+       "Newton's restitution of the dry solids at an impact (MoreauJean)",
+       VAHF_REAL(contact.restitution)},
   };
   return rows;
 }

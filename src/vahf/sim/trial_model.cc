@@ -107,6 +107,26 @@ void SetTorqueLaw(const guidance::GuidanceParams& guidance, TrialModel* m) {
 
 // The penetration bound and the contact model of the part against the fixed
 // parts (none when nothing is fixed: no shell, no contact work).
+// The MoreauJean stepper steps on the exact contact points of solids of
+// revolution (docs/design.md decision 19): a contact model that cannot give
+// them (a penalty on sampled points: contact/model "shell" or "sampled", or
+// a pair that is not both revolved) is refused before any trial.
+void RequireContactPoints(const scene::Scene& scene, const scene::Part& part,
+                          const TrialModel& m) {
+  if (scene.params.simulation.integrator != "MoreauJean" || !m.contact.model) return;
+  contact::ContactCounters scratch;
+  std::vector<contact::ContactPoint> points;
+  contact::RigidMotion start;
+  start.pose = part.initial.Transform();
+  if (m.contact.model->AddContactPoints(start, 0.0, scratch, &points)) return;
+  throw InputError(scene.file, "/parameters/simulation/integrator", "MoreauJean",
+                   fmt::format("steps on the exact contact of solids of revolution: "
+                               "contact/model \"resolving\" with part '{}' and every "
+                               "fixed part it meets revolved (here contact/model is "
+                               "\"{}\")",
+                               part.name, scene.params.contact.model));
+}
+
 void SetContact(const scene::Scene& scene, const scene::Part& part,
                 const std::vector<FixedPart>& fixed, TrialModel* m) {
   const auto& params = scene.params;
@@ -138,6 +158,7 @@ void SetContact(const scene::Scene& scene, const scene::Part& part,
     throw InputError(scene.file, e.where(), e.value(),
                      fmt::format("{} (part '{}')", e.rule(), part.name));
   }
+  RequireContactPoints(scene, part, *m);
 }
 
 // visibility/mode, one of the parameter table's three names.

@@ -93,14 +93,38 @@ struct TrialContext {
 
   const scene::Parameters& params() const { return model.params; }
 
+  // A nonsmooth stepper's contact force (MoreauJean: its last step's net
+  // impulse over the step), set by its core: what the decisions, samples and
+  // final row report as the contact's normal force and friction, and what
+  // the operator feels there, in place of the compliant law's at the state,
+  // whose stiffness that stepper does not use. The depth stays the
+  // geometry's, the oil film its own. Null: the compliant law's.
+  const contact::ContactForces* nonsmooth_contact = nullptr;
+
   contact::ContactForces ContactAt(const contact::RigidMotion& m) {
     const PhaseTimer timer(Timing(&PhaseSeconds::contact));
     contact::ContactForces out = model.ContactAt(m, &contact_counters);
     Evaluated(m, out.max_depth);
+    if (nonsmooth_contact) {
+      out.normal_force = nonsmooth_contact->normal_force;
+      out.friction_force = nonsmooth_contact->friction_force;
+      out.points_in_contact = nonsmooth_contact->points_in_contact;
+      out.rim_points_in_contact = nonsmooth_contact->rim_points_in_contact;
+    }
     return out;
   }
   // TrialModel::LoadsAt with this trial's counters, its contact timed.
   Loads LoadsAt(const contact::RigidMotion& m, const Decision& d) {
+    if (nonsmooth_contact) {
+      Loads out;
+      out.contact = ContactAt(m);
+      Eigen::Vector3d torque;
+      model.OperatorLoad(m, d, out.contact, &out.assembly_force, &torque);
+      out.force = out.assembly_force + out.contact.normal_force +
+                  out.contact.friction_force + out.contact.film_force;
+      out.torque = torque;
+      return out;
+    }
     Loads out =
         model.LoadsAt(m, d, &contact_counters, nullptr, time_phases ? &phases : nullptr);
     Evaluated(m, out.contact.max_depth);
