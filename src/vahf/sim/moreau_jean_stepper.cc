@@ -140,15 +140,35 @@ class MoreauJeanCore : public StepperCore {
  private:
   // The margin of the contact points for a step of h from m: see the file's
   // comment.
-  double Margin(const contact::RigidMotion& m, const SmoothLoads& loads, double h) const {
+  double Margin(const contact::RigidMotion& m, double gained, double h) const {
     const TrialModel& model = c_.model;
-    const double reach = model.bounding_radius;
-    const double speed = m.velocity.norm() + reach * m.angular_velocity.norm();
-    // The speed the smooth loads alone reach within the step (gravity too).
-    const double gained =
-        h * ((loads.force / model.mass + model.gravity).norm() +
-             reach * loads.torque.norm() / model.inertia_body.diagonal().minCoeff());
+    const double speed =
+        m.velocity.norm() + model.bounding_radius * m.angular_velocity.norm();
     return std::max(model.penetration_bound, kMarginTravel * h * (speed + gained));
+  }
+
+  // The speed the smooth loads alone add to any point within a step of h
+  // (gravity too), m/s.
+  double Gained(const SmoothLoads& loads, double h) const {
+    const TrialModel& model = c_.model;
+    return h * ((loads.force / model.mass + model.gravity).norm() +
+                model.bounding_radius * loads.torque.norm() /
+                    model.inertia_body.diagonal().minCoeff());
+  }
+
+  // Leaves out the points whose gap the step cannot close: farther than the
+  // margin at the speed the point approaches along its normal (an axial
+  // slide closes no radial gap) plus what the loads add.
+  void KeepClosing(const contact::RigidMotion& m, double gained, double h) {
+    const double bound = c_.model.penetration_bound;
+    std::size_t kept = 0;
+    for (const contact::ContactPoint& p : points_) {
+      const double approach =
+          std::max(0.0, -p.normal.dot(m.velocity + m.angular_velocity.cross(p.r)));
+      if (p.gap <= std::max(bound, kMarginTravel * h * (approach + gained)))
+        points_[kept++] = p;
+    }
+    points_.resize(kept);
   }
 
   SmoothLoads LoadsAt(const contact::RigidMotion& m) {
@@ -181,10 +201,12 @@ class MoreauJeanCore : public StepperCore {
     points_.clear();
     if (model.contact.model) {
       const PhaseTimer timer(c_.Timing(&PhaseSeconds::contact));
-      VAHF_CHECK(model.contact.model->AddContactPoints(m, Margin(m, loads, h),
+      const double gained = Gained(loads, h);
+      VAHF_CHECK(model.contact.model->AddContactPoints(m, Margin(m, gained, h),
                                                        c_.contact_counters, &points_),
                  "MoreauJean on a contact model without points: the trial model "
                  "should have refused it");
+      KeepClosing(m, gained, h);
       KeepClosest(&points_);
     }
     MoreauJeanStepResult r;
