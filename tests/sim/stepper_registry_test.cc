@@ -103,7 +103,9 @@ TEST(StepperRegistry, TheSceneRuleRefusesAnotherNameWithTheRegistrysNames) {
 
 // Each factory runs: the block falls as s = g t^2 / 2, its speed to 1 um/s and
 // its height to 1 um, but SemiExplicitEuler2's to 0.1 mm (first order in the
-// position: at accuracy 1e-8 it lags 12 um more every 0.05 s).
+// position: at accuracy 1e-8 it lags 12 um more every 0.05 s) and
+// MoreauJean's to 0.2 mm (backward Euler's positions at its default theta 1
+// lag g h t / 2: 0.18 mm at 0.15 s with its 0.25 ms step).
 TEST(StepperRegistry, EveryStepperRunsAFreeFall) {
   for (const StepperEntry& s : Steppers()) {
     SCOPED_TRACE(s.name);
@@ -113,7 +115,10 @@ TEST(StepperRegistry, EveryStepperRunsAFreeFall) {
     EXPECT_GT(r.counters.steps_taken, 0);
     EXPECT_TRUE(r.warnings.empty()) << r.warnings.Summary();
     ASSERT_EQ(r.trace.size(), 4u);
-    const double height_error = s.name == std::string("SemiExplicitEuler2") ? 1e-4 : 1e-6;
+    const std::string name = s.name;
+    const double height_error = name == "SemiExplicitEuler2" ? 1e-4
+                                : name == "MoreauJean"       ? 2e-4
+                                                             : 1e-6;
     for (const TraceRow& row : r.trace) {
       EXPECT_NEAR(row.position.z(), 1.0 - 0.5 * kG * row.time * row.time, height_error)
           << row.time;

@@ -70,7 +70,7 @@ struct ContactCounters {
 
 // A point where the moving part meets, or may meet within a step, a fixed
 // part: a unilateral constraint of a nonsmooth stepper (docs/design.md
-// decision 19). Its relative velocity is the moving part's at the point,
+// decision 16). Its relative velocity is the moving part's at the point,
 // v + w x r, read along the normal and two tangents the stepper chooses.
 struct ContactPoint {
   Eigen::Vector3d r = Eigen::Vector3d::Zero();  // moving origin to the point, world, m

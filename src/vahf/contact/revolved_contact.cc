@@ -93,7 +93,7 @@ void RevolvedContact::PassPoints(const Pass& pass, const RigidMotion& m, double 
     };
     // The arcs inside the solid, for the ends of a contact's extent.
     Arc inside[kMaxArcs];
-    int m = -1;
+    int inside_count = -1;
     for (int k = 0; k < n; ++k) {
       const double peak = DeepestAngle(circle, solid, arcs[k], &counters.rim_queries,
                                        &counters.edge_tests);
@@ -103,10 +103,10 @@ void RevolvedContact::PassPoints(const Pass& pass, const RigidMotion& m, double 
       }
       add(peak);
       if (!(points->back().gap < 0)) continue;
-      if (m < 0)
-        m = InsideArcs(circle, solid, inside, &counters.rim_queries,
-                       &counters.edge_tests);
-      for (int j = 0; j < m; ++j)
+      if (inside_count < 0)
+        inside_count = InsideArcs(circle, solid, inside, &counters.rim_queries,
+                                  &counters.edge_tests);
+      for (int j = 0; j < inside_count; ++j)
         if (!inside[j].whole() && inside[j].begin >= arcs[k].begin &&
             inside[j].end <= arcs[k].end)
           add(inside[j].begin), add(inside[j].end);

@@ -72,7 +72,7 @@ class RevolvedContact final : public ContactModel {
   // spaced from its deepest point.
   static constexpr int kCirclePoints = 8;
 
-  // The exact geometry's contact points (docs/design.md decision 19): for
+  // The exact geometry's contact points (docs/design.md decision 16): for
   // every rim arc within `margin` of the other solid, both ways, its deepest
   // point, and where it overlaps the solid the ends of each arc inside it
   // (the extent of the contact, which carries a moment); a whole circle,

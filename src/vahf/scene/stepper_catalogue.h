@@ -11,9 +11,11 @@
 namespace vahf::scene {
 
 // What a stepper steps: a Simbody system (the Simbody driver, sim/trial.cc, steps
-// the stepper's SimTK::Integrator) or the trial model's own right-hand side (the
-// stepper is its own driver).
-enum class StepperNeeds { kSimbodySystem, kOwnRightHandSide };
+// the stepper's SimTK::Integrator), the trial model's own right-hand side (a
+// core the shared driver steps), or, a core too, the contact model's exact
+// contact points (contact::ContactModel::AddContactPoints: a nonsmooth
+// stepper; a scene whose contact model has none is refused).
+enum class StepperNeeds { kSimbodySystem, kOwnRightHandSide, kContactPoints };
 
 struct StepperInfo {
   const char* name;

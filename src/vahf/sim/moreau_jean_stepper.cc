@@ -1,4 +1,4 @@
-// The MoreauJean stepper (scene/steppers.def; docs/design.md decision 19): a
+// The MoreauJean stepper (scene/steppers.def; docs/design.md decision 16): a
 // core of the shared driver (stepper_core.h) that takes fixed steps of
 // Moreau-Jean's nonsmooth time stepping (internal/moreau_jean.h) on the
 // exact contact points of the trial model's contact

@@ -91,8 +91,8 @@ class StepperCore {
   virtual void SetCounters(TrialCounters* counters) = 0;
 };
 
-// A kOwnRightHandSide stepper's factory: its core, started at t = 0 from
-// `start` with rhs under the first decision.
+// A kOwnRightHandSide or kContactPoints stepper's factory: its core, started at t = 0
+// from `start` with rhs under the first decision.
 using CoreFactory = std::unique_ptr<StepperCore> (*)(RightHandSide& rhs,
                                                      const BodyState& start);
 

@@ -21,6 +21,10 @@ template <>
 struct FactoryOf<StepperNeeds::kOwnRightHandSide> {
   using Type = std::remove_pointer_t<CoreFactory>;
 };
+template <>
+struct FactoryOf<StepperNeeds::kContactPoints> {
+  using Type = std::remove_pointer_t<CoreFactory>;
+};
 
 // Every factory scene/steppers.def names, declared with the type its needs
 // name, so no stepper has a header for this file to include. A factory
@@ -39,20 +43,23 @@ namespace {
 
 using namespace internal;  // the factories
 
-// An entry of scene/steppers.def with its factory; what it needs follows from
-// the factory's type, which the declarations above took from the line's needs.
-StepperEntry Entry(const char* name, const char* description, IntegratorFactory factory) {
+// An entry of scene/steppers.def with its factory, whose type the declarations
+// above took from the line's needs.
+StepperEntry Entry(const char* name, const char* description, StepperNeeds,
+                   IntegratorFactory factory) {
   return {name, description, StepperNeeds::kSimbodySystem, factory, nullptr};
 }
 
-StepperEntry Entry(const char* name, const char* description, CoreFactory factory) {
-  return {name, description, StepperNeeds::kOwnRightHandSide, nullptr, factory};
+StepperEntry Entry(const char* name, const char* description, StepperNeeds needs,
+                   CoreFactory factory) {
+  return {name, description, needs, nullptr, factory};
 }
 
 }  // namespace
 
 const std::vector<StepperEntry>& Steppers() {
-#define VAHF_STEPPER(name, needs, factory, description) Entry(name, description, factory),
+#define VAHF_STEPPER(name, needs, factory, description) \
+  Entry(name, description, StepperNeeds::needs, factory),
 #define VAHF_STEPPER_SETTING(key, unit, rule, lo, hi, default_value, meaning)
   static const std::vector<StepperEntry> steppers = {
 #include "vahf/scene/steppers.def"

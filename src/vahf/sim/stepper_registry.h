@@ -41,7 +41,7 @@ struct StepperEntry {
   const char* description;  // one line, for vahf params
   scene::StepperNeeds needs;
   IntegratorFactory make_integrator = nullptr;  // kSimbodySystem
-  CoreFactory make_core = nullptr;              // kOwnRightHandSide
+  CoreFactory make_core = nullptr;              // kOwnRightHandSide, kContactPoints
 };
 
 // Every stepper, in the order of scene/steppers.def.

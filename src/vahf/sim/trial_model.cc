@@ -14,6 +14,7 @@
 #include "vahf/human/fatigue.h"
 #include "vahf/scene/scene_loader.h"
 #include "vahf/sim/phase_seconds.h"
+#include "vahf/sim/stepper_registry.h"
 
 namespace vahf::sim {
 namespace {
@@ -105,21 +106,24 @@ void SetTorqueLaw(const guidance::GuidanceParams& guidance, TrialModel* m) {
   }
 }
 
-// The penetration bound and the contact model of the part against the fixed
-// parts (none when nothing is fixed: no shell, no contact work).
-// The MoreauJean stepper steps on the exact contact points of solids of
-// revolution (docs/design.md decision 19): a contact model that cannot give
-// them (a penalty on sampled points: contact/model "shell" or "sampled", or
-// a pair that is not both revolved) is refused before any trial.
+// A stepper on contact points (MoreauJean) steps on the exact contact of
+// solids of revolution (docs/design.md decision 16): a contact model that
+// cannot give its points (a penalty on sampled points: contact/model "shell"
+// or "sampled", or a pair that is not both revolved) is refused before any
+// trial.
 void RequireContactPoints(const scene::Scene& scene, const scene::Part& part,
                           const TrialModel& m) {
-  if (scene.params.simulation.integrator != "MoreauJean" || !m.contact.model) return;
+  if (FindStepper(scene.params.simulation.integrator).needs !=
+          scene::StepperNeeds::kContactPoints ||
+      !m.contact.model)
+    return;
   contact::ContactCounters scratch;
   std::vector<contact::ContactPoint> points;
   contact::RigidMotion start;
   start.pose = part.initial.Transform();
   if (m.contact.model->AddContactPoints(start, 0.0, scratch, &points)) return;
-  throw InputError(scene.file, "/parameters/simulation/integrator", "MoreauJean",
+  throw InputError(scene.file, "/parameters/simulation/integrator",
+                   scene.params.simulation.integrator,
                    fmt::format("steps on the exact contact of solids of revolution: "
                                "contact/model \"resolving\" with part '{}' and every "
                                "fixed part it meets revolved (here contact/model is "
@@ -127,6 +131,8 @@ void RequireContactPoints(const scene::Scene& scene, const scene::Part& part,
                                part.name, scene.params.contact.model));
 }
 
+// The penetration bound and the contact model of the part against the fixed
+// parts (none when nothing is fixed: no shell, no contact work).
 void SetContact(const scene::Scene& scene, const scene::Part& part,
                 const std::vector<FixedPart>& fixed, TrialModel* m) {
   const auto& params = scene.params;

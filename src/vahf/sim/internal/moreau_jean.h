@@ -1,5 +1,5 @@
 // One step of Moreau-Jean's nonsmooth time stepping for the free moving body
-// (docs/design.md decision 19; docs/physics.md, "Nonsmooth stepping"):
+// (docs/design.md decision 16; docs/physics.md, "Nonsmooth stepping"):
 // M. Jean, Comput. Methods Appl. Mech. Engrg. 177 (1999) 235-257; V. Acary
 // and B. Brogliato, Numerical Methods for Nonsmooth Dynamical Systems (2008).
 // Velocities u = (v_c, w), the centre of mass's velocity and the
