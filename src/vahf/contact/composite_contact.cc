@@ -1,6 +1,8 @@
 #include "vahf/contact/composite_contact.h"
 
 #include <algorithm>
+#include <memory>
+#include <vector>
 
 namespace vahf::contact {
 
@@ -37,30 +39,39 @@ bool CompositeContact::AddContactPoints(const RigidMotion& m, double margin,
   return true;
 }
 
+namespace {
+
+// The parts' loads `of` each gives (its Jacobian zeroed first), summed in
+// order.
+template <typename Of>
+ContactForces SumOf(const std::vector<std::shared_ptr<const ContactModel>>& parts,
+                    ContactJacobian* jacobian, Of of) {
+  ContactForces out;
+  ContactJacobian part_jacobian;
+  for (const auto& part : parts) {
+    if (jacobian) part_jacobian = ContactJacobian{};
+    Add(of(*part, jacobian ? &part_jacobian : nullptr), &part_jacobian, &out, jacobian);
+  }
+  return out;
+}
+
+}  // namespace
+
 ContactForces CompositeContact::SmoothLoads(const RigidMotion& m,
                                             ContactCounters& counters,
                                             ContactJacobian* jacobian) const {
-  ContactForces out;
-  ContactJacobian part_jacobian;
-  for (const auto& part : parts_) {
-    if (jacobian) part_jacobian = ContactJacobian{};
-    const ContactForces f =
-        part->SmoothLoads(m, counters, jacobian ? &part_jacobian : nullptr);
-    Add(f, &part_jacobian, &out, jacobian);
-  }
-  return out;
+  return SumOf(parts_, jacobian, [&](const ContactModel& part, ContactJacobian* j) {
+    return part.SmoothLoads(m, counters, j);
+  });
 }
 
 ContactForces CompositeContact::DoEvaluate(const RigidMotion& m,
                                            ContactCounters& counters,
                                            ContactJacobian* jacobian) const {
-  ContactForces out;
-  ContactJacobian part_jacobian;
-  for (const auto& part : parts_) {
-    const ContactForces f =
-        part->Evaluate(m, &counters, jacobian ? &part_jacobian : nullptr);
-    Add(f, &part_jacobian, &out, jacobian);
-  }
+  const ContactForces out =
+      SumOf(parts_, jacobian, [&](const ContactModel& part, ContactJacobian* j) {
+        return part.Evaluate(m, &counters, j);
+      });
   if (!parts_.empty())
     counters.evaluations -= parts_.size() - 1;  // one evaluation of the whole
   return out;
