@@ -54,9 +54,10 @@ namespace {
 // of m x n on one thread while m n < 9216 (interface/gemv.c: 2304 times
 // GEMM_MULTITHREAD_THRESHOLD, 4) and a dgetrf while m n < 10000
 // (interface/lapack/getrf.c), so up to 93 rows (31 contacts) every dense
-// product and factorisation has the bits of one thread. Larger problems go
-// as 3 x 3 blocks, whose products are Siconos' own.
-constexpr Eigen::Index kLargestDense = 93;
+// product and factorisation has the bits of one thread
+// (kLargestDenseContacts). Larger problems go as 3 x 3 blocks, whose
+// products are Siconos' own.
+constexpr Eigen::Index kLargestDense = 3 * kLargestDenseContacts;
 
 // Siconos' messages are at most this long (numerics_error's buffer).
 constexpr std::size_t kMessageSize = 2048;

@@ -143,12 +143,12 @@ MoreauJeanStepResult MoreauJeanStep(const BodyInertia& body, const BodyState& y,
     Eigen::VectorXd U(q.size());
     out.solve = SolveFrictionalContact(W, q, mu, settings.solver, &out.reactions, &U);
     u_plus += X * out.reactions;
+    // The impulses along H's directions (its rows' first three columns).
     for (std::size_t i = 0; i < points.size(); ++i) {
       const Eigen::Vector3d P = out.reactions.segment<3>(3 * i);
-      Vector3d t1, t2;
-      TangentBasis(points[i].normal, &t1, &t2);
-      out.normal_impulse += P[0] * points[i].normal;
-      out.friction_impulse += P[1] * t1 + P[2] * t2;
+      const auto d = H.block<3, 3>(3 * i, 0);
+      out.normal_impulse += P[0] * d.row(0).transpose();
+      out.friction_impulse += P[1] * d.row(1).transpose() + P[2] * d.row(2).transpose();
       if (P[0] > 0) ++out.loaded_points;
     }
   }

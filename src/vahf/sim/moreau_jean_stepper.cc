@@ -40,14 +40,12 @@ namespace stepper_settings = scene::stepper_settings;
 // stepping"): a point that can close its gap within the step is a candidate.
 constexpr double kMarginTravel = 1.5;
 
-// The most contact points one step's problem takes: 31, the largest problem
-// the solver takes dense, where its products and factorisations are
-// OpenBLAS's on one thread whatever its thread count (frictional_contact.cc);
-// larger ones went to Siconos' sparse path, ten times slower (7.6 against
-// 0.66 ms a problem on the piston rod's). Beyond it the points with the
-// largest gaps are left out, the least likely to close within the step; the
-// driver's depth checks still see every contact.
-constexpr std::size_t kMaxPoints = 31;
+// The most contact points one step's problem takes: the largest problem the
+// solver takes dense (kLargestDenseContacts); its sparse path was ten times
+// slower (7.6 against 0.66 ms a problem on the piston rod's). Beyond it the
+// points with the largest gaps are left out, the least likely to close
+// within the step; the driver's depth checks still see every contact.
+constexpr std::size_t kMaxPoints = kLargestDenseContacts;
 
 // Keeps the kMaxPoints points of least gap, in their order (ties: the
 // earlier first).

@@ -22,6 +22,12 @@
 
 namespace vahf::sim::internal {
 
+// The most contacts a problem may have to be solved dense, where OpenBLAS
+// runs every product and factorisation on one thread whatever its thread
+// count (frictional_contact.cc): 31, 93 rows. Larger problems go to Siconos'
+// sparse path, about ten times slower.
+inline constexpr int kLargestDenseContacts = 31;
+
 struct FrictionalContactOptions {
   // Siconos' proximal point method (fc3d_proximal.c: Alart and Curnier's
   // nonsmooth Newton method on a proximal regularisation of the problem,
