@@ -144,8 +144,7 @@ struct BodyProblem {
   VectorXd q, mu;
 };
 
-BodyProblem ThirtyContacts(double mu_offset = 0) {
-  const int n = 30;
+BodyProblem ThirtyContacts(double mu_offset = 0, int n = 30) {
   const double m = 0.005, inertia_xy = 1.3e-7, inertia_z = 2.5e-7;  // kg, kg m^2
   MatrixXd J(3 * n, 6);
   for (int i = 0; i < n; ++i) {
@@ -197,12 +196,13 @@ void ExpectSolves(const BodyProblem& b, const Solution& s) {
   const VectorXd R = scale * s.R;
   const double size = std::max({b.q.norm(), R.norm(), s.U.norm()});
   const double r = s.result.error * size;
-  // U against W R + q summed here in another order: each sum of 91 terms is
-  // within gamma_91 = 91 u / (1 - 91 u) of its terms' absolute sum, u the
+  // U against W R + q summed here in another order: each sum of n + 1 terms (n its rows)
+  // is within gamma_(n+1) = (n + 1) u / (1 - (n + 1) u) of its terms' absolute sum, u the
   // unit roundoff (N. J. Higham, Accuracy and Stability of Numerical
   // Algorithms, 2nd ed. (2002), Sec. 3.1).
+  const double terms_in_sum = static_cast<double>(b.W.cols() + 1);
   const double u = std::numeric_limits<double>::epsilon() / 2,
-               gamma = 91 * u / (1 - 91 * u);
+               gamma = terms_in_sum * u / (1 - terms_in_sum * u);
   const VectorXd terms = b.W.cwiseAbs() * s.R.cwiseAbs() + b.q.cwiseAbs();
   EXPECT_TRUE(
       ((s.U - (b.W * s.R + b.q)).cwiseAbs().array() <= 2 * gamma * terms.array()).all());
@@ -223,6 +223,21 @@ TEST(FrictionalContact, ThirtyContactsMeetTheConditions) {
   ASSERT_TRUE(s.result.converged) << s.result.detail;
   EXPECT_LE(s.result.error, FrictionalContactOptions{}.tolerance);
   ExpectSolves(b, s);
+}
+
+// The other paths: Gauss-Seidel (NSGS, on 3 x 3 blocks), and the proximal
+// point method past the dense limit (40 contacts, on 3 x 3 blocks).
+TEST(FrictionalContact, GaussSeidelAndTheSparsePathMeetTheConditions) {
+  const BodyProblem b = ThirtyContacts();
+  FrictionalContactOptions gauss_seidel;
+  gauss_seidel.method = FrictionalContactOptions::kGaussSeidel;
+  const Solution s = Solve(b.W, b.q, b.mu, gauss_seidel);
+  ASSERT_TRUE(s.result.converged) << s.result.detail;
+  ExpectSolves(b, s);
+  const BodyProblem large = ThirtyContacts(0, kLargestDenseContacts + 9);
+  const Solution sparse = Solve(large.W, large.q, large.mu);
+  ASSERT_TRUE(sparse.result.converged) << sparse.result.detail;
+  ExpectSolves(large, sparse);
 }
 
 TEST(FrictionalContact, WarmStartFromTheSolutionTakesAtMostTwoSweeps) {
