@@ -3,8 +3,10 @@
 // computed exactly at each step: Coulomb's law on an incline (stick below
 // arctan(mu), a = g (sin a - mu cos a) above), no creep inside the friction
 // cone, Newton's impact law (a dropped ball rises to e^2 H, first order in
-// the step), a ring pressed flat that turns at the torque mu F R, and the
-// order of convergence of the theta-method on a smooth motion.
+// the step), a ring pressed flat that turns at the torque mu F R, a peg in
+// two-point contact that slides inside Whitney's jamming diagram and sticks
+// outside it, and the order of convergence of the theta-method on a smooth
+// motion.
 #include "vahf/sim/internal/moreau_jean.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace vahf::sim::internal {
@@ -189,6 +192,109 @@ double RingTurn(double torque_fraction) {
 TEST(MoreauJean, ARingPressedFlatTurnsAtMuFRWithinOnePercent) {
   EXPECT_LT(RingTurn(0.99), 1e-9);
   EXPECT_GT(RingTurn(1.01), 1e-4);
+}
+
+// Whitney's jamming diagram (D. E. Whitney, "Quasi-static assembly of
+// compliantly supported rigid parts", J. Dyn. Syst. Meas. Control 104
+// (1982) 65-77): a peg of radius r inserted l deep into its hole, tilted
+// against it so that it touches at two points, the hole's edge against the
+// peg's side (normal +x on the peg, l above the tip) and the peg's tip
+// corner against the far wall (normal -x), both under friction mu. Pushed in
+// by f with a side force F_x at the tip and a moment M about it (x right, z
+// up, M counterclockwise), the peg is jammed where the two contacts can hold
+// that load inside their friction cones, and slides where they cannot: the
+// diagram is that set in the plane of (F_x / f, M / (r f)), a parallelogram
+// for l > 2 mu r. Its edges here come from the same two-point statics as
+// Whitney's equations (1982, Sec. 3), solved by the test directly: with the
+// tangential forces T1 = f/2 - d, T2 = f/2 + d (their sum holds f), the
+// moment about the tip gives N1 = (M + 2 r d) / l and the side forces
+// N2 = F_x + N1, and the load is held if some d puts both contacts inside
+// their cones.
+struct TwoPointPeg {
+  double r = 0.01, l = 0.05, mu = 0.2, f = 10;
+  // +1: the hole's edge on the peg's left (-x), the tip on the far (+x)
+  // wall; -1: its mirror image, tilted the other way.
+  double side = 1;
+
+  // Whether the two contacts can hold the load (the peg tilted as `side`
+  // says; the mirror image holds the mirrored load).
+  bool Held(double fx, double m) const {
+    fx *= side, m *= side;
+    // Each condition is linear in d: a + b d >= 0; the d where all hold.
+    double lo = -1e300, hi = 1e300;
+    const auto need = [&](double a, double b) {
+      if (b > 0)
+        lo = std::max(lo, -a / b);
+      else if (b < 0)
+        hi = std::min(hi, -a / b);
+      else if (a < 0)
+        lo = 1e300;
+    };
+    // N1 = (m + 2 r d) / l = n0 + n1 d; N2 = fx + N1.
+    const double n0 = m / l, n1 = 2 * r / l;
+    need(n0, n1);                               // N1 >= 0
+    need(fx + n0, n1);                          // N2 >= 0
+    need(mu * n0 - f / 2, mu * n1 + 1);         // T1 <= mu N1
+    need(mu * n0 + f / 2, mu * n1 - 1);         // -T1 <= mu N1
+    need(mu * (fx + n0) - f / 2, mu * n1 - 1);  // T2 <= mu N2
+    need(mu * (fx + n0) + f / 2, mu * n1 + 1);  // -T2 <= mu N2
+    return lo <= hi;
+  }
+
+  // The speed of the peg, at rest, after one Moreau-Jean step under the load.
+  double SpeedAfterAStep(double fx, double m) const {
+    BodyInertia body;
+    body.mass = 0.1;
+    body.com = {0, 0, 0.05};
+    body.inertia_body = Eigen::Vector3d(1e-4, 1e-4, 5e-6).asDiagonal();
+    const std::vector<contact::ContactPoint> points = {
+        {{-side * r, 0, l}, side * Vector3d::UnitX(), 0.0, mu},
+        {{side * r, 0, 0}, -side * Vector3d::UnitX(), 0.0, mu},
+    };
+    SmoothLoads loads;
+    loads.force = {fx, 0, -f};
+    loads.torque = {0, -m, 0};  // counterclockwise in (x, z) is about -y
+    const MoreauJeanStepResult step = MoreauJeanStep(
+        body, AtRest(Vector3d::Zero()), 1e-3, loads, Vector3d::Zero(), points, {});
+    EXPECT_TRUE(step.solve.converged) << step.solve.detail;
+    return step.y.tail<6>().norm();
+  }
+
+  // How far along the load (fx, m), as a multiple of it, the diagram's edge
+  // lies, by bisection from its inside (no load but the push, where the peg
+  // slides: l > 2 mu r); 0 when the ray meets no edge within 1000 times.
+  double Edge(double fx, double m) const {
+    double in = 0, out = 1;
+    while (!Held(out * fx, out * m))
+      if ((out *= 2) > 1000) return 0;
+    for (int k = 0; k < 60; ++k) {
+      const double mid = 0.5 * (in + out);
+      (Held(mid * fx, mid * m) ? out : in) = mid;
+    }
+    return 0.5 * (in + out);
+  }
+};
+
+TEST(MoreauJean, APegInTwoPointContactSlidesInsideWhitneysJammingDiagram) {
+  // Two opposite edges of the diagram: the peg tilted one way and the other.
+  // Each is crossed twice, by a side force alone and by a moment alone.
+  for (double side : {1.0, -1.0}) {
+    TwoPointPeg peg;
+    peg.side = side;
+    ASSERT_GT(peg.l, 2 * peg.mu * peg.r);
+    ASSERT_FALSE(peg.Held(0, 0));  // pushed straight in, it slides
+    for (const auto& [fx, m] :
+         {std::pair{side * peg.f, 0.0}, std::pair{0.0, side * peg.r * peg.f}}) {
+      const double s = peg.Edge(fx, m);
+      ASSERT_GT(s, 0) << "side " << side << ", load (" << fx << ", " << m << ")";
+      // 5 % inside the edge the peg slides; 5 % outside it is jammed: it does
+      // not move at all.
+      EXPECT_GT(peg.SpeedAfterAStep(0.95 * s * fx, 0.95 * s * m), 1e-4)
+          << "side " << side << ", load (" << fx << ", " << m << ") x " << s;
+      EXPECT_LT(peg.SpeedAfterAStep(1.05 * s * fx, 1.05 * s * m), 1e-9)
+          << "side " << side << ", load (" << fx << ", " << m << ") x " << s;
+    }
+  }
 }
 
 // A smooth motion: a free body on a spring k x (no contact), the load's
