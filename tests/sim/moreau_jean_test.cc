@@ -254,8 +254,8 @@ struct TwoPointPeg {
     SmoothLoads loads;
     loads.force = {fx, 0, -f};
     loads.torque = {0, -m, 0};  // counterclockwise in (x, z) is about -y
-    const MoreauJeanStepResult step = MoreauJeanStep(
-        body, AtRest(Vector3d::Zero()), 1e-3, loads, Vector3d::Zero(), points, {});
+    const MoreauJeanStepResult step = MoreauJeanStep(body, AtRest(Vector3d::Zero()), 1e-3,
+                                                     loads, Vector3d::Zero(), points, {});
     EXPECT_TRUE(step.solve.converged) << step.solve.detail;
     return step.y.tail<6>().norm();
   }
