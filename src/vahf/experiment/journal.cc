@@ -108,7 +108,12 @@ Journal::Journal(std::string directory, const nlohmann::json& identity, bool res
     fs::remove_all(directory_, error);
     fs::create_directories(directory_, error);
     if (error) Refused("create", directory_, error.value());
+    // identity.json and the journal's folder entry are on disk before any
+    // record counts as kept.
     WriteFileAtomically(identity_path, identity.dump(1) + "\n");
+    const fs::path parent = fs::path(directory_).parent_path();
+    error = SyncDirectory(parent.empty() ? "." : parent.string());
+    if (error) Refused("sync the folder of", directory_, error.value());
     return;
   }
   if (!fs::is_regular_file(identity_path, error))
@@ -150,7 +155,11 @@ std::unique_ptr<Journal::Batch> Journal::Begin(std::size_t indices,
   batch->fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (batch->fd_ < 0) Refused("open", path, errno);
   if (::ftruncate(batch->fd_, static_cast<off_t>(good)) != 0) Refused("cut", path, errno);
-  if (good == 0) batch->Append(header);
+  if (good == 0) {
+    batch->Append(header);
+    const std::error_code synced = SyncDirectory(directory_);  // the new file's name
+    if (synced) Refused("sync", directory_, synced.value());
+  }
   return batch;
 }
 
@@ -181,9 +190,13 @@ void Journal::Batch::Append(const std::string& record) {
   while (done < record.size()) {
     const ssize_t n = ::write(fd_, record.data() + done, record.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) Refused("write", path_, errno);
+    if (n <= 0) Refused("write", path_, n < 0 ? errno : EIO);
     done += static_cast<std::size_t>(n);
   }
+  // On disk before the record counts as kept (about 0.5 ms, against a
+  // cycle's 600 ms).
+  while (::fdatasync(fd_) != 0)
+    if (errno != EINTR) Refused("sync", path_, errno);
 }
 
 }  // namespace vahf::experiment

@@ -96,6 +96,10 @@ OutputDirectory::OutputDirectory(const std::string& path, bool resume)
   if (ec) Fail(staging_, "cannot remove the staging directory of an earlier run", ec);
   fs::create_directory(staging_, ec);
   if (ec) Fail(staging_, "cannot create the staging directory", ec);
+  // Its name is on disk before the journal inside it keeps anything.
+  if (const std::error_code synced =
+          SyncDirectory(parent.empty() ? "." : parent.string()))
+    Fail(parent.string(), "cannot sync the folder to disk", synced);
 }
 
 OutputDirectory::~OutputDirectory() {
@@ -182,6 +186,11 @@ void OutputDirectory::Commit() {
   }
   committed_ = true;
   if (had_old) fs::remove_all(old, ec);  // leftovers are harmless: removed next time
+  // The rename is on disk before the run counts as finished.
+  const fs::path parent = fs::path(path_).parent_path();
+  if (const std::error_code synced =
+          SyncDirectory(parent.empty() ? "." : parent.string()))
+    Fail(parent.string(), "cannot sync the folder to disk", synced);
 }
 
 }  // namespace vahf::report

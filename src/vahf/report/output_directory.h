@@ -65,8 +65,8 @@ class OutputDirectory {
 
   // Removes the journal, then replaces PATH by the staged directory: renames
   // PATH to PATH.old (removing a stale one), renames PATH.partial to PATH,
-  // then removes PATH.old. If the second rename fails, PATH.old is renamed
-  // back. Once only.
+  // then removes PATH.old and syncs PATH's folder to disk. If the second
+  // rename fails, PATH.old is renamed back. Once only.
   void Commit();
   bool committed() const { return committed_; }
 
