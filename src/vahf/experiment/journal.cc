@@ -126,6 +126,25 @@ Journal::Journal(std::string directory, const nlohmann::json& identity, bool res
 
 Journal::~Journal() = default;
 
+bool Journal::HoldsResults(const std::string& directory) {
+  std::error_code error;
+  for (fs::directory_iterator it(directory, error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind("batch-", 0) != 0 || it->path().extension() != ".log") continue;
+    const std::string text = ReadAll(it->path().string());
+    std::size_t pos = text.find('\n');
+    if (pos == std::string::npos ||
+        text.compare(0, std::strlen(kBatchFormat), kBatchFormat) != 0)
+      continue;
+    ++pos;
+    std::size_t index = 0;
+    std::string bytes;
+    if (ReadRecord(text, &pos, &index, &bytes)) return true;
+  }
+  return false;
+}
+
 std::unique_ptr<Journal::Batch> Journal::Begin(std::size_t indices,
                                                const std::string& label) {
   const std::string path =

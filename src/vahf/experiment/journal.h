@@ -50,6 +50,12 @@ class Journal {
   Journal(const Journal&) = delete;
   Journal& operator=(const Journal&) = delete;
 
+  // Whether `directory` holds a journal with finished work: a batch file
+  // with at least one whole record that checks. A journal killed before its
+  // first result (no batch file, a header alone, a torn first record) holds
+  // none: nothing is lost by starting afresh.
+  static bool HoldsResults(const std::string& directory);
+
   // The run's next batch of `indices` indices, its label for the header. On
   // resume, its entries are read back (a header for another number of
   // indices is an InputError: the run is not the one journaled).
