@@ -1,13 +1,15 @@
 // The run journal: records stored from several threads read back exactly on
 // resume, batch by batch; a torn or zeroed tail is cut and counted, and what
 // is stored after it reads back; a resume of another run (identity) or of a
-// batch of another size is an InputError naming the file; a fresh journal
+// batch of another size is an InputError naming the file; a file cut at
+// any byte reads back its whole records; a fresh journal
 // forgets the old one. RunIndexed with a journal runs only the indices it
 // lacks, with the same results.
 #include "vahf/experiment/journal.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstring>
 #include <filesystem>
@@ -119,6 +121,60 @@ TEST_F(JournalTest, ARecordWhoseBytesChangedIsNotRead) {
   Journal j(dir_, identity_, true);
   EXPECT_FALSE(j.Begin(1, "a")->Find(0));
   EXPECT_EQ(j.torn(), 1);
+}
+
+// A process killed at any instant leaves a batch file cut at a record's end
+// (each record is one write()); a full disk or a power loss may cut it
+// anywhere. Cut at every byte, the file reads back exactly its whole
+// records (HoldsResults from the first), and once the rest are stored it
+// reads back whole.
+TEST_F(JournalTest, ACutAtEveryByteReadsBackItsWholeRecords) {
+  constexpr std::size_t kIndices = 4;
+  {
+    Journal j(dir_, identity_, false);
+    auto a = j.Begin(kIndices, "a");
+    for (std::size_t i = 0; i < kIndices; ++i) a->Store(i, Bytes(i + 5));
+  }
+  std::string text;
+  {
+    std::ifstream in(Log(0), std::ios::binary);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  // Where each record ends: the header line, then "entry I N SHA\n" N bytes "\n".
+  std::vector<std::size_t> ends;
+  for (std::size_t pos = text.find('\n') + 1; pos < text.size();) {
+    const std::size_t line_end = text.find('\n', pos);
+    const std::size_t length = Bytes(ends.size() + 5).size();
+    pos = line_end + 1 + length + 1;
+    ends.push_back(pos);
+  }
+  ASSERT_EQ(ends.size(), kIndices);
+  ASSERT_EQ(ends.back(), text.size());
+  for (std::size_t cut = 0; cut <= text.size(); ++cut) {
+    SCOPED_TRACE("cut at byte " + std::to_string(cut) + " of " +
+                 std::to_string(text.size()));
+    std::ofstream(Log(0), std::ios::binary | std::ios::trunc) << text.substr(0, cut);
+    const std::size_t whole = static_cast<std::size_t>(
+        std::count_if(ends.begin(), ends.end(), [&](std::size_t e) { return e <= cut; }));
+    EXPECT_EQ(Journal::HoldsResults(dir_), whole > 0);  // else --resume starts afresh
+    {
+      Journal j(dir_, identity_, true);
+      auto a = j.Begin(kIndices, "a");
+      for (std::size_t i = 0; i < kIndices; ++i) {
+        const auto bytes = a->Find(i);
+        ASSERT_EQ(bytes.has_value(), i < whole) << i;
+        if (bytes) {
+          EXPECT_EQ(*bytes, Bytes(i + 5)) << i;
+        } else {
+          a->Store(i, Bytes(i + 5));
+        }
+      }
+    }
+    Journal j(dir_, identity_, true);
+    auto a = j.Begin(kIndices, "a");
+    for (std::size_t i = 0; i < kIndices; ++i) ASSERT_EQ(a->Find(i), Bytes(i + 5)) << i;
+    EXPECT_EQ(j.torn(), 0);
+  }
 }
 
 // Of the inputs, the one file whose digest changed is named, as a JSON

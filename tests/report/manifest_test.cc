@@ -3,7 +3,8 @@
 // result and not with fields outside the results (threads); the parameters
 // object read back as a scene's "parameters" reproduces every value; the
 // manifest reads back as `vahf verify` reads it, and a manifest it cannot use
-// is refused with the pointer and the rule.
+// is refused with the pointer and the rule; a manifest records the run of
+// the same identity only (RecordsRun, for --resume).
 #include "vahf/report/manifest.h"
 
 #include <gtest/gtest.h>
@@ -195,6 +196,43 @@ TEST(ReadManifest, RefusesWhatVerifyCannotUse) {
       EXPECT_NE(e.rule().find(c.rule), std::string::npos) << c.name << ": " << e.what();
     }
   }
+}
+
+// A finished run's manifest records the run whose RunIdentity (of the same
+// files, read back) has its invocation, build and input digests; any one
+// of them different, or JSON that is not a manifest, does not.
+TEST(RecordsRun, MatchesTheSameRunOnly) {
+  const std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) / "records_run_test";
+  std::filesystem::create_directories(dir);
+  const std::string experiment = (dir / "e.json").string();
+  const std::string scene = (dir / "s.json").string();
+  const std::string table = (dir / "t.csv").string();
+  std::ofstream(experiment) << "experiment";
+  std::ofstream(scene) << "scene";
+  std::ofstream(table) << "table";
+  ManifestFields f = Fields(1);
+  f.invocation = {experiment, "", 7, 0};
+  f.experiment = DescribeInputFile(experiment);
+  f.scene = DescribeInputFile(scene);
+  nlohmann::json manifest = ManifestJson(f);
+  manifest["inputs"] = {{{"path", table}, {"sha256", Sha256Hex("table")}}};
+  const nlohmann::json identity = RunIdentity(f.invocation, {experiment, scene, table});
+  EXPECT_TRUE(RecordsRun(manifest, identity));
+  EXPECT_TRUE(RecordsRun(manifest, RunIdentity(f.invocation, {experiment})));
+
+  EXPECT_FALSE(RecordsRun(manifest, RunIdentity({experiment, "", 8, 0}, {experiment})));
+  EXPECT_FALSE(RecordsRun(manifest, RunIdentity({experiment, "", 7, 3}, {experiment})));
+  nlohmann::json other_build = manifest;
+  other_build["build"]["compiler_version"] = "99.1";
+  EXPECT_FALSE(RecordsRun(other_build, identity));
+  std::ofstream(table) << "table, edited";
+  EXPECT_FALSE(RecordsRun(manifest, RunIdentity(f.invocation, {experiment, table})));
+  std::ofstream(scene) << "scene, edited";
+  EXPECT_FALSE(RecordsRun(manifest, RunIdentity(f.invocation, {scene})));
+  EXPECT_FALSE(RecordsRun(nlohmann::json::array(), identity));
+  EXPECT_FALSE(RecordsRun(nlohmann::json{{"invocation", 1}}, identity));
+  std::filesystem::remove_all(dir);
 }
 
 TEST(BuildDifferences, NamesEachFieldAndLibraryThatDiffers) {

@@ -2,7 +2,8 @@
 // PATH while staging or after an abandoned run; a previous output is replaced
 // entirely; folders that are not vahf outputs are never replaced; errors name
 // the path and the operating system's reason; a journal with finished work
-// outlives a stopped run, for --resume.
+// outlives a stopped run, for --resume; --resume with nothing journaled
+// starts afresh, and refuses the finished output of the same run.
 #include "vahf/report/output_directory.h"
 
 #include <gtest/gtest.h>
@@ -108,20 +109,94 @@ TEST_F(OutputDirectoryTest, AJournalWithFinishedWorkOutlivesAStoppedRun) {
   EXPECT_FALSE(fs::exists(path + ".partial"));
 }
 
-TEST_F(OutputDirectoryTest, AJournalWithoutWorkLeavesNothingAndCannotBeResumed) {
+// --resume with nothing journaled yet (no staging directory; a run killed
+// before its first result, with an empty, header-only or torn journal)
+// starts afresh, saying why; the journal it opens is new.
+TEST_F(OutputDirectoryTest, AResumeWithNothingJournaledStartsAfresh) {
   const std::string path = Under("run");
+  const nlohmann::json identity = {{"seed", 1}};
   {
     OutputDirectory out(path);
-    out.OpenJournal({{"seed", 1}}).Begin(2, "cycles");
+    out.OpenJournal(identity).Begin(2, "cycles");
+    EXPECT_EQ(out.afresh_reason(), "");
   }
-  EXPECT_FALSE(fs::exists(path + ".partial"));
+  EXPECT_FALSE(fs::exists(path + ".partial"));  // a journal without work leaves nothing
+  {
+    OutputDirectory out(path, true);
+    EXPECT_EQ(out.afresh_reason(), "there is no " + path + ".partial");
+    auto batch = out.OpenJournal(identity).Begin(2, "cycles");
+    EXPECT_FALSE(batch->Find(0));
+    batch->Store(0, "cycle zero");
+  }  // stopped with finished work: kept
+  const fs::path log = path + ".partial/journal/batch-0.log";
+  const std::string whole = Read(log);
+  const std::size_t header = whole.find('\n') + 1;
+  // What a kill before the first result leaves, and a torn first record.
+  for (const std::size_t cut : {std::size_t{0}, header / 2, header, header + 7}) {
+    SCOPED_TRACE("batch file cut to " + std::to_string(cut) + " bytes");
+    fs::resize_file(log, cut);
+    OutputDirectory out(path, true);
+    EXPECT_EQ(out.afresh_reason(), path + ".partial holds no finished result");
+    EXPECT_FALSE(fs::exists(log));  // the staging directory is new
+    auto batch = out.OpenJournal(identity).Begin(2, "cycles");
+    EXPECT_FALSE(batch->Find(0));
+    batch->Store(0, "cycle zero");
+    EXPECT_EQ(Read(log), whole);
+  }
+  // A staging directory without a journal, and a journal without batches.
+  fs::remove_all(path + ".partial/journal/batch-0.log");
+  { EXPECT_NE(OutputDirectory(path, true).afresh_reason(), ""); }
+  fs::create_directories(path + ".partial");
+  { EXPECT_NE(OutputDirectory(path, true).afresh_reason(), ""); }
+  // With finished work, the journal is continued instead.
+  {
+    OutputDirectory out(path);
+    out.OpenJournal(identity).Begin(2, "cycles")->Store(1, "cycle one");
+  }
+  OutputDirectory out(path, true);
+  EXPECT_EQ(out.afresh_reason(), "");
+  EXPECT_EQ(*out.OpenJournal(identity).Begin(2, "cycles")->Find(1), "cycle one");
+}
+
+// --resume onto the finished output of the same run (its manifest records
+// the same invocation, build and inputs: RecordsRun) is refused, naming the
+// manifest; the output stays. Another run's finished output is replaced,
+// as a run without --resume would replace it.
+TEST_F(OutputDirectoryTest, AResumeOfAFinishedRunIsRefused) {
+  const std::string path = Under("run");
+  const nlohmann::json identity = {{"invocation", {{"seed", 1}}},
+                                   {"build", {{"version", "1"}}},
+                                   {"inputs", {{"e.json", "aa"}}}};
+  nlohmann::json manifest = identity;
+  manifest.erase("inputs");
+  manifest["experiment"] = {{"path", "e.json"}, {"sha256", "aa"}};
+  manifest["results_digest"] = "5d60";
+  {
+    OutputDirectory out(path);
+    out.OpenJournal(identity).Begin(1, "cycles")->Store(0, "cycle zero");
+    out.Write(OutputDirectory::kMarkerFile, manifest.dump());
+    out.Commit();
+  }
   try {
     OutputDirectory out(path, true);
-    ADD_FAILURE() << "resumed nothing";
+    out.OpenJournal(identity);
+    ADD_FAILURE() << "a finished run was resumed";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), path + ".partial");
+    EXPECT_EQ(e.file(), path + "/manifest.json");
+    EXPECT_EQ(e.where(), "/results_digest");
+    EXPECT_EQ(e.value(), "\"5d60\"");
     EXPECT_NE(e.rule().find("there is nothing to resume"), std::string::npos);
   }
+  EXPECT_EQ(Read(fs::path(path) / "manifest.json"), manifest.dump());
+  EXPECT_FALSE(fs::exists(path + ".partial"));
+  nlohmann::json other = identity;
+  other["inputs"]["e.json"] = "bb";  // the experiment changed since
+  OutputDirectory out(path, true);
+  out.OpenJournal(other);
+  EXPECT_NE(out.afresh_reason(), "");
+  out.Write(OutputDirectory::kMarkerFile, "{}");
+  out.Commit();
+  EXPECT_EQ(Read(fs::path(path) / "manifest.json"), "{}");
 }
 
 TEST_F(OutputDirectoryTest, APreviousOutputIsReplacedWhole) {

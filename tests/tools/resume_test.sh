@@ -4,9 +4,11 @@
 # work) and resumed end with the results digest of an uninterrupted run, and
 # run only what was missing; a run stopped by SIGINT resumes too; a journal
 # whose last record was torn (as by a power loss) resumes to the same digest;
-# --resume of another command (another seed) or after a lab table changed,
-# --resume with nothing to resume, and a fresh run onto a stopped run's
-# journal exit 2 with one line.
+# --resume with nothing journaled yet (no output directory; a run killed
+# before its first result) starts afresh, saying so on one line, and ends
+# with the uninterrupted digest; --resume of another command (another seed)
+# or after a lab table changed, --resume of a finished run, and a fresh run
+# onto a stopped run's journal exit 2 with one line.
 #
 # Usage: resume_test.sh VAHF_EXECUTABLE REPO_ROOT
 set -uo pipefail
@@ -75,11 +77,83 @@ else
   fail "--resume after SIGKILL: a journal or staging directory was left"
 fi
 
-# --- nothing to resume.
-run run "$table1" --trials 6 --out "$tmp/never" --resume
-expect_status "--resume with nothing to resume" 2
-expect_lines "--resume with nothing to resume" "$err" 1
-expect_in "--resume with nothing to resume" "$err" "there is nothing to resume"
+# --- --resume with nothing journaled yet starts afresh, saying why on one
+# line, and ends with the uninterrupted run's digest. Table 1 with 2 cycles.
+run run "$table1" --trials 2 --out "$tmp/small"
+expect_status "run table1 --trials 2" 0
+small=$(digest "$tmp/small")
+# expect_afresh NAME OUT REASON: the last run started afresh, for REASON,
+# said so on one line (beside the progress lines a slow machine prints),
+# and ended as the uninterrupted run.
+expect_afresh() {
+  expect_status "$1" 0
+  if [[ $(grep -c '^vahf:' "$err") -eq 1 ]]; then
+    pass "$1: one line of stderr from vahf"
+  else
+    fail "$1: $(grep -c '^vahf:' "$err") lines of stderr from vahf, want 1"
+  fi
+  expect_in "$1" "$err" "vahf: $2: nothing journaled to resume ($3): the run starts afresh"
+  if [[ "$(digest "$2")" == "$small" && -n "$small" && ! -e "$2.partial" ]]; then
+    pass "$1: the uninterrupted run's results digest"
+  else
+    fail "$1: digest $(digest "$2"), want $small"
+  fi
+}
+run run "$table1" --trials 2 --out "$tmp/never" --resume
+expect_afresh "--resume with no output directory" "$tmp/never" "there is no $tmp/never.partial"
+# What a kill before the first result leaves: from a run killed once its
+# batch file appears (cut back to its header, wherever the kill fell), a
+# header alone, half a header, an empty batch file, identity.json alone, an
+# empty journal, an empty staging directory.
+"$vahf" run "$table1" --trials 2 --out "$tmp/early" >"$out" 2>"$err" &
+pid=$!
+for ((i = 0; i < 3000; ++i)); do
+  if [[ -s "$tmp/early.partial/journal/batch-0.log" ]] || ! kill -0 "$pid" 2>/dev/null; then
+    break
+  fi
+  sleep 0.01
+done
+kill -KILL "$pid" 2>/dev/null
+wait "$pid"
+status=$?
+expect_status "run table1 --trials 2 killed by SIGKILL" 137
+mv "$tmp/early.partial" "$tmp/early.saved"
+log=journal/batch-0.log
+header=$(head -n 1 "$tmp/early.saved/$log" | wc -c)
+for state in "a header alone:$header" "half a header:$((header / 2))" \
+  "an empty batch file:0" "identity.json alone:rm $log" "an empty journal:rm journal/*" \
+  "an empty staging directory:rm -r journal"; do
+  name=${state%%:*}
+  cut=${state#*:}
+  rm -rf "$tmp/early" "$tmp/early.partial"
+  cp -r "$tmp/early.saved" "$tmp/early.partial"
+  if [[ $cut == rm* ]]; then
+    (cd "$tmp/early.partial" && eval "$cut")
+  else
+    truncate -s "$cut" "$tmp/early.partial/$log"
+  fi
+  run run "$table1" --trials 2 --out "$tmp/early" --resume
+  expect_afresh "--resume after a kill before the first result ($name)" "$tmp/early" \
+    "$tmp/early.partial holds no finished result"
+done
+# --- the finished run: --resume of the same command is refused, naming its
+# manifest, and the output stays; a changed seed is another run, which
+# starts afresh (and replaces it, as a run without --resume would).
+run run "$table1" --trials 2 --out "$tmp/small" --resume
+expect_status "--resume of a finished run" 2
+expect_lines "--resume of a finished run" "$err" 1
+expect_in "--resume of a finished run" "$err" \
+  "$tmp/small/manifest.json: /results_digest = \"$small\": this same run has finished"
+if [[ "$(digest "$tmp/small")" == "$small" && ! -e "$tmp/small.partial" ]]; then
+  pass "--resume of a finished run: the output stays"
+else
+  fail "--resume of a finished run: the output changed"
+fi
+cp -r "$tmp/small" "$tmp/small2"
+run run "$table1" --trials 2 --seed 2 --out "$tmp/small2" --resume
+expect_status "--resume onto another run's finished output" 0
+expect_in "--resume onto another run's finished output" "$err" \
+  "nothing journaled to resume (there is no $tmp/small2.partial): the run starts afresh"
 
 # --- SIGINT, then a torn last record (as a power loss may leave), then resume.
 "$vahf" run "$table1" --trials 6 --out "$tmp/stopped" >"$out" 2>"$err" &

@@ -433,8 +433,9 @@ int main(int argc, char** argv) {
   run->add_flag("--resume", run_args.resume,
                 "continue the stopped run of the same command (Ctrl-C, kill, power "
                 "loss) from the journal in its output's .partial folder: only what is "
-                "missing runs, and the results are the same bits "
-                "(docs/reproducibility.md)");
+                "missing runs, and the results are the same bits; with nothing "
+                "journaled yet the run starts afresh; refused for a finished run or "
+                "another run's journal (docs/reproducibility.md)");
   run->add_option("--overrides", run_args.overrides,
                   "parameter-override file (vahf-overrides/1, e.g. a calibration's "
                   "calibrated.json) applied to every scene the experiment runs");

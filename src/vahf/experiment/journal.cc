@@ -108,7 +108,12 @@ Journal::Journal(std::string directory, const nlohmann::json& identity, bool res
     fs::remove_all(directory_, error);
     fs::create_directories(directory_, error);
     if (error) Refused("create", directory_, error.value());
+    // identity.json and the journal's folder entry are on disk before any
+    // record counts as kept.
     WriteFileAtomically(identity_path, identity.dump(1) + "\n");
+    const fs::path parent = fs::path(directory_).parent_path();
+    error = SyncDirectory(parent.empty() ? "." : parent.string());
+    if (error) Refused("sync the folder of", directory_, error.value());
     return;
   }
   if (!fs::is_regular_file(identity_path, error))
@@ -120,6 +125,25 @@ Journal::Journal(std::string directory, const nlohmann::json& identity, bool res
 }
 
 Journal::~Journal() = default;
+
+bool Journal::HoldsResults(const std::string& directory) {
+  std::error_code error;
+  for (fs::directory_iterator it(directory, error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind("batch-", 0) != 0 || it->path().extension() != ".log") continue;
+    const std::string text = ReadAll(it->path().string());
+    std::size_t pos = text.find('\n');
+    if (pos == std::string::npos ||
+        text.compare(0, std::strlen(kBatchFormat), kBatchFormat) != 0)
+      continue;
+    ++pos;
+    std::size_t index = 0;
+    std::string bytes;
+    if (ReadRecord(text, &pos, &index, &bytes)) return true;
+  }
+  return false;
+}
 
 std::unique_ptr<Journal::Batch> Journal::Begin(std::size_t indices,
                                                const std::string& label) {
@@ -150,7 +174,11 @@ std::unique_ptr<Journal::Batch> Journal::Begin(std::size_t indices,
   batch->fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (batch->fd_ < 0) Refused("open", path, errno);
   if (::ftruncate(batch->fd_, static_cast<off_t>(good)) != 0) Refused("cut", path, errno);
-  if (good == 0) batch->Append(header);
+  if (good == 0) {
+    batch->Append(header);
+    const std::error_code synced = SyncDirectory(directory_);  // the new file's name
+    if (synced) Refused("sync", directory_, synced.value());
+  }
   return batch;
 }
 
@@ -181,9 +209,13 @@ void Journal::Batch::Append(const std::string& record) {
   while (done < record.size()) {
     const ssize_t n = ::write(fd_, record.data() + done, record.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) Refused("write", path_, errno);
+    if (n <= 0) Refused("write", path_, n < 0 ? errno : EIO);
     done += static_cast<std::size_t>(n);
   }
+  // On disk before the record counts as kept (about 0.5 ms, against a
+  // cycle's 600 ms).
+  while (::fdatasync(fd_) != 0)
+    if (errno != EINTR) Refused("sync", path_, errno);
 }
 
 }  // namespace vahf::experiment

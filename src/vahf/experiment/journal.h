@@ -13,11 +13,13 @@
 //   vahf-journal-batch/1 INDICES LABEL\n
 //   entry INDEX LENGTH SHA256\n  LENGTH bytes (result_codec.h)  \n
 //
-// A record is one write(); the journal never syncs to disk. After kill -9
-// every record written is complete; after a power loss the tail of a file
-// may be torn or zeroed. Reading stops at the first record that does not
-// check (its digest is over the index, the length and the bytes) and cuts
-// the file there: what is lost is run again, never read wrong.
+// A record is one write(), synced to disk (fdatasync) before it counts as
+// kept; identity.json and each batch file's name are synced in their folder
+// when created. After kill -9 every record written is complete; a record
+// being written when the disk filled or the power failed may be torn.
+// Reading stops at the first record that does not check (its digest is over
+// the index, the length and the bytes) and cuts the file there: what is lost
+// is run again, never read wrong.
 #pragma once
 
 #include <atomic>
@@ -48,6 +50,12 @@ class Journal {
   Journal(const Journal&) = delete;
   Journal& operator=(const Journal&) = delete;
 
+  // Whether `directory` holds a journal with finished work: a batch file
+  // with at least one whole record that checks. A journal killed before its
+  // first result (no batch file, a header alone, a torn first record) holds
+  // none: nothing is lost by starting afresh.
+  static bool HoldsResults(const std::string& directory);
+
   // The run's next batch of `indices` indices, its label for the header. On
   // resume, its entries are read back (a header for another number of
   // indices is an InputError: the run is not the one journaled).
@@ -75,14 +83,15 @@ class Journal::Batch {
 
   // The bytes journaled for `index`, if any (counted as reused).
   std::optional<std::string> Find(std::size_t index);
-  // Appends `index`'s bytes; safe from several threads. A write the system
-  // refuses is a ComputationError (kRefused) naming the file.
+  // Appends `index`'s bytes and syncs them to disk; safe from several
+  // threads. A write or sync the system refuses (a full disk) is a
+  // ComputationError (kRefused) naming the file.
   void Store(std::size_t index, const std::string& bytes);
 
  private:
   friend class Journal;
   Batch(Journal* journal, std::string path);
-  void Append(const std::string& record);  // one write(), under the lock
+  void Append(const std::string& record);  // one write() and a sync, under the lock
 
   Journal* journal_;
   std::string path_;

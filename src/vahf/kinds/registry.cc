@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <utility>
 
 #include "vahf/core/error.h"
@@ -137,6 +138,11 @@ int RunExperiment(const scene::ExperimentFile& file, const RunContext& given) {
   };
   // Rank 0's refusal (a journal of another run) stops every rank alike.
   experiment::AllAgree(context.settings.ranks, open);
+  // A --resume with nothing journaled yet starts afresh, and says so.
+  if (const std::string& why = context.directory->afresh_reason(); !why.empty())
+    std::fprintf(stderr,
+                 "vahf: %s: nothing journaled to resume (%s): the run starts afresh\n",
+                 context.directory->path().c_str(), why.c_str());
   if (kind.run) return kind.run(file, context);
   const auto start = std::chrono::steady_clock::now();
   const experiment::ExperimentRun run = RunDesign(file, context.settings);

@@ -118,6 +118,28 @@ nlohmann::json RunIdentity(const Invocation& i, const std::vector<std::string>& 
           {"build", BuildJson(GetBuildInfo())}};
 }
 
+bool RecordsRun(const nlohmann::json& manifest, const nlohmann::json& identity) {
+  if (!manifest.is_object() || !identity.is_object()) return false;
+  for (const char* key : {"invocation", "build"})
+    if (!manifest.contains(key) || !identity.contains(key) ||
+        manifest.at(key) != identity.at(key))
+      return false;
+  const nlohmann::json digests = identity.value("inputs", nlohmann::json::object());
+  std::vector<nlohmann::json> recorded = {manifest.value("experiment", nlohmann::json()),
+                                          manifest.value("scene", nlohmann::json())};
+  const nlohmann::json inputs = manifest.value("inputs", nlohmann::json::array());
+  if (inputs.is_array()) recorded.insert(recorded.end(), inputs.begin(), inputs.end());
+  for (const nlohmann::json& input : recorded) {
+    if (!input.is_object() || !input.contains("path") || !input.at("path").is_string())
+      continue;
+    const std::string path = input.at("path").get<std::string>();
+    if (digests.is_object() && digests.contains(path) &&
+        input.value("sha256", nlohmann::json()) != digests.at(path))
+      return false;
+  }
+  return true;
+}
+
 namespace {
 
 bool IsHexDigest(const std::string& s) {

@@ -81,6 +81,12 @@ nlohmann::json ManifestJson(const ManifestFields& fields);
 nlohmann::json RunIdentity(const Invocation& invocation,
                            const std::vector<std::string>& files);
 
+// Whether `manifest` (a finished run's manifest.json, as parsed) records the
+// run `identity` (RunIdentity) describes: the same invocation and build, and
+// the same SHA-256 for every input both name. False for anything else,
+// including JSON that is not a manifest.
+bool RecordsRun(const nlohmann::json& manifest, const nlohmann::json& identity);
+
 // A manifest as `vahf verify` reads it back.
 struct RecordedRun {
   std::string file;  // the manifest's path, for messages

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <system_error>
 
 #include "vahf/core/atomic_file.h"
 #include "vahf/core/error.h"
+#include "vahf/core/whole_file.h"
+#include "vahf/report/manifest.h"
 
 namespace vahf::report {
 namespace fs = std::filesystem;
@@ -50,25 +52,31 @@ void CheckReplaceable(const std::string& path) {
 
 constexpr const char* kJournal = "journal";
 
-// Whether the staging directory holds a journal with finished work: a batch
-// file longer than its header line.
+// Whether the staging directory holds a journal with finished work.
 bool HoldsJournal(const std::string& staging) {
-  std::error_code ec;
-  for (fs::directory_iterator it(fs::path(staging) / kJournal, ec), end; !ec && it != end;
-       it.increment(ec)) {
-    if (it->path().extension() != ".log") continue;
-    std::ifstream in(it->path());
-    std::string header;
-    std::getline(in, header);
-    if (in.peek() != std::ifstream::traits_type::eof()) return true;
-  }
-  return false;
+  return experiment::Journal::HoldsResults((fs::path(staging) / kJournal).string());
+}
+
+// A --resume onto the finished output of the same run: nothing to resume.
+void RefuseFinishedRun(const std::string& path, const nlohmann::json& identity) {
+  const std::string manifest_path =
+      (fs::path(path) / OutputDirectory::kMarkerFile).string();
+  const std::optional<std::string> text = ReadWholeFile(manifest_path);
+  if (!text) return;
+  const nlohmann::json manifest =
+      nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
+  if (!RecordsRun(manifest, identity)) return;
+  const nlohmann::json digest = manifest.value("results_digest", nlohmann::json());
+  throw InputError(manifest_path, "/results_digest", digest.dump(),
+                   "this same run has finished (the same invocation, inputs and "
+                   "build): there is nothing to resume; without --resume it runs "
+                   "again and replaces this output");
 }
 
 }  // namespace
 
 OutputDirectory::OutputDirectory(const std::string& path, bool resume)
-    : path_(Normalize(path)), staging_(path_ + ".partial"), resume_(resume) {
+    : path_(Normalize(path)), staging_(path_ + ".partial") {
   CheckReplaceable(path_);
   std::error_code ec;
   const fs::path parent = fs::path(path_).parent_path();
@@ -77,11 +85,8 @@ OutputDirectory::OutputDirectory(const std::string& path, bool resume)
     if (ec) Fail(parent.string(), "cannot create the folder", ec);
   }
   const bool journal = HoldsJournal(staging_);
-  if (resume) {
-    if (!journal)
-      throw InputError(staging_, "", "",
-                       "holds no journal of a stopped run: there is nothing to resume "
-                       "(run without --resume)");
+  if (resume && journal) {
+    resume_ = true;
     // The journal stays; files a stopped output write left go.
     for (fs::directory_iterator it(staging_, ec), end; !ec && it != end; it.increment(ec))
       if (it->path().filename() != kJournal) fs::remove_all(it->path(), ec);
@@ -92,10 +97,19 @@ OutputDirectory::OutputDirectory(const std::string& path, bool resume)
     throw InputError(staging_, "", "",
                      "holds the journal of a stopped run: the same command with --resume "
                      "continues it; remove the folder to start afresh");
+  // A --resume with nothing journaled (no staging directory, or a run stopped
+  // before its first result) starts afresh: no work is lost.
+  if (resume)
+    afresh_reason_ = fs::exists(staging_, ec) ? staging_ + " holds no finished result"
+                                              : "there is no " + staging_;
   fs::remove_all(staging_, ec);
   if (ec) Fail(staging_, "cannot remove the staging directory of an earlier run", ec);
   fs::create_directory(staging_, ec);
   if (ec) Fail(staging_, "cannot create the staging directory", ec);
+  // Its name is on disk before the journal inside it keeps anything.
+  if (const std::error_code synced =
+          SyncDirectory(parent.empty() ? "." : parent.string()))
+    Fail(parent.string(), "cannot sync the folder to disk", synced);
 }
 
 OutputDirectory::~OutputDirectory() {
@@ -109,6 +123,7 @@ OutputDirectory::~OutputDirectory() {
 
 experiment::Journal& OutputDirectory::OpenJournal(const nlohmann::json& identity) {
   VAHF_CHECK(!journal_ && !committed_, "one journal per output, before Commit()");
+  if (!afresh_reason_.empty()) RefuseFinishedRun(path_, identity);
   journal_ = std::make_unique<experiment::Journal>(
       (fs::path(staging_) / kJournal).string(), identity, resume_);
   return *journal_;
@@ -182,6 +197,11 @@ void OutputDirectory::Commit() {
   }
   committed_ = true;
   if (had_old) fs::remove_all(old, ec);  // leftovers are harmless: removed next time
+  // The rename is on disk before the run counts as finished.
+  const fs::path parent = fs::path(path_).parent_path();
+  if (const std::error_code synced =
+          SyncDirectory(parent.empty() ? "." : parent.string()))
+    Fail(parent.string(), "cannot sync the folder to disk", synced);
 }
 
 }  // namespace vahf::report

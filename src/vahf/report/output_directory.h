@@ -27,8 +27,10 @@ class OutputDirectory {
   // Checks that PATH may be replaced, creates its parent folders, and creates
   // PATH.partial fresh (removing one a failed run left, unless it holds a
   // stopped run's journal: that is an InputError saying --resume continues
-  // it). With `resume`, PATH.partial must hold a journal, which is kept (the
-  // files staged beside it are removed). Failures are InputErrors naming the
+  // it). With `resume`, a journal with finished work in PATH.partial is kept
+  // (the files staged beside it are removed); where there is none (no
+  // PATH.partial, or a run stopped before its first result) the run starts
+  // afresh, as afresh_reason() says. Failures are InputErrors naming the
   // path and the operating system's reason.
   explicit OutputDirectory(const std::string& path, bool resume = false);
   // Without Commit(), removes the staging directory, unless its journal
@@ -52,8 +54,16 @@ class OutputDirectory {
   // The regular files staged so far, relative, '/'-separated, sorted by name.
   std::vector<std::string> Files() const;
 
+  // Why a `resume` found nothing to continue and the run starts afresh
+  // ("there is no PATH.partial", "PATH.partial holds no finished result");
+  // empty when it continues a journal or was not asked to resume.
+  const std::string& afresh_reason() const { return afresh_reason_; }
+
   // Opens the run's journal in PATH.partial/journal (Journal's constructor:
-  // fresh, or the one to resume, which must have the same `identity`).
+  // fresh, or the one to resume, which must have the same `identity`). A
+  // `resume` that starts afresh refuses, with an InputError naming
+  // PATH/manifest.json, when PATH holds the finished output of this same
+  // run (report::RecordsRun): there is nothing to resume.
   experiment::Journal& OpenJournal(const nlohmann::json& identity);
   // The journal's entries reused from a stopped run and written by this one,
   // so far (kept after Commit()); zeros without a journal.
@@ -65,8 +75,8 @@ class OutputDirectory {
 
   // Removes the journal, then replaces PATH by the staged directory: renames
   // PATH to PATH.old (removing a stale one), renames PATH.partial to PATH,
-  // then removes PATH.old. If the second rename fails, PATH.old is renamed
-  // back. Once only.
+  // then removes PATH.old and syncs PATH's folder to disk. If the second
+  // rename fails, PATH.old is renamed back. Once only.
   void Commit();
   bool committed() const { return committed_; }
 
@@ -75,7 +85,8 @@ class OutputDirectory {
 
   std::string path_;
   std::string staging_;
-  bool resume_ = false;
+  bool resume_ = false;  // a journal with finished work is continued
+  std::string afresh_reason_;
   std::unique_ptr<experiment::Journal> journal_;
   JournalCounts closed_;  // the counts of the journal, once closed
   bool committed_ = false;
