@@ -36,6 +36,7 @@ TEST(Warnings, SumsAddKindByKind) {
   EXPECT_EQ(sum.at(WarningKind::kIntegratorRetry).count, 1);
   EXPECT_EQ(sum.total(), 4);
   EXPECT_STREQ(WarningName(WarningKind::kIntegratorFailure), "integrator_failure");
+  EXPECT_STREQ(WarningName(WarningKind::kRest), "rest");
 }
 
 }  // namespace

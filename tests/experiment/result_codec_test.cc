@@ -68,6 +68,9 @@ void ExpectSameTrial(const sim::TrialResult& a, const sim::TrialResult& b) {
   EXPECT_EQ(a.counters.shell_points, b.counters.shell_points);
   EXPECT_EQ(Bits(a.phases.visibility), Bits(b.phases.visibility));
   EXPECT_EQ(a.warnings.Summary(), b.warnings.Summary());
+  EXPECT_EQ(a.rests.count, b.rests.count);
+  EXPECT_EQ(Bits(a.rests.total_time), Bits(b.rests.total_time));
+  EXPECT_EQ(Bits(a.rests.longest), Bits(b.rests.longest));
   ASSERT_EQ(a.trace.size(), b.trace.size());
   for (std::size_t k = 0; k < a.trace.size(); ++k) ExpectSameRow(a.trace[k], b.trace[k]);
   ASSERT_EQ(a.samples.size(), b.samples.size());
@@ -89,13 +92,14 @@ TEST(ResultCodec, ACycleOfTheCylinderDecodesToTheSameBits) {
   ASSERT_FALSE(r.result.parts.empty());
   ASSERT_FALSE(r.result.parts[0].trial.trace.empty());
   // What a run never gives but a result may hold: NaN of either sign, -0.0,
-  // samples, a warning.
+  // samples, a warning, rests.
   sim::TrialResult& t = r.result.parts[0].trial;
   t.first_contact_time = -std::numeric_limits<double>::quiet_NaN();
   t.clearance = -0.0;
   t.samples = {t.trace.front(), t.trace.back()};
   t.samples[1].psi = std::numeric_limits<double>::quiet_NaN();
   t.warnings.Note(WarningKind::kNonFiniteState, 0.25, "NaN in\nthe state", 7);
+  t.rests = {3, 1.25, -0.0};  // not what a run gives: each field its own bits
 
   const std::string bytes = EncodeCycleRecord(r);
   const CycleRecord d = DecodeCycleRecord(bytes);
@@ -119,6 +123,9 @@ TEST(ResultCodec, ACycleOfTheCylinderDecodesToTheSameBits) {
   const sim::TrialResult& dt = d.result.parts[0].trial;
   EXPECT_TRUE(std::isnan(dt.first_contact_time) && std::signbit(dt.first_contact_time));
   EXPECT_TRUE(dt.clearance == 0 && std::signbit(dt.clearance));
+  EXPECT_EQ(dt.rests.count, 3);
+  EXPECT_EQ(Bits(dt.rests.total_time), Bits(1.25));
+  EXPECT_TRUE(dt.rests.longest == 0 && std::signbit(dt.rests.longest));
   for (int k = 0; k < kWarningKinds; ++k) {
     const WarningEntry& a = dt.warnings.at(static_cast<WarningKind>(k));
     const WarningEntry& b = t.warnings.at(static_cast<WarningKind>(k));

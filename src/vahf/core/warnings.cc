@@ -18,6 +18,8 @@ const char* WarningName(WarningKind kind) {
       return "integrator_failure";
     case WarningKind::kContactSolver:
       return "contact_solver";
+    case WarningKind::kRest:
+      return "rest";
   }
   return "?";
 }

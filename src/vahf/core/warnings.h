@@ -1,7 +1,9 @@
 // A trial's record of numerical trouble, in the spirit of MuJoCo's
-// mjData.warning (docs/design.md decision 12): for each kind, how often
-// it happened, when first, and what was seen then. Experiments sum the
-// records of their trials; a test fails on any warning it did not expect.
+// mjData.warning (docs/design.md decision 12), and of the part's rests,
+// where the contact's friction law rather than the operator sets the time
+// (issue 53): for each kind, how often it happened, when first, and what
+// was seen then. Experiments sum the records of their trials; a test fails
+// on any warning it did not expect.
 #pragma once
 
 #include <array>
@@ -17,11 +19,12 @@ enum class WarningKind {
   kIntegratorRetry,    // the integrator failed a convergence or realization and retried
   kIntegratorFailure,  // the integrator gave up (the trial is a numerical failure)
   kContactSolver,      // a nonsmooth step's contact problem ended unconverged
+  kRest,               // the part rested in contact (sim/rest_watch.h): once a rest
 };
-inline constexpr int kWarningKinds = 6;
+inline constexpr int kWarningKinds = 7;
 
 // Short machine name: non_finite_state, penetration_bound, step_size_floor,
-// integrator_retry, integrator_failure, contact_solver.
+// integrator_retry, integrator_failure, contact_solver, rest.
 const char* WarningName(WarningKind kind);
 
 struct WarningEntry {

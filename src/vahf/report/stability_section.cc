@@ -12,8 +12,8 @@ namespace vahf::report {
 namespace {
 
 // The report's short names of the warning kinds, in WarningKind order.
-constexpr const char* kShortNames[kWarningKinds] = {"nonfinite", "pen",  "floor",
-                                                    "retry",     "fail", "solver"};
+constexpr const char* kShortNames[kWarningKinds] = {
+    "nonfinite", "pen", "floor", "retry", "fail", "solver", "rest"};
 
 nlohmann::json WarningCounts(const Warnings& w) {
   nlohmann::json out = nlohmann::json::object();
@@ -235,7 +235,9 @@ std::vector<std::string> CellMarkdown(const Cell& cell) {
 constexpr const char* kLegend =
     "\nWarnings (counts over accepted steps): pen = penetration_bound (contact deeper "
     "than the bound), retry = integrator_retry, floor = step_size_floor, nonfinite = "
-    "non_finite_state, fail = integrator_failure, solver = contact_solver. Steps: "
+    "non_finite_state, fail = integrator_failure, solver = contact_solver; rest = rest "
+    "(once a rest: the part in contact and slower than simulation/rest_speed between "
+    "decisions for simulation/rest_time or longer). Steps: "
     "accepted steps (the largest "
     "over seeds). CPU and the real-time factor (simulated over CPU seconds, the trial's "
     "thread) are measured on this machine, outside the results digest "

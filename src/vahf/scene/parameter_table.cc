@@ -398,6 +398,13 @@ std::vector<ParamSpec> DecisionsAndOutcomes() {
       {"simulation", "jam_progress", "m", R::kClosed, 1e-9, 1,
        "approach to the target that counts as progress",
        VAHF_REAL(simulation.jam_progress)},
+      // 0 counts no rest; 1 m/s is a hand's brisk motion, not a rest.
+      {"simulation", "rest_speed", "m/s", R::kClosed, 0, 1,
+       "in contact, nearing or leaving the target slower than this: resting",
+       VAHF_REAL(simulation.rest_speed)},
+      {"simulation", "rest_time", "s", R::kClosed, 1e-3, 1e5,
+       "a rest this long or longer is counted (warning rest, the trial's rests)",
+       VAHF_REAL(simulation.rest_time)},
       {"simulation", "divergence_speed", "m/s", R::kClosed, 1e-3, 1e5,
        "a part point faster than this: the integration diverged (numerical_failure)",
        VAHF_REAL(simulation.divergence_speed)},

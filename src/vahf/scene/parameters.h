@@ -28,6 +28,16 @@ struct SimulationParams {
   double completion_angle_deg = 2.0;  // angle to the target orientation, deg
   double jam_time = 2.0;              // s in contact without progress: jammed
   double jam_progress = 1e-4;         // m of approach that counts as progress
+  // A rest (sim/rest_watch.h, docs/physics.md "Rests"): the part in contact at
+  // consecutive decisions with its distance to the target changed by less
+  // than rest_speed times the time between them, m/s. 1 mm/s is the compliant contact's
+  // friction transition speed (contact/friction_transition_speed's default):
+  // below it the regularised Coulomb law lets a part held inside its friction
+  // cone creep, which Coulomb's law would hold still, so creeping slower than
+  // it counts as resting (issue 53).
+  double rest_speed = 1e-3;
+  // The shortest rest counted, s: issue 53's 0.1 s, one decision interval.
+  double rest_time = 0.1;
   // A point of the part moving faster than this, m/s, means the integration
   // diverged (status numerical_failure): hand-guided parts move at a few m/s,
   // and a part dropped from a 1 m workbench lands at 4.4 m/s.

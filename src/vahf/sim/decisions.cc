@@ -11,7 +11,8 @@ namespace vahf::sim::internal {
 namespace {
 
 // The outcomes decided at decision i (outcome.h), from the factors f, Psi,
-// and whether the part is in contact: may end the trial.
+// and whether the part is in contact: may end the trial. And the rests
+// (rest_watch.h), from the same distance and contact.
 void CheckOutcomes(TrialContext& c, std::int64_t i, double time,
                    const contact::RigidMotion& m, const human::FactorValues& f,
                    double psi, bool in_contact) {
@@ -27,6 +28,9 @@ void CheckOutcomes(TrialContext& c, std::int64_t i, double time,
   facts.distance = c.model.DistanceToTarget(m);
   c.progress.Observe(i == 0, facts.time, facts.distance, facts.in_contact,
                      p.simulation.jam_progress);
+  // Before the rules that may end the trial: a jam's last interval rests too.
+  c.Rested(c.rests.Observe(i, m.pose.translation(), facts.distance, facts.in_contact,
+                           p.simulation));
   if (std::optional<Ending> end =
           CheckOperator(facts, p.fatigue, p.simulation, c.progress))
     c.End(std::move(*end));

@@ -121,6 +121,8 @@ TrialResult RunTrial(const TrialModel& model, rng::StreamKey key,
     counters.clusters_skipped = static_cast<std::int64_t>(cc.clusters_skipped);
   }
   result.counters = counters;
+  c.Rested(c.rests.Close(params.simulation));  // a rest the ending cut short
+  result.rests = c.rests.summary();
   result.warnings = c.warnings;
   result.max_penetration = c.max_penetration;
   result.penetration_bound = model.penetration_bound;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace vahf::sim {
 
 const char* StatusName(Status status) {
@@ -22,6 +24,12 @@ const char* StatusName(Status status) {
       return "step_budget";
   }
   return "?";
+}
+
+void RestSummary::Add(double duration) {
+  ++count;
+  total_time += duration;
+  longest = std::max(longest, duration);
 }
 
 bool IsComputationFailure(Status status) {
@@ -65,6 +73,11 @@ std::string TrialResult::BriefReport() const {
                        stiffness, line_stiffness);
   else if (stiffness > 0)
     out += fmt::format("contact stiffness: {:.3g} Pa/m (faces)\n", stiffness);
+  out += fmt::format("rests (simulation/rest_speed, rest_time): {}", rests.count);
+  if (rests.count > 0)
+    out += fmt::format(", {:.6g} s in all, the longest {:.6g} s", rests.total_time,
+                       rests.longest);
+  out += "\n";
   out += fmt::format("warnings: {}\n", warnings.Summary());
   return out;
 }

@@ -70,6 +70,16 @@ struct TrialCounters {
   std::int64_t shell_points = 0;
 };
 
+// What a trial's rests came to (rest_watch.h: a rest is the part in contact
+// and slower than simulation/rest_speed for simulation/rest_time or longer).
+struct RestSummary {
+  std::int64_t count = 0;
+  double total_time = 0;  // s, summed over the rests counted
+  double longest = 0;     // s
+
+  void Add(double duration);
+};
+
 struct TrialResult {
   Status status = Status::kTimeout;
   std::string detail;           // why it ended; where, for a failure
@@ -103,6 +113,9 @@ struct TrialResult {
   // face law Pa/m, line law Pa; 0 when nothing can be touched (the line law:
   // when the contact model has no rims).
   double stiffness = 0, line_stiffness = 0;
+  // The part's rests, each also a `rest` warning with its start, duration
+  // and place.
+  RestSummary rests;
   // The part, its factors and A at the instant the trial ended (for a
   // completion, the completion instant: paper Table 1's instant d). Always set.
   TraceRow final_row;

@@ -17,6 +17,7 @@
 #include "vahf/rng/stream.h"
 #include "vahf/sim/outcome.h"
 #include "vahf/sim/phase_seconds.h"
+#include "vahf/sim/rest_watch.h"
 #include "vahf/sim/trial_model.h"
 #include "vahf/sim/trial_result.h"
 #include "vahf/visibility/caster_pool.h"
@@ -61,6 +62,7 @@ struct TrialContext {
   Vector3d last_centre = Vector3d::Zero();  // of the part, at the last decision
   double last_force = 0;
   ProgressWatch progress;
+  RestWatch rests;  // observed at decisions (rest_watch.h)
   std::optional<Status> ended;
   std::string detail;
   double completion_time = -1;
@@ -89,6 +91,11 @@ struct TrialContext {
   void End(Ending e) {
     ended = e.status;
     detail = std::move(e.detail);
+  }
+
+  // A rest RestWatch counted: one `rest` warning at its start.
+  void Rested(const std::optional<Rest>& rest) {
+    if (rest) warnings.Note(WarningKind::kRest, rest->start, rest->Detail());
   }
 
   const scene::Parameters& params() const { return model.params; }
