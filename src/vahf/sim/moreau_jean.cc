@@ -129,13 +129,18 @@ MoreauJeanStepResult MoreauJeanStep(const BodyInertia& body, const BodyState& y,
   if (!points.empty()) {
     const Eigen::MatrixXd H = ContactRows(s, points);
     const Eigen::MatrixXd X = lu.solve(H.transpose());  // W_hat^-1 H^T
-    const Eigen::MatrixXd W = H * X;
+    Eigen::MatrixXd W = H * X;
+    const double c = settings.compliance * W.diagonal().mean();
     Eigen::VectorXd q = H * u_free;
     Eigen::VectorXd mu(points.size());
-    const double e = settings.restitution;
+    const double e = settings.restitution, h_o = std::max(h, settings.overlap_step);
     for (std::size_t i = 0; i < points.size(); ++i) {
       const double un = H.row(3 * i).dot(s.u), g = points[i].gap;
-      q[3 * i] += g + h * un <= 0 ? e * un + std::min(g, 0.0) / h : g / h;
+      if (g + h * un <= 0)
+        q[3 * i] += e * un + std::min(g, 0.0) / h_o;
+      else
+        q[3 * i] += g >= 0 ? g / h : g / h_o;
+      W(3 * i, 3 * i) += c;
       mu[i] = points[i].mu;
     }
     out.reactions =

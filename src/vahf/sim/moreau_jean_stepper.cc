@@ -73,6 +73,9 @@ class MoreauJeanCore : public StepperCore {
     settings_.solver.tolerance =
         sim.stepper_values.Get(stepper_settings::moreau_jean_tolerance);
     settings_.restitution = c_.params().contact.restitution;
+    settings_.compliance = sim.stepper_values.Get(stepper_settings::moreau_jean_compliance);
+    settings_.overlap_step = h_max_;
+    felt_time_ = sim.stepper_values.Get(stepper_settings::moreau_jean_felt_time);
     const TrialModel& model = c_.model;
     body_ = {model.mass, model.inertia_body, model.com};
     cap_ = h_max_;
@@ -192,6 +195,16 @@ class MoreauJeanCore : public StepperCore {
     return out;
   }
 
+  // The contact the operator feels after a step of h: the step's impulses
+  // over h through the first-order lag of felt_time_ (its exact step), or
+  // as they are at 0.
+  void Feel(const MoreauJeanStepResult& r, double h) {
+    const double a = felt_time_ > 0 ? -std::expm1(-h / felt_time_) : 1.0;
+    felt_.normal_force += a * (r.normal_impulse / h - felt_.normal_force);
+    felt_.friction_force += a * (r.friction_impulse / h - felt_.friction_force);
+    felt_.rim_points_in_contact = r.loaded_points;
+  }
+
   void Step(double h) {
     const TrialModel& model = c_.model;
     const contact::RigidMotion m = MotionOf(y_);
@@ -220,10 +233,7 @@ class MoreauJeanCore : public StepperCore {
           fmt::format("{} contact points: {}", points_.size(), r.solve.detail));
     }
     felt_before_ = felt_;
-    felt_ = contact::ContactForces{};
-    felt_.normal_force = r.normal_impulse / h;
-    felt_.friction_force = r.friction_impulse / h;
-    felt_.rim_points_in_contact = r.loaded_points;
+    Feel(r, h);
     reactions_ = std::move(r.reactions);
     prev_y_ = y_;
     y_ = r.y;
@@ -235,7 +245,7 @@ class MoreauJeanCore : public StepperCore {
   TrialContext& c_;
   BodyInertia body_;
   MoreauJeanSettings settings_;
-  double h_max_ = 0, cap_ = 0;
+  double h_max_ = 0, cap_ = 0, felt_time_ = 0;
   double t_ = 0, last_h_ = 0;
   BodyState y_, prev_y_;
   std::vector<contact::ContactPoint> points_;

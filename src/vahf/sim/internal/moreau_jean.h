@@ -17,15 +17,30 @@
 // P_i in the Coulomb cone of mu_i, U_i + mu_i |U_t,i| e_n in its dual
 // (De Saxce's modified velocity), solved by Siconos (frictional_contact.h).
 // The shift s on a normal row activates the law by the gap g predicted at
-// the step's end (docs/physics.md, "Nonsmooth stepping"):
-//   closing within the step (g + h U_n- <= 0):  s = e U_n- + min(g, 0) / h,
-//   otherwise:                                  s = g / h.
+// the step's end (docs/physics.md, "Nonsmooth stepping"), an overlap g < 0
+// pushed out over h_o = max(h, overlap_step):
+//   closing within the step (g + h U_n- <= 0):  s = e U_n- + min(g, 0) / h_o,
+//   otherwise:                                  s = g / h (g >= 0), g / h_o.
 // A contact that the step's velocity closes takes Newton's impact law,
 // U_n+ >= -e U_n- (the rebound starts from the step's start: first order in
 // h, as Moreau's law is); one that it does not close may not be closed by
-// the step's change of velocity either, so a resting contact holds its gap;
-// an overlap g < 0 is pushed out within one step. Positions follow
-// u_theta = (1 - theta) u- + theta u+.
+// the step's change of velocity either, so a resting contact holds its gap.
+// An overlap is pushed out over the stepper's full step even when the step
+// is shortened: over a step shortened 32-fold after a take-back, pushing two
+// opposite overlaps of a wedged part out at once asked 32 times the speed
+// and the solver answered with squeezing impulses of 1e3 N s (the piston
+// rod, docs/physics.md). Positions follow u_theta = (1 - theta) u- + theta u+.
+//
+// The normal rows' compliance: W's normal diagonal gains c = delta mean(W_ii)
+// (Tikhonov's regularisation, ODE's "constraint force mixing": R. Smith,
+// Open Dynamics Engine user guide, Sec. 3.8; C. Lacoursiere, PhD thesis,
+// Umea University 2007), so that U_n = (W P + q)_n + c P_n >= 0: a part wedged
+// between opposite contacts, whose rigid reactions are not unique (any
+// squeeze balances), takes a finite squeeze set by c instead of what the
+// solver's iterations drift to (1e7-1e11 N on the piston rod at delta 0;
+// docs/physics.md). The rows become soft: a contact gives at c P_n, so
+// delta is a model setting (steppers.def), 0 (rigid) unless a scene sets it.
+// The tangential rows stay exact: stick is stick.
 #pragma once
 
 #include <Eigen/Core>
@@ -57,8 +72,10 @@ struct SmoothLoads {
 };
 
 struct MoreauJeanSettings {
-  double theta = 1.0;        // in [1/2, 1]
-  double restitution = 0.0;  // Newton's e, in [0, 1]
+  double theta = 1.0;         // in [1/2, 1]
+  double restitution = 0.0;   // Newton's e, in [0, 1]
+  double compliance = 0.0;    // delta, the normal rows' relative compliance (>= 0)
+  double overlap_step = 0.0;  // s, the shortest time an overlap is pushed out in
   FrictionalContactOptions solver;
 };
 
