@@ -73,7 +73,8 @@ class MoreauJeanCore : public StepperCore {
     settings_.solver.tolerance =
         sim.stepper_values.Get(stepper_settings::moreau_jean_tolerance);
     settings_.restitution = c_.params().contact.restitution;
-    settings_.compliance = sim.stepper_values.Get(stepper_settings::moreau_jean_compliance);
+    settings_.compliance =
+        sim.stepper_values.Get(stepper_settings::moreau_jean_compliance);
     settings_.overlap_step = h_max_;
     felt_time_ = sim.stepper_values.Get(stepper_settings::moreau_jean_felt_time);
     const TrialModel& model = c_.model;
