@@ -3,7 +3,8 @@
 // computed exactly at each step: Coulomb's law on an incline (stick below
 // arctan(mu), a = g (sin a - mu cos a) above), no creep inside the friction
 // cone, Newton's impact law (a dropped ball rises to e^2 H, first order in
-// the step), a ring pressed flat that turns at the torque mu F R, a peg in
+// the step), an overlap pushed out over the full step, a ring pressed flat
+// that turns at the torque mu F R, a peg in
 // two-point contact that slides inside Whitney's jamming diagram and sticks
 // outside it, and the order of convergence of the theta-method on a smooth
 // motion.
@@ -165,6 +166,30 @@ TEST(MoreauJean, ADroppedBallRisesToESquaredHWithAnErrorThatHalvesWithTheStep) {
   EXPECT_LT(err1 / err2, 2.5);
   EXPECT_GT(err2 / err4, 1.6);
   EXPECT_LT(err2 / err4, 2.5);
+}
+
+// An overlap is pushed out over the stepper's full step, also within a step
+// the driver has shortened: a ball 1 um into the plane leaves at 1 um over
+// the full step, not over the short one.
+TEST(MoreauJean, AnOverlapIsPushedOutOverTheFullStep) {
+  BodyInertia ball;
+  ball.mass = 0.1;
+  ball.inertia_body = Eigen::Matrix3d::Identity() * 1.6e-5;
+  const BodyState y = AtRest({0, 0, 0.02 - 1e-6});
+  const std::vector<contact::ContactPoint> points = {
+      {{0, 0, -0.02}, Vector3d::UnitZ(), -1e-6, 0.3}};
+  for (const double h : {1e-3, 1e-4, 3.125e-5}) {
+    MoreauJeanSettings settings;
+    settings.overlap_step = 1e-3;
+    const MoreauJeanStepResult r =
+        MoreauJeanStep(ball, y, h, {}, Vector3d::Zero(), points, settings);
+    EXPECT_NEAR(r.y[9], 1e-6 / 1e-3, 1e-12) << "step " << h;
+    // Without a full step to push over, the short step's own.
+    settings.overlap_step = 0;
+    EXPECT_NEAR(MoreauJeanStep(ball, y, h, {}, Vector3d::Zero(), points, settings).y[9],
+                1e-6 / h, 1e-9)
+        << "step " << h;
+  }
 }
 
 // A thin ring of radius R (eight points) pressed flat on the plane by F and
