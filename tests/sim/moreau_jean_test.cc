@@ -4,10 +4,9 @@
 // arctan(mu), a = g (sin a - mu cos a) above), no creep inside the friction
 // cone, Newton's impact law (a dropped ball rises to e^2 H, first order in
 // the step), an overlap pushed out over the full step, a ring pressed flat
-// that turns at the torque mu F R, a peg in
-// two-point contact that slides inside Whitney's jamming diagram and sticks
-// outside it, and the order of convergence of the theta-method on a smooth
-// motion.
+// that turns at the torque mu F R, a peg in two-point contact that slides
+// inside Whitney's jamming diagram and sticks outside it, and the order of
+// convergence of the theta-method on a smooth motion.
 #include "vahf/sim/internal/moreau_jean.h"
 
 #include <gtest/gtest.h>
