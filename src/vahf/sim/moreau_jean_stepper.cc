@@ -200,9 +200,16 @@ class MoreauJeanCore : public StepperCore {
   // over h through the first-order lag of felt_time_ (its exact step), or
   // as they are at 0.
   void Feel(const MoreauJeanStepResult& r, double h) {
-    const double a = felt_time_ > 0 ? -std::expm1(-h / felt_time_) : 1.0;
-    felt_.normal_force += a * (r.normal_impulse / h - felt_.normal_force);
-    felt_.friction_force += a * (r.friction_impulse / h - felt_.friction_force);
+    const Eigen::Vector3d normal = r.normal_impulse / h,
+                          friction = r.friction_impulse / h;
+    if (felt_time_ > 0) {
+      const double a = -std::expm1(-h / felt_time_);
+      felt_.normal_force += a * (normal - felt_.normal_force);
+      felt_.friction_force += a * (friction - felt_.friction_force);
+    } else {  // exactly the step's, not old + (new - old) rounded
+      felt_.normal_force = normal;
+      felt_.friction_force = friction;
+    }
     felt_.rim_points_in_contact = r.loaded_points;
   }
 
