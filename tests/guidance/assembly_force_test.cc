@@ -119,6 +119,13 @@ TEST(ContactAssemblyForce, Eq8PerpendicularToContactPlusFriction) {
   EXPECT_NEAR((free - FreeAssemblyForce(400.0, 0.9, kPosition, tp)).norm(), 0.0, 1e-12);
 }
 
+TEST(WithdrawalTarget, BackAlongTheLineFromTheTarget) {
+  const Eigen::Vector3d w = WithdrawalTarget(kPosition, kTarget, 0.005);
+  EXPECT_NEAR((w - kPosition).norm(), 0.005, 1e-15);
+  EXPECT_NEAR((w - kTarget).norm(), (kPosition - kTarget).norm() + 0.005, 1e-15);
+  EXPECT_EQ(WithdrawalTarget(kTarget, kTarget, 0.005), kTarget);  // no way to go
+}
+
 TEST(ContactBlend, C1SmoothstepFromZeroToOne) {
   EXPECT_EQ(ContactBlend(0.0, 2.0), 0.0);
   EXPECT_EQ(ContactBlend(2.0, 2.0), 1.0);

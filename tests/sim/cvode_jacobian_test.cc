@@ -108,9 +108,10 @@ BodyJacobian Analytic(const TrialModel& model, const Decision& d, const BodyStat
   return DerivativeJacobian(model, y, loads, dl, model.gravity);
 }
 
-void ExpectJacobianWithAFlatContact(const scene::Scene& s) {
+void ExpectJacobianWithAFlatContact(const scene::Scene& s, bool withdraw = false) {
   const auto model = BuildTrialModel(s, 0);
-  const Decision d = Aiming(*model);
+  Decision d = Aiming(*model);
+  d.withdraw = withdraw;
   // 20 um deep (w = 1), and 50 nm deep and level: within the blend.
   struct Case {
     double depth, tilt;
@@ -159,6 +160,45 @@ TEST(CvodeJacobian, WristAndComplianceAtTheLeadingEnd) {
   const auto model = BuildTrialModel(s, 0);
   ASSERT_EQ(model->leading_end, Vector3d(0, 0, -0.005));
   ExpectJacobianWithAFlatContact(s);
+}
+
+// A part the operator withdraws (guidance/stall_time): the hand pulls
+// against the contact's friction alone (guidance::WithdrawalForce), so its
+// force and torque do not change with the contact's normal force and grow
+// with the friction; and the loads' Jacobian, without the derivative through
+// the normal, still agrees with differences.
+TEST(CvodeJacobian, AWithdrawingHandReadsTheFrictionAlone) {
+  scene::Scene s = BlockOnFloor();
+  s.params.guidance.torque_law = "wrist";
+  s.params.guidance.compliance_centre = "leading_end";
+  s.parts[1].grasp = Vector3d(0.004, -0.003, 0.005);
+  const auto model = BuildTrialModel(s, 0);
+  Decision d = Aiming(*model);
+  d.withdraw = true;
+  const contact::RigidMotion m = Pressed(20e-6, 1e-3);
+  const contact::ContactForces cf = model->ContactAt(m, nullptr);
+  ASSERT_GT(cf.normal_force.norm(), model->blend_force);
+  ASSERT_GT(cf.friction_force.norm(), 0);
+  Vector3d force, torque;
+  model->OperatorLoad(m, d, cf, &force, &torque);
+  contact::ContactForces other_normal = cf;
+  other_normal.normal_force = 3.0 * cf.normal_force + Vector3d(1, -2, 0);
+  Vector3d f2, t2;
+  model->OperatorLoad(m, d, other_normal, &f2, &t2);
+  EXPECT_EQ(force, f2);
+  EXPECT_EQ(torque, t2);
+  contact::ContactForces no_friction = cf;
+  no_friction.friction_force.setZero();
+  model->OperatorLoad(m, d, no_friction, &f2, &t2);
+  // The friction's size, added along the pull d = T_w - T, faded over e as
+  // Eq. 8's push is (max_push 0: unbounded).
+  const double reach = (d.estimated_target - m.pose.translation()).norm();
+  const double e = s.params.simulation.completion_distance;
+  EXPECT_NEAR((force - f2).norm(),
+              cf.friction_force.norm() * reach / std::sqrt(reach * reach + e * e),
+              1e-9 * cf.friction_force.norm());
+  EXPECT_GT((force - f2).dot(d.estimated_target - m.pose.translation()), 0);
+  ExpectJacobianWithAFlatContact(s, true);
 }
 
 // The laws' stiffness and damping are the values they are given: the wrist's

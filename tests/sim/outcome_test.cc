@@ -142,5 +142,21 @@ TEST(ProgressWatch, ProgressIsAJamProgressApproachOrLeavingContact) {
   EXPECT_EQ(w.last_progress_time(), 2.0);
 }
 
+TEST(ProgressWatch, AfterAWithdrawalOnlyApproachingBeyondTheBestIsProgress) {
+  ProgressWatch w;
+  w.Observe(true, 0.0, 0.0100, true, 1e-4);
+  w.Withdrew();
+  w.Observe(false, 0.1, 0.0150, false, 1e-4);  // pulled out of contact: none
+  EXPECT_EQ(w.last_progress_time(), 0.0);
+  w.Observe(false, 0.2, 0.0120, false, 1e-4);  // coming back, still out: none
+  EXPECT_EQ(w.last_progress_time(), 0.0);
+  w.Observe(false, 0.3, 0.0100, true, 1e-4);  // stopped where it was: none
+  EXPECT_EQ(w.last_progress_time(), 0.0);
+  w.Observe(false, 0.4, 0.0098, true, 1e-4);  // 2e-4 deeper than the best: progress
+  EXPECT_EQ(w.last_progress_time(), 0.4);
+  w.Observe(false, 0.5, 0.0200, false, 1e-4);  // out of contact again: progress
+  EXPECT_EQ(w.last_progress_time(), 0.5);
+}
+
 }  // namespace
 }  // namespace vahf::sim

@@ -117,6 +117,24 @@ TEST(RestWatch, ARestShorterThanRestTimeIsNotCounted) {
   }
 }
 
+TEST(RestWatch, TheOpenRestGrowsByAnIntervalPerDecisionAndEndsWithIt) {
+  const scene::SimulationParams sim = Defaults();
+  RestWatch w;
+  const auto at = [&](int i, double d, bool contact) {
+    w.Observe(i, Vector3d(0, 0, d), d, contact, sim);
+    return w.OpenRest(sim.decision_interval);
+  };
+  EXPECT_EQ(at(0, 0.2, true), 0.0);
+  EXPECT_DOUBLE_EQ(at(1, 0.2, true), 0.1);
+  EXPECT_DOUBLE_EQ(at(2, 0.2, true), 0.2);
+  EXPECT_DOUBLE_EQ(at(3, 0.2, true), 0.3);
+  EXPECT_EQ(at(4, 0.21, true), 0.0);  // 1 cm in 0.1 s: moving, the rest ended
+  EXPECT_EQ(w.summary().count, 1);
+  EXPECT_EQ(w.summary().withdrawals, 0);
+  w.Withdrew();
+  EXPECT_EQ(w.summary().withdrawals, 1);
+}
+
 TEST(RestWatch, ARestSpeedOfZeroCountsNoRest) {
   scene::SimulationParams sim = Defaults();
   sim.rest_speed = 0;

@@ -20,13 +20,13 @@ static_assert(sizeof(sim::TrialCounters) == 14 * 8, "encode the new counter");
 static_assert(sizeof(human::FactorValues) == 9 * 8, "encode the new factor");
 static_assert(sizeof(sim::PhaseSeconds) == 6 * 8, "encode the new phase");
 static_assert(sizeof(sim::TraceRow) == 288, "encode the new field of TraceRow");
-static_assert(sizeof(sim::RestSummary) == 3 * 8, "encode the new field of RestSummary");
-static_assert(sizeof(sim::TrialResult) == 1072, "encode the new field of TrialResult");
+static_assert(sizeof(sim::RestSummary) == 4 * 8, "encode the new field of RestSummary");
+static_assert(sizeof(sim::TrialResult) == 1088, "encode the new field of TrialResult");
 static_assert(sizeof(Warnings) == 7 * 48, "encode the new field of Warnings");
-static_assert(sizeof(PartRun) == 1088, "encode the new field of PartRun");
+static_assert(sizeof(PartRun) == 1104, "encode the new field of PartRun");
 static_assert(sizeof(CycleResult) == 392, "encode the new field of CycleResult");
 static_assert(sizeof(CycleRecord) == 432, "encode the new field of CycleRecord");
-static_assert(sizeof(StabilityTrial) == 1136, "encode the new field of StabilityTrial");
+static_assert(sizeof(StabilityTrial) == 1152, "encode the new field of StabilityTrial");
 
 [[noreturn]] void NotAnEncoding(const std::string& why) {
   throw ComputationError(ComputationError::Reason::kRefused,
@@ -167,7 +167,9 @@ json TrialToJson(const sim::TrialResult& trial) {
           {"trace", RowsToJson(t.trace)},
           {"samples", RowsToJson(t.samples)},
           {"warnings", WarningsToJson(t.warnings)},
-          {"rests", {t.rests.count, Bits(t.rests.total_time), Bits(t.rests.longest)}},
+          {"rests",
+           {t.rests.count, Bits(t.rests.total_time), Bits(t.rests.longest),
+            t.rests.withdrawals}},
           {"final_row", RowToJson(t.final_row)}};
 }
 
@@ -195,7 +197,7 @@ sim::TrialResult TrialFromJson(const json& j) {
   t.warnings = WarningsFromJson(j.at("warnings"));
   const json& rests = j.at("rests");
   t.rests = {rests.at(0).get<std::int64_t>(), FromBits(rests.at(1)),
-             FromBits(rests.at(2))};
+             FromBits(rests.at(2)), rests.at(3).get<std::int64_t>()};
   t.final_row = RowFromJson(j.at("final_row"));
   return t;
 }

@@ -87,6 +87,27 @@ double FrictionPushSlope(double friction, double max_push) {
   return 1.0 / (c * c * c * c);  // (1 + u^3)^(-4/3)
 }
 
+Eigen::Vector3d WithdrawalTarget(const Eigen::Vector3d& position,
+                                 const Eigen::Vector3d& target, double distance) {
+  const Eigen::Vector3d away = position - target;
+  const double size = away.norm();
+  if (!(size > 0)) return position;
+  return position + (distance / size) * away;
+}
+
+Eigen::Vector3d WithdrawalForce(const GuidanceParams& params, double psi, double mass,
+                                const Eigen::Vector3d& position,
+                                const Eigen::Vector3d& withdrawal_target,
+                                const Eigen::Vector3d& velocity, double friction,
+                                const Eigen::Vector3d& weight, double fade_length) {
+  const double b = 2.0 * params.damping_ratio * std::sqrt(params.kappa * psi * mass);
+  const Eigen::Vector3d d = withdrawal_target - position;
+  return params.kappa * psi * d - params.weight_support * weight +
+         FrictionPush(friction, params.max_push) * d /
+             std::sqrt(d.squaredNorm() + fade_length * fade_length) -
+         b * velocity;
+}
+
 double ContactBlend(double normal_force, double blend_force) {
   const double s = std::clamp(normal_force / blend_force, 0.0, 1.0);
   return s * s * (3.0 - 2.0 * s);

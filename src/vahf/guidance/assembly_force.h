@@ -88,6 +88,23 @@ struct GuidanceParams {
   // shipped shell-contact results: the piston rod's strike on the barrel
   // mouth reaches about 500 N of friction (seeds 1-6).
   double max_push = 0.0;
+  // When the part stops (docs/physics.md, "When the part stops"): a part in
+  // contact that has rested (sim/rest_watch.h) for stall_time is withdrawn:
+  // the operator pulls it towards the point withdraw_distance back along the
+  // line from its target, as in free motion (Eq. 7, the contact not pushed
+  // along), holding the target's orientation exactly (the paper's "adjusting
+  // the attitude", Sec. 4, Fig. 9I (b)-(c)), until at a decision it is out of
+  // contact and within completion_angle_deg of that orientation, and then
+  // guides it in again. stall_time is a simple reaction, perceive-decide-act, 240 ms in
+  // the Model Human Processor (Card, Moran and Newell, The Psychology of
+  // Human-Computer Interaction, 1983, ch. 2: 100 + 70 + 70 ms, range
+  // 105-470 ms); the response comes at the first decision at or after it.
+  // withdraw_distance is a named assumption, calibratable: 5 mm, the depth of
+  // a chamfer and a few millimetres of a mouth. stall_time 0, the default
+  // until the shipped results are re-run with it (issue 53, item 5): no
+  // response; 0.24 s is the cited value.
+  double stall_time = 0.0;
+  double withdraw_distance = 0.005;
   // Scales of the vision error E_i, metres at eta = 1 (docs/design.md decision 4):
   // along the line of sight (depth is hardest to judge) and across it.
   double vision_sigma_depth = 0.010;
@@ -151,6 +168,24 @@ struct FeltContact {
   Eigen::Vector3d normal_force = Eigen::Vector3d::Zero();
   double friction = 0.0;
 };
+
+// Where the operator pulls a stopped part (GuidanceParams::stall_time): the
+// point `distance` from the part's origin T, away from its target T_t along
+// the line T_t T. T itself where T is at the target.
+Eigen::Vector3d WithdrawalTarget(const Eigen::Vector3d& position,
+                                 const Eigen::Vector3d& target, double distance);
+
+// The operator's pull on a part it withdraws (GuidanceParams::stall_time),
+// towards the withdrawal's point T_w: Eq. 7's impedance with the part's
+// weight carried, and, as Eq. 8 pushes, the force needed to overcome the
+// friction f the hand feels (bounded by max_push) along d = T_w - T:
+//   F = kappa Psi d - s_w m g + p(f) d / sqrt(|d|^2 + e^2) - b v.
+// The contact's normal is not projected out: the pull leaves the contact.
+Eigen::Vector3d WithdrawalForce(const GuidanceParams& params, double psi, double mass,
+                                const Eigen::Vector3d& position,
+                                const Eigen::Vector3d& withdrawal_target,
+                                const Eigen::Vector3d& velocity, double friction,
+                                const Eigen::Vector3d& weight, double fade_length);
 
 // How far Eq. 8 has taken over from Eq. 7, in [0, 1]: the C1 smoothstep
 // 3 s^2 - 2 s^3 of s = |normal force| / blend_force, clamped to [0, 1]. 0 out

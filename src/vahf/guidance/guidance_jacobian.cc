@@ -57,6 +57,23 @@ ImpedancePartials ImpedanceForceJacobian(const GuidanceParams& params, double ps
   return out;
 }
 
+ImpedancePartials WithdrawalForceJacobian(const GuidanceParams& params, double psi,
+                                          double mass, const Vector3d& position,
+                                          const Vector3d& withdrawal_target,
+                                          double friction, double fade_length) {
+  const Matrix3d I = Matrix3d::Identity();
+  const double kp = params.kappa * psi;
+  const Vector3d d = withdrawal_target - position;
+  const double g = std::sqrt(d.squaredNorm() + fade_length * fade_length);
+  const double push = FrictionPush(friction, params.max_push);
+  ImpedancePartials out;
+  // dd = -dT; d(d / g) / dd = I / g - d d^T / g^3.
+  out.position = -kp * I - push * (I / g - d * d.transpose() / (g * g * g));
+  out.velocity = -2.0 * params.damping_ratio * std::sqrt(kp * mass) * I;
+  out.friction = FrictionPushSlope(friction, params.max_push) * d / g;
+  return out;
+}
+
 Matrix3d InverseRightJacobian(const Vector3d& theta) {
   const double t = theta.norm();
   // The coefficient's Taylor series 1/12 + t^2/720 near 0, where it cancels.

@@ -33,6 +33,13 @@ ImpedancePartials ImpedanceForceJacobian(const GuidanceParams& params, double ps
                                          const Eigen::Vector3d& weight,
                                          double fade_length);
 
+// The partials of WithdrawalForce at the same arguments (normal_force zero:
+// the pull does not read the contact's normal).
+ImpedancePartials WithdrawalForceJacobian(const GuidanceParams& params, double psi,
+                                          double mass, const Eigen::Vector3d& position,
+                                          const Eigen::Vector3d& withdrawal_target,
+                                          double friction, double fade_length);
+
 // Partials of AssemblyTorque: w.r.t. a small world rotation dtheta of the part
 // (rotation -> exp([dtheta]x) rotation, inertia_world turning with it:
 // inertia_world = rotation I rotation^T) and w.r.t. omega.

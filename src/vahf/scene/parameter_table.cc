@@ -230,6 +230,14 @@ std::vector<ParamSpec> ForceInContact() {
        "largest push the operator adds to overcome friction (Eq. 8); 0: unbounded, the "
        "paper's",
        VAHF_REAL(guidance.max_push)},
+      // A simple reaction, 240 ms (Card, Moran and Newell 1983; assembly_force.h).
+      {"guidance", "stall_time", "s", R::kClosed, 0, 1e5,
+       "a part resting in contact this long is withdrawn and guided in again (0.24: a "
+       "simple reaction); 0: never",
+       VAHF_REAL(guidance.stall_time)},
+      {"guidance", "withdraw_distance", "m", R::kClosed, 0, 1,
+       "how far the operator pulls a stopped part back (a named assumption)",
+       VAHF_REAL(guidance.withdraw_distance)},
   };
   return rows;
 }

@@ -36,15 +36,47 @@ void CheckOutcomes(TrialContext& c, std::int64_t i, double time,
     c.End(std::move(*end));
 }
 
+// The operator's response to a stopped part (GuidanceParams::stall_time):
+// a part that has rested in contact for stall_time is withdrawn towards the
+// point withdraw_distance back from where it stopped, held at the target's
+// orientation, until at a decision it is out of contact and within
+// completion_angle_deg of that orientation (pulled free and realigned); then
+// it is guided in again. Whether decision i withdraws, and where to.
+bool Withdrawing(TrialContext& c, const contact::RigidMotion& m, bool in_contact) {
+  const auto& p = c.params();
+  if (!c.model.operator_acts || c.ended || !(p.guidance.stall_time > 0)) return false;
+  if (c.withdrawal) {
+    if (in_contact || c.model.AngleToTargetDeg(m) > p.simulation.completion_angle_deg)
+      return true;
+    c.withdrawal.reset();
+  }
+  // Whole intervals: 1e-9 of one below stall_time is at it.
+  if (c.rests.OpenRest(p.simulation.decision_interval) <
+      p.guidance.stall_time - 1e-9 * p.simulation.decision_interval)
+    return false;
+  c.withdrawal = guidance::WithdrawalTarget(m.pose.translation(), c.model.target.position,
+                                            p.guidance.withdraw_distance);
+  c.rests.Withdrew();
+  c.progress.Withdrew();
+  return true;
+}
+
 // What the operator holds from decision i: Eq. 5's estimated target and the
 // held orientation, keyed by {seed, trial} and i; the part's own pose once
-// the trial has ended.
+// the trial has ended. A part being withdrawn is pulled towards the
+// withdrawal's point at the target's orientation instead, decision i's draws
+// not used.
 void Draw(TrialContext& c, std::int64_t i, const contact::RigidMotion& m,
-          const Vector3d& centre, const human::FactorValues& f, Decision* d) {
+          const Vector3d& centre, const human::FactorValues& f, bool in_contact,
+          Decision* d) {
   const TrialModel& model = c.model;
   const auto& p = c.params();
   const Vector3d T = m.pose.translation();
-  if (!c.ended) {
+  if (Withdrawing(c, m, in_contact)) {
+    d->withdraw = true;
+    d->estimated_target = *c.withdrawal;
+    d->held_orientation = model.target.Rotation();
+  } else if (!c.ended) {
     d->estimated_target = guidance::DrawEstimatedTarget(
         p.guidance, c.key, static_cast<std::uint64_t>(i), model.target.position, T,
         centre - model.posture.eye, f.eta, f.lambda_c, d->psi);
@@ -107,7 +139,7 @@ std::optional<Decision> DecideNow(TrialContext& c, double time,
   const bool in_contact = cf.in_contact() && cf.normal_force.norm() > 0;
   if (in_contact && c.first_contact_time < 0) c.first_contact_time = time;
   CheckOutcomes(c, i, time, m, f, psi, in_contact);
-  Draw(c, i, m, centre, f, &d);
+  Draw(c, i, m, centre, f, in_contact, &d);
 
   Vector3d force, torque;
   model.OperatorLoad(m, d, cf, &force, &torque);

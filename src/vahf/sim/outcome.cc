@@ -34,7 +34,9 @@ std::optional<Ending> CheckState(const contact::RigidMotion& m, double bounding_
 
 void ProgressWatch::Observe(bool first, double time, double distance, bool in_contact,
                             double jam_progress) {
-  if (first || best_distance_ - distance >= jam_progress || !in_contact) {
+  const bool nearer = best_distance_ - distance >= jam_progress;
+  if (nearer) withdrawn_ = false;
+  if (first || nearer || (!in_contact && !withdrawn_)) {
     if (first || distance < best_distance_) best_distance_ = distance;
     last_progress_time_ = time;
   }

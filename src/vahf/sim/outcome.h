@@ -31,16 +31,21 @@ std::optional<Ending> CheckState(const contact::RigidMotion& m, double bounding_
 
 // Progress towards the target, for the jam rule: a decision makes progress
 // when it is the first, when the part is out of contact, or when it is
-// jam_progress closer than the best distance so far.
+// jam_progress closer than the best distance so far. After the operator
+// withdrew the part (guidance/stall_time) being out of contact is not
+// progress until the part is jam_progress closer than its best again: a part
+// withdrawn and stopped again and again, getting no deeper, is jammed.
 class ProgressWatch {
  public:
   void Observe(bool first, double time, double distance, bool in_contact,
                double jam_progress);
+  void Withdrew() { withdrawn_ = true; }
   double last_progress_time() const { return last_progress_time_; }
 
  private:
   double best_distance_ = 0;
   double last_progress_time_ = 0;
+  bool withdrawn_ = false;
 };
 
 // What a decision measured, for CheckOperator.

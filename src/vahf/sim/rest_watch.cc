@@ -40,6 +40,11 @@ std::optional<Rest> RestWatch::Observe(std::int64_t decision,
   return ended;
 }
 
+double RestWatch::OpenRest(double decision_interval) const {
+  if (rest_start_ < 0) return 0;
+  return static_cast<double>(last_decision_ - rest_start_) * decision_interval;
+}
+
 std::optional<Rest> RestWatch::Close(const scene::SimulationParams& sim) {
   return End(sim);
 }

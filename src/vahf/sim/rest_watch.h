@@ -55,6 +55,13 @@ class RestWatch {
   // when it lasted at least sim.rest_time.
   std::optional<Rest> Close(const scene::SimulationParams& sim);
 
+  // How long the part has rested up to the last decision observed, counted
+  // or not yet (s, whole decision intervals); 0 when it is not resting.
+  double OpenRest(double decision_interval) const;
+  // The operator withdrew the part at the last decision observed
+  // (guidance/stall_time): counted in summary().withdrawals.
+  void Withdrew() { ++summary_.withdrawals; }
+
   const RestSummary& summary() const { return summary_; }
 
  private:

@@ -247,21 +247,30 @@ void TrialModel::OperatorLoad(const contact::RigidMotion& m, const Decision& d,
   if (!operator_acts) return;
   const Matrix3d& R = m.pose.linear();
   const Vector3d r_grasp = R * grasp;
+  // What the hand feels of the contact. Withdrawing a part it pulls against
+  // the friction alone (guidance::WithdrawalForce), not along the contact,
+  // as if out of it (the push at the grasp, the weight carried).
+  const guidance::FeltContact felt{d.withdraw ? Vector3d::Zero() : cf.normal_force,
+                                   cf.friction_force.norm()};
   // Where the push acts: the grasp; with the compliance centre at the
   // leading end, r_c = r_grasp + w R (leading end - grasp), passing to the
   // leading end as the contact blend w rises. It damps that point's velocity.
   Vector3d r_c = r_grasp;
   if (compliance_at_leading_end)
-    r_c += guidance::ContactBlend(cf.normal_force.norm(), blend_force) *
+    r_c += guidance::ContactBlend(felt.normal_force.norm(), blend_force) *
            (R * (leading_end - grasp));
   const Vector3d v_c = m.velocity + m.angular_velocity.cross(r_c);
   const auto& g = params.guidance;
   // The arm always carries its own weight (at the grasp); the part's, as
   // guidance says.
-  const guidance::FeltContact felt{cf.normal_force, cf.friction_force.norm()};
-  const Vector3d push = guidance::ImpedanceForce(
-      g, d.Vigour(), mass, m.pose.translation(), d.estimated_target, v_c, felt,
-      blend_force, part_mass * gravity, params.simulation.completion_distance);
+  const Vector3d push =
+      d.withdraw
+          ? guidance::WithdrawalForce(
+                g, d.Vigour(), mass, m.pose.translation(), d.estimated_target, v_c,
+                felt.friction, part_mass * gravity, params.simulation.completion_distance)
+          : guidance::ImpedanceForce(
+                g, d.Vigour(), mass, m.pose.translation(), d.estimated_target, v_c, felt,
+                blend_force, part_mass * gravity, params.simulation.completion_distance);
   *force = push - hand_mass * gravity;
   const Matrix3d inertia_world = R * torque_inertia_body * R.transpose();
   const Vector3d turn =

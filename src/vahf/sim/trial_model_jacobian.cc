@@ -27,6 +27,10 @@ LoadJacobian TrialModel::LoadJacobianAt(const contact::RigidMotion& m, const Dec
   const Vector3d r_grasp = R * grasp;
   const auto& g = params.guidance;
   const contact::ContactForces& cf = loads.contact;
+  // What the hand feels (OperatorLoad): withdrawing a part, the friction
+  // alone, so no derivative through the normal force.
+  const Vector3d felt_normal = d.withdraw ? Vector3d::Zero() : Vector3d(cf.normal_force);
+  const Block felt_normal_jacobian = d.withdraw ? Block::Zero() : cj.normal_force;
   // The push's point r_c (OperatorLoad): the grasp, or r_grasp + w u with
   // u = R (leading end - grasp) and w the contact blend, whose derivative
   // w' n^T dF_n comes through the contact's.
@@ -34,20 +38,24 @@ LoadJacobian TrialModel::LoadJacobianAt(const contact::RigidMotion& m, const Dec
   Eigen::Matrix<double, 1, 12> dw = Eigen::Matrix<double, 1, 12>::Zero();
   Vector3d u = Vector3d::Zero();
   if (compliance_at_leading_end) {
-    const double fn = cf.normal_force.norm();
+    const double fn = felt_normal.norm();
     u = R * (leading_end - grasp);
     r_c += guidance::ContactBlend(fn, blend_force) * u;
     if (fn > 0)
-      dw = guidance::ContactBlendSlope(fn, blend_force) *
-           (cf.normal_force.transpose() / fn) * cj.normal_force;
+      dw = guidance::ContactBlendSlope(fn, blend_force) * (felt_normal.transpose() / fn) *
+           felt_normal_jacobian;
   }
   const Vector3d v_c = m.velocity + m.angular_velocity.cross(r_c);
   const Matrix3d r_x = CrossMatrix(r_c);
   const double friction = cf.friction_force.norm();
-  const guidance::ImpedancePartials p = guidance::ImpedanceForceJacobian(
-      g, d.Vigour(), mass, m.pose.translation(), d.estimated_target, v_c,
-      {cf.normal_force, friction}, blend_force, part_mass * gravity,
-      params.simulation.completion_distance);
+  const guidance::ImpedancePartials p =
+      d.withdraw ? guidance::WithdrawalForceJacobian(
+                       g, d.Vigour(), mass, m.pose.translation(), d.estimated_target,
+                       friction, params.simulation.completion_distance)
+                 : guidance::ImpedanceForceJacobian(
+                       g, d.Vigour(), mass, m.pose.translation(), d.estimated_target, v_c,
+                       {cf.normal_force, friction}, blend_force, part_mass * gravity,
+                       params.simulation.completion_distance);
   // dr_c = dtheta x r_c + u dw (u turns with the part: dtheta x (w u) is in
   // the first term); dv_c = dv + dw_ x r_c + w_ x dr_c.
   Block dv_c = Block::Zero(), dr_c = Block::Zero();
@@ -56,7 +64,7 @@ LoadJacobian TrialModel::LoadJacobianAt(const contact::RigidMotion& m, const Dec
   dv_c = CrossMatrix(m.angular_velocity) * dr_c;
   dv_c.block<3, 3>(0, 6) += Matrix3d::Identity();
   dv_c.block<3, 3>(0, 9) += -r_x;
-  Block force = p.velocity * dv_c + p.normal_force * cj.normal_force;
+  Block force = p.velocity * dv_c + p.normal_force * felt_normal_jacobian;
   force.block<3, 3>(0, 0) += p.position;
   if (friction > 0)  // |F_f| has no derivative at 0: taken as 0 there
     force += p.friction * (cf.friction_force.transpose() / friction) * cj.friction_force;

@@ -77,6 +77,8 @@ std::string TrialResult::BriefReport() const {
   if (rests.count > 0)
     out += fmt::format(", {:.6g} s in all, the longest {:.6g} s", rests.total_time,
                        rests.longest);
+  if (rests.withdrawals > 0)
+    out += fmt::format("; withdrawals (guidance/stall_time): {}", rests.withdrawals);
   out += "\n";
   out += fmt::format("warnings: {}\n", warnings.Summary());
   return out;

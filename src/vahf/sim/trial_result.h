@@ -76,6 +76,8 @@ struct RestSummary {
   std::int64_t count = 0;
   double total_time = 0;  // s, summed over the rests counted
   double longest = 0;     // s
+  // Times the operator withdrew a part that had rested guidance/stall_time.
+  std::int64_t withdrawals = 0;
 
   void Add(double duration);
 };

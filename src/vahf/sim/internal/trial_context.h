@@ -63,6 +63,9 @@ struct TrialContext {
   double last_force = 0;
   ProgressWatch progress;
   RestWatch rests;  // observed at decisions (rest_watch.h)
+  // Where the operator is withdrawing a stopped part to, while it does
+  // (decisions.cc, GuidanceParams::stall_time).
+  std::optional<Vector3d> withdrawal;
   std::optional<Status> ended;
   std::string detail;
   double completion_time = -1;
