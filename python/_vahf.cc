@@ -271,10 +271,9 @@ py::dict Trial(const SceneHandle& scene, std::uint64_t seed, std::uint64_t trial
   request.position = position;
   request.integrator = integrator;
   request.sets = Sets(sets);
-  request.option = "set";
+  request.names = {"set", "position", "sample", "needs trace=True to hold the rows"};
   request.record_trace = trace;
   request.sample = sample;
-  request.trace_needed_rule = "needs trace=True to hold the rows";
   const vahf::sim::TrialResult r = Watched<vahf::sim::TrialResult>(
       [&](ProgressSink*) {
         return vahf::kinds::RunTrialRequest(scene.scene, scene.path, request);

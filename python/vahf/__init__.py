@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import io
 import json
+import operator
 import os
 from typing import Any, Callable, Optional, Union
 
@@ -54,16 +55,28 @@ def _sets(values):
     return [(str(name), value) for name, value in (values or {}).items()]
 
 
+def _integer(name, value, low, high):
+    """An integer argument read as the command reads its option: from
+    ``low`` to ``high``, else an InputError naming it."""
+    try:
+        number = None if isinstance(value, bool) else operator.index(value)
+    except TypeError:
+        number = None
+    if number is None or not low <= number <= high:
+        rule = "must be an integer from %d to %d" % (low, high)
+        raise InputError("%s = %r: %s" % (name, value, rule), name, "",
+                         repr(value), rule)
+    return number
+
+
 def _threads(threads, default=None):
     """The worker threads as the command takes --threads: 1 to 1024."""
     if threads is None and default is not None:
         return default
-    if isinstance(threads, bool) or not isinstance(threads, int) \
-            or not 1 <= threads <= 1024:
-        rule = "must be an integer from 1 to 1024"
-        raise InputError("threads = %r: %s" % (threads, rule), "threads", "",
-                         repr(threads), rule)
-    return threads
+    return _integer("threads", threads, 1, 1024)
+
+
+_U64 = 2 ** 64 - 1
 
 
 class _Tqdm:
@@ -173,11 +186,16 @@ def trial(scene: Union[PathLike, Scene], seed: int, trial: int = 0,
     result (its ``status``), not an exception."""
     if not isinstance(scene, Scene):
         scene = load_scene(scene)
+    # The integrator first, then the sets, as the command applies them.
+    sets = ([("simulation/integrator", integrator)] if integrator else []) \
+        + _sets(set)
     callback, _ = _progress(progress)
     try:
         fields = _vahf.trial(
-            scene, int(seed), int(trial), int(position or 0), integrator or "",
-            _sets(set), float(sample or 0), bool(trace), callback)
+            scene, _integer("seed", seed, 0, _U64),
+            _integer("trial", trial, 0, _U64),
+            _integer("position", position or 0, 0, 2 ** 31 - 1),
+            "", sets, float(sample or 0), bool(trace), callback)
     finally:
         _close(callback)
     return TrialResult(fields)
@@ -257,7 +275,9 @@ def run(experiment: Union[PathLike, Experiment], seed: Optional[int] = None,
     callback, line = _progress(progress)
     try:
         done = _vahf.run(
-            experiment, None if seed is None else int(seed), int(trials or 0),
+            experiment,
+            None if seed is None else _integer("seed", seed, 0, _U64),
+            0 if trials is None else _integer("trials", trials, 1, 10 ** 7),
             _threads(threads), os.fspath(out) if out else "", bool(resume), line,
             callback)
     finally:

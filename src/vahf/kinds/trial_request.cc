@@ -76,11 +76,11 @@ sim::TrialResult RunTrialRequest(scene::Scene scene, const std::string& path,
   if (!a.integrator.empty()) scene.params.simulation.integrator = a.integrator;
   if (!a.accuracy.empty())
     SetParameter("--accuracy", "simulation/accuracy", ValueOfText(a.accuracy), &scene);
-  SetParameters(a.option, a.sets, &scene);
+  SetParameters(a.names.sets, a.sets, &scene);
   if (const std::string v = scene::ParameterViolation(scene); !v.empty())
-    throw InputError(a.option, "", "applied to " + path, v);
+    throw InputError(a.names.sets, "", "applied to " + path, v);
   if (a.position < 0 || a.position >= static_cast<int>(scene.sequence.size()))
-    throw InputError("--position", "", std::to_string(a.position),
+    throw InputError(a.names.position, "", std::to_string(a.position),
                      "must be 0 to " + std::to_string(scene.sequence.size() - 1) +
                          ": the scene's sequence has " +
                          std::to_string(scene.sequence.size()) + " parts");
@@ -88,14 +88,15 @@ sim::TrialResult RunTrialRequest(scene::Scene scene, const std::string& path,
   options.sequence_position = a.position;
   options.record_trace = a.record_trace;
   if (a.sample != 0 && !(a.sample > 0 && a.sample <= scene.params.simulation.time_limit))
-    throw InputError("--sample", "", fmt::format("{}", a.sample),
+    throw InputError(a.names.sample, "", fmt::format("{}", a.sample),
                      "must be > 0 s and at most the scene's time_limit");
   if (a.sample > 0 && !a.record_trace)
-    throw InputError("--sample", "", fmt::format("{}", a.sample), a.trace_needed_rule);
+    throw InputError(a.names.sample, "", fmt::format("{}", a.sample),
+                     a.names.trace_needed);
   // Rows are held until the trace is written: 1e6 rows are about 0.5 GB of CSV.
   if (a.sample > 0 && scene.params.simulation.time_limit / a.sample > 1e6)
     throw InputError(
-        "--sample", "", fmt::format("{}", a.sample),
+        a.names.sample, "", fmt::format("{}", a.sample),
         fmt::format("at most 1e6 rows over the time limit ({} s): DT >= {} s",
                     scene.params.simulation.time_limit,
                     scene.params.simulation.time_limit / 1e6));

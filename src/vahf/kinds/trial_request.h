@@ -33,15 +33,19 @@ ParameterSets SplitParameterSets(const std::vector<std::string>& texts);
 struct TrialRequest {
   std::uint64_t seed = 1;
   std::uint64_t trial = 0;
-  int position = 0;              // the entry of the scene's sequence to assemble
-  std::string integrator;        // empty: the scene's
-  std::string accuracy;          // as --accuracy's text; empty: the scene's
-  ParameterSets sets;            // applied after integrator and accuracy
-  const char* option = "--set";  // names the sets in an error
+  int position = 0;        // the entry of the scene's sequence to assemble
+  std::string integrator;  // empty: the scene's
+  std::string accuracy;    // as --accuracy's text; empty: the scene's
+  ParameterSets sets;      // applied after integrator and accuracy
   bool record_trace = false;
   double sample = 0;  // s; > 0: also a trace row every `sample` s (needs record_trace)
-  // Names the trace's destination in errors ("--trace FILE" for the command).
-  std::string trace_needed_rule = "needs --trace FILE to write the rows to";
+  // How errors name the options: the command's, or the module's arguments.
+  struct Names {
+    const char* sets = "--set";
+    const char* position = "--position";
+    const char* sample = "--sample";
+    const char* trace_needed = "needs --trace FILE to write the rows to";
+  } names;
 };
 
 // Applies the request's integrator, accuracy and sets to `scene` (from file
