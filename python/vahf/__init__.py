@@ -149,6 +149,33 @@ class TrialResult:
     ``rests``, and ``trace``, a DataFrame with the trace CSV's columns
     (``trace_csv`` is its text, the bytes ``vahf trial --trace`` writes)."""
 
+    status: str  # completed, timeout, exhausted, unreachable, jammed, ...
+    detail: str  # why it ended
+    part: str
+    integrator: str
+    accuracy: float
+    seed: int
+    trial: int
+    end_time: float  # simulated s
+    completion_time: float  # s; -1 unless completed
+    first_contact_time: float  # s; -1 if never in contact
+    work: float  # J (Eq. 4)
+    max_penetration: float  # m
+    penetration_bound: float  # m; 0 without a radial fit
+    clearance: float  # m
+    stiffness: float
+    line_stiffness: float
+    wall_seconds: float  # measured, never part of a digest
+    cpu_seconds: float  # measured, never part of a digest
+    counters: dict
+    rests: dict
+    warnings: dict
+    warnings_summary: str
+    summary: str  # the text vahf trial prints
+    trace_csv: str  # "" when no trace was recorded
+    trace_rows: int
+    sample_rows: int
+
     def __init__(self, fields: dict):
         self.__dict__.update(fields)
         self._trace = None
