@@ -433,12 +433,9 @@ PYBIND11_MODULE(_vahf, m) {
       "replay",
       [](const std::string& run_dir, const std::string& cycle, const std::string& trace,
          double sample) {
-        vahf::kinds::ReplayOptions o{run_dir, cycle, trace, sample};
-        if (o.sample != 0 && !(o.sample > 0))
-          throw vahf::InputError("sample", "", std::to_string(o.sample), "must be > 0 s");
-        if (o.sample > 0 && o.trace.empty())
-          throw vahf::InputError("sample", "", std::to_string(o.sample),
-                                 "needs trace=FILE to write the rows to");
+        vahf::kinds::ReplayOptions o{run_dir,  cycle,
+                                     trace,    sample,
+                                     "sample", "needs trace=FILE to write the rows to"};
         return Watched<int>([&](ProgressSink*) { return vahf::kinds::Replay(o); },
                             py::none());
       },

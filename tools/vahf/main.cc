@@ -433,12 +433,6 @@ int main(int argc, char** argv) {
     if (*trial) return Trial(trial_args);
     if (*synthesize) return Synthesize(synth_args);
     if (*replay) {
-      if (replay_options.sample != 0 && !(replay_options.sample > 0))
-        throw vahf::InputError("--sample", "", fmt::format("{}", replay_options.sample),
-                               "must be > 0 s");
-      if (replay_options.sample > 0 && replay_options.trace.empty())
-        throw vahf::InputError("--sample", "", fmt::format("{}", replay_options.sample),
-                               "needs --trace FILE to write the rows to");
       vahf::experiment::InstallInterruptHandler();
       return vahf::kinds::Replay(replay_options);
     }
