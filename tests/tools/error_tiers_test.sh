@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every `throw` under src/ and tools/vahf/ throws one of the error tiers of
 # src/vahf/core/error.h (docs/design.md, "Errors"): vahf::InputError,
-# vahf::ComputationError, a class declared under src/ that derives from one of
+# vahf::ComputationError, vahf::InternalError (a failed check, thrown only in
+# the Python module's process), a class declared under src/ that derives from one of
 # them, or experiment::Interrupted (a stop the user asked for). A rethrow
 # (`throw;`) is allowed. Then the check itself is checked: a copy with a
 # standard exception thrown must fail, naming the file and line, and a copy
@@ -14,10 +15,10 @@ source "$(dirname "$0")/check_of_a_check.sh"
 
 sources() { grep -rlP --include='*.h' --include='*.cc' '\bthrow\b' "$@"; }
 
-# The tiers: the two classes of core/error.h, Interrupted, and every class
+# The tiers: the three classes of core/error.h, Interrupted, and every class
 # declared in DIR... deriving (through any number of steps) from one of them.
 tiers() {
-  local known=" InputError ComputationError Interrupted " grew=1 name base
+  local known=" InputError ComputationError InternalError Interrupted " grew=1 name base
   local pairs
   pairs=$(grep -rhoP --include='*.h' --include='*.cc' \
     'class\s+\w+\s*(final\s*)?:\s*public\s+[\w:]+' "$@" |

@@ -17,24 +17,23 @@
 #include <optional>
 #include <string>
 
-#include "vahf/calibrate/synthetic_lab.h"
 #include "vahf/core/atomic_file.h"
 #include "vahf/core/error.h"
 #include "vahf/core/temporary_directory.h"
-#include "vahf/data/lab_dataset.h"
 #include "vahf/experiment/interrupt.h"
 #include "vahf/experiment/launched_ranks.h"
 #include "vahf/experiment/table1_reference.h"
+#include "vahf/kinds/check_file.h"
 #include "vahf/kinds/kind.h"
 #include "vahf/kinds/replay.h"
 #include "vahf/kinds/run_support.h"
+#include "vahf/kinds/synthesize.h"
+#include "vahf/kinds/trial_request.h"
 #include "vahf/kinds/verify.h"
 #include "vahf/report/output_directory.h"
 #include "vahf/scene/experiment_file.h"
-#include "vahf/scene/json_reader.h"
 #include "vahf/scene/overrides.h"
 #include "vahf/scene/parameter_table.h"
-#include "vahf/scene/scene_loader.h"
 #include "vahf/scene/stepper_catalogue.h"
 #include "vahf/sim/trace_csv.h"
 #include "vahf/sim/trial.h"
@@ -42,42 +41,7 @@
 namespace {
 
 int Check(const std::string& path) {
-  const nlohmann::json document = vahf::scene::ReadJsonFile(path);  // read once
-  const std::string format = vahf::scene::FormatOf(document, path);
-  if (format == "lab") {
-    std::fputs(vahf::data::DescribeLabDataset(vahf::data::ParseLabDataset(document, path))
-                   .c_str(),
-               stdout);
-  } else if (format == "overrides") {
-    const vahf::scene::ParameterOverrides o = vahf::scene::LoadOverrides(path);
-    std::printf("parameter overrides (%s)%s%s\n", path.c_str(),
-                o.source.empty() ? "" : ": ", o.source.c_str());
-    for (const auto& [name, value] : o.values)
-      std::printf("  %s = %s\n", name.c_str(), value.dump().c_str());
-  } else if (format == "synthetic") {
-    const vahf::calibrate::SyntheticLabSpec spec =
-        vahf::calibrate::LoadSyntheticLabSpec(path);
-    std::printf(
-        "synthetic lab '%s': scene %s, %zu operator(s) x %d repetitions, seed %llu, "
-        "reading error sd %g s, resolution %g s\n",
-        spec.name.c_str(), spec.scene_path.c_str(), spec.operators.size(),
-        spec.repetitions, static_cast<unsigned long long>(spec.seed), spec.time_sd,
-        spec.time_resolution);
-    for (const auto& [name, value] : spec.truth)
-      std::printf("  %s = %g (stated)\n", name.c_str(), value);
-    std::fputs(vahf::kinds::DescribeSceneModels(spec.scene).c_str(), stdout);
-  } else if (format == "scene") {
-    const vahf::scene::Scene scene = vahf::scene::ParseScene(document, path);
-    std::fputs(vahf::kinds::DescribeSceneModels(scene).c_str(), stdout);
-  } else {
-    const vahf::scene::ExperimentFile e = vahf::kinds::ParseExperiment(document, path);
-    std::fputs(vahf::kinds::CheckExperiment(e).c_str(), stdout);
-  }
-  std::printf("%s: valid %s\n", path.c_str(),
-              format == "lab"         ? "lab dataset"
-              : format == "overrides" ? "parameter override file"
-              : format == "synthetic" ? "synthetic lab generator"
-                                      : format.c_str());
+  std::fputs(vahf::kinds::CheckFile(path).c_str(), stdout);
   return 0;
 }
 
@@ -100,77 +64,18 @@ struct TrialArgs {
   double sample = 0;
 };
 
-// The scene's file kind, told apart before it is read as a scene: another
-// vahf file is named as such, with the command that takes it.
-void ExpectSceneFile(const nlohmann::json& document, const std::string& path) {
-  const std::string format = vahf::scene::FormatOf(document, path);
-  if (format == "scene") return;
-  const char* what = format == "experiment"
-                         ? "an experiment file (run it with `vahf run`)"
-                     : format == "lab" ? "a lab dataset (compare or calibrate against it "
-                                         "with an experiment file and `vahf run`)"
-                     : format == "overrides" ? "a parameter override file (apply it with "
-                                               "`vahf run EXPERIMENT --overrides FILE`)"
-                                             : "a synthetic lab generator (run it with "
-                                               "`vahf synthesize`)";
-  vahf::scene::JsonNode(document, path)
-      .Required("format")
-      .Fail(fmt::format("this is {}; `vahf trial` takes a scene file", what));
-}
-
-// Sets parameter `name` of `scene` from command-line text by the parameter
-// table's rule: the text is read as JSON (a number, or a bare name for a
-// choice), and an error names `option`, the parameter and the rule.
-void SetParameter(const char* option, const std::string& name, const std::string& text,
-                  vahf::scene::Scene* scene) {
-  const vahf::scene::ParamSpec* spec = vahf::scene::FindParam(name);
-  if (!spec)
-    throw vahf::InputError(option, "", name, "names no parameter (see `vahf params`)");
-  nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
-  if (value.is_discarded()) value = text;  // a choice's bare name
-  vahf::scene::ReadParamValue(*spec, vahf::scene::JsonNode(value, option, "/" + name),
-                              &scene->params);
-}
-
 int Trial(const TrialArgs& a) {
-  const nlohmann::json document = vahf::scene::ReadJsonFile(a.scene);
-  ExpectSceneFile(document, a.scene);
-  vahf::scene::Scene scene = vahf::scene::ParseScene(document, a.scene);
-  if (!a.integrator.empty()) scene.params.simulation.integrator = a.integrator;
-  if (!a.accuracy.empty())
-    SetParameter("--accuracy", "simulation/accuracy", a.accuracy, &scene);
-  for (const std::string& set : a.sets) {
-    const std::size_t eq = set.find('=');
-    if (eq == std::string::npos)
-      throw vahf::InputError("--set", "", set,
-                             "takes GROUP/KEY=VALUE, e.g. simulation/max_steps=20000");
-    SetParameter("--set", set.substr(0, eq), set.substr(eq + 1), &scene);
-  }
-  if (const std::string v = vahf::scene::ParameterViolation(scene); !v.empty())
-    throw vahf::InputError("--set", "", "applied to " + a.scene, v);
-  if (a.position < 0 || a.position >= static_cast<int>(scene.sequence.size()))
-    throw vahf::InputError("--position", "", std::to_string(a.position),
-                           "must be 0 to " + std::to_string(scene.sequence.size() - 1) +
-                               ": the scene's sequence has " +
-                               std::to_string(scene.sequence.size()) + " parts");
-  vahf::sim::TrialOptions options;
-  options.sequence_position = a.position;
-  options.record_trace = !a.trace.empty();
-  if (a.sample != 0 && !(a.sample > 0 && a.sample <= scene.params.simulation.time_limit))
-    throw vahf::InputError("--sample", "", fmt::format("{}", a.sample),
-                           "must be > 0 s and at most the scene's time_limit");
-  if (a.sample > 0 && a.trace.empty())
-    throw vahf::InputError("--sample", "", fmt::format("{}", a.sample),
-                           "needs --trace FILE to write the rows to");
-  // Rows are held until the trace is written: 1e6 rows are about 0.5 GB of CSV.
-  if (a.sample > 0 && scene.params.simulation.time_limit / a.sample > 1e6)
-    throw vahf::InputError(
-        "--sample", "", fmt::format("{}", a.sample),
-        fmt::format("at most 1e6 rows over the time limit ({} s): DT >= {} s",
-                    scene.params.simulation.time_limit,
-                    scene.params.simulation.time_limit / 1e6));
-  options.sample_interval = a.sample;
-  const vahf::sim::TrialResult r = vahf::sim::RunTrial(scene, {a.seed, a.trial}, options);
+  vahf::kinds::TrialRequest request;
+  request.seed = a.seed;
+  request.trial = a.trial;
+  request.position = a.position;
+  request.integrator = a.integrator;
+  request.accuracy = a.accuracy;
+  request.sets = vahf::kinds::SplitParameterSets(a.sets);
+  request.record_trace = !a.trace.empty();
+  request.sample = a.sample;
+  const vahf::sim::TrialResult r =
+      vahf::kinds::RunTrialRequest(vahf::kinds::LoadSceneFile(a.scene), a.scene, request);
   if (!a.trace.empty()) vahf::WriteFileAtomically(a.trace, vahf::sim::TraceCsv(r));
   std::fputs(r.BriefReport().c_str(), stdout);
   if (!a.trace.empty())
@@ -210,16 +115,14 @@ int Run(const RunArgs& a, const vahf::experiment::Ranks* ranks) {
   // refusal (rank 0's output path, another's temporary directory) stops
   // every rank alike.
   const auto prepare = [&] {
-    file = vahf::kinds::LoadExperiment(a.experiment);
-    if (!a.overrides.empty())
-      vahf::scene::ApplyOverrides(vahf::scene::LoadOverrides(a.overrides), &*file);
+    file = vahf::kinds::LoadExperiment(a.experiment, a.overrides);
     context.settings.seed = a.seed_given ? a.seed : file->seed;
     context.settings.trials = a.trials;
     context.settings.threads = a.threads;
     context.settings.ranks = ranks;
-    std::string out = a.out.empty() ? "runs/" + file->name + "-seed" +
-                                          std::to_string(context.settings.seed)
-                                    : a.out;
+    std::string out = a.out.empty()
+                          ? vahf::kinds::DefaultRunDirectory(*file, context.settings.seed)
+                          : a.out;
     bool resume = a.resume;
     if (ranks && ranks->rank() != 0) {
       own.emplace("vahf-rank" + std::to_string(ranks->rank()));
@@ -260,21 +163,10 @@ struct SynthesizeArgs {
 };
 
 int Synthesize(const SynthesizeArgs& a) {
-  const vahf::calibrate::SyntheticLabSpec spec =
-      vahf::calibrate::LoadSyntheticLabSpec(a.generator);
   vahf::experiment::RunnerOptions options;
   options.threads = a.threads;
-  options.label = spec.name + " (synthetic lab)";
-  options.unit = "cycles";
   vahf::experiment::InstallInterruptHandler();
-  const vahf::data::LabDataset lab = vahf::calibrate::GenerateSyntheticLab(spec, options);
-  vahf::data::WriteLabDataset(lab, a.out);
-  std::string segments;
-  if (!lab.segments.empty())
-    segments = " and " + std::to_string(lab.segments.size()) + " segment row(s)";
-  std::printf("%s: %zu trials of %zu operator(s)%s written to %s/dataset.json\n",
-              spec.name.c_str(), lab.trials.size(), spec.operators.size(),
-              segments.c_str(), a.out.c_str());
+  std::fputs(vahf::kinds::Synthesize(a.generator, a.out, options).c_str(), stdout);
   return 0;
 }
 
@@ -541,12 +433,6 @@ int main(int argc, char** argv) {
     if (*trial) return Trial(trial_args);
     if (*synthesize) return Synthesize(synth_args);
     if (*replay) {
-      if (replay_options.sample != 0 && !(replay_options.sample > 0))
-        throw vahf::InputError("--sample", "", fmt::format("{}", replay_options.sample),
-                               "must be > 0 s");
-      if (replay_options.sample > 0 && replay_options.trace.empty())
-        throw vahf::InputError("--sample", "", fmt::format("{}", replay_options.sample),
-                               "needs --trace FILE to write the rows to");
       vahf::experiment::InstallInterruptHandler();
       return vahf::kinds::Replay(replay_options);
     }

@@ -16,7 +16,9 @@
 //    without the result catches ComputationError and tests reason(), or
 //    catches a subclass (report::PlotError); never a standard exception.
 // 3. Internal check: an invariant the code itself guarantees fails. That is a
-//    bug, not input: VAHF_CHECK aborts with file and line.
+//    bug, not input: VAHF_CHECK aborts with file and line. A host that must
+//    not end (the Python module, python/) calls ThrowOnInternalCheck() once:
+//    a failed check then throws InternalError instead; the command never does.
 //
 // Not an error: experiment::Interrupted (experiment/interrupt.h) reports a
 // stop the user asked for (Ctrl-C); the command exits kExitInterrupted (130,
@@ -73,9 +75,34 @@ class ComputationError : public std::runtime_error {
   Reason reason_;
 };
 
+// A failed internal check (VAHF_CHECK), thrown instead of aborting once
+// ThrowOnInternalCheck() was called. what() reads "internal error (a bug):
+// FILE:LINE: check 'CONDITION' failed: MESSAGE".
+class InternalError : public std::logic_error {
+ public:
+  InternalError(std::string condition, std::string file, int line, std::string message);
+
+  const std::string& condition() const { return condition_; }
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string condition_, file_;
+  int line_;
+  std::string message_;
+};
+
 // Aborts with file and line when an internal invariant fails: a bug, not input.
+// After ThrowOnInternalCheck(), throws InternalError instead.
 [[noreturn]] void CheckFailed(const char* condition, const char* file, int line,
                               const std::string& message);
+
+// From now on, in this process, a failed check throws InternalError. For a
+// host that must outlive a bug (the Python module); the command never calls it.
+// A check that fails where no exception may leave (a destructor, a noexcept
+// function) still ends the process, by std::terminate.
+void ThrowOnInternalCheck();
 
 }  // namespace vahf
 

@@ -65,6 +65,7 @@ RunnerOptions RunnerOptionsOf(const RunSettings& s, const std::string& label,
   o.label = label;
   o.unit = unit;
   o.progress = s.progress;
+  o.progress_sink = s.progress_sink;
   o.journal = s.journal;
   o.ranks = s.ranks;
   return o;

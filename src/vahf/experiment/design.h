@@ -101,7 +101,8 @@ struct RunSettings {
   int trials = 0;  // > 0 overrides the experiment file's
   int threads = 1;
   bool progress = true;
-  Journal* journal = nullptr;  // the run's journal (journal.h); null: none
+  ProgressSink* progress_sink = nullptr;  // progress.h; null: none
+  Journal* journal = nullptr;             // the run's journal (journal.h); null: none
   const Ranks* ranks =
       nullptr;  // the processes it is spread over (ranks.h); null: this one
   int RankCount() const { return ranks ? ranks->size() : 1; }

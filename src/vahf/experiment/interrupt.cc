@@ -39,6 +39,10 @@ void InstallInterruptHandler() {
 
 bool StopRequested() { return stop_requested.load(std::memory_order_relaxed); }
 
+void RequestStop() { stop_requested.store(true, std::memory_order_relaxed); }
+
+void ClearStop() { stop_requested.store(false, std::memory_order_relaxed); }
+
 void RequestStopForTesting() { stop_requested.store(true, std::memory_order_relaxed); }
 
 void ClearStopForTesting() { stop_requested.store(false, std::memory_order_relaxed); }

@@ -26,6 +26,12 @@ void InstallInterruptHandler();
 // test requested a stop.
 bool StopRequested();
 
+// For a host that watches for signals itself (the Python module, which
+// installs no handler): set the stop flag as a signal would, and clear it
+// before the next call.
+void RequestStop();
+void ClearStop();
+
 // Test hooks: set and clear the stop flag as a signal would.
 void RequestStopForTesting();
 void ClearStopForTesting();

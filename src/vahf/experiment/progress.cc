@@ -38,6 +38,26 @@ bool IsTerminal(std::FILE* stream) {
   return stream != nullptr && ::isatty(::fileno(stream)) == 1;
 }
 
+void ProgressSink::Begin(const std::string& label, const std::string& unit,
+                         std::size_t total) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  state_.label = label;
+  state_.unit = unit;
+  state_.total = total;
+  state_.done = 0;
+  ++state_.batches;
+}
+
+void ProgressSink::Update(std::size_t done) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  state_.done = done;
+}
+
+ProgressSink::State ProgressSink::Get() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return state_;
+}
+
 ProgressMeter::ProgressMeter(std::string label, std::size_t total, bool enabled,
                              std::FILE* stream, std::string unit, Style style)
     : label_(std::move(label)),

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdio>
+#include <mutex>
 #include <string>
 
 namespace vahf::experiment {
@@ -21,6 +22,26 @@ std::string FormatProgress(const std::string& label, std::size_t done, std::size
 
 // Whether `stream` is a terminal (where a line can be rewritten in place).
 bool IsTerminal(std::FILE* stream);
+
+// Where a run's progress can be read from another thread, for a host that
+// shows it itself (the Python module's callback): the runner's watching
+// thread stores each batch's label, unit, done and total as it updates its
+// line. The numbers only; nothing is printed.
+class ProgressSink {
+ public:
+  struct State {
+    std::string label, unit;
+    std::size_t done = 0, total = 0;
+    std::size_t batches = 0;  // batches begun so far (a run may have several)
+  };
+  void Begin(const std::string& label, const std::string& unit, std::size_t total);
+  void Update(std::size_t done);
+  State Get() const;
+
+ private:
+  mutable std::mutex mutex_;
+  State state_;
+};
 
 class ProgressMeter {
  public:

@@ -100,6 +100,7 @@ void RunIndices(std::size_t n, const RunnerOptions& options,
                       IsTerminal(options.progress_stream) ? ProgressMeter::Style::kInPlace
                                                           : ProgressMeter::Style::kLog);
   std::size_t done = 0;
+  if (options.progress_sink) options.progress_sink->Begin(options.label, options.unit, n);
   {
     std::unique_lock<std::mutex> lock(shared.mutex);
     while (shared.running_workers > 0) {
@@ -107,10 +108,12 @@ void RunIndices(std::size_t n, const RunnerOptions& options,
       done = shared.done;
       lock.unlock();
       meter.Update(done, elapsed_s());
+      if (options.progress_sink) options.progress_sink->Update(done);
       lock.lock();
     }
     done = shared.done;
   }
+  if (options.progress_sink) options.progress_sink->Update(done);
   for (std::thread& t : pool) t.join();
   meter.Finish(done, elapsed_s());
 

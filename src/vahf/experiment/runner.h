@@ -20,12 +20,16 @@
 
 namespace vahf::experiment {
 
+class ProgressSink;  // progress.h
+
 struct RunnerOptions {
   int threads = 1;              // worker threads, >= 1
   std::string label;            // names the run on the progress line
   std::string unit = "trials";  // what one index is, on the progress line
   bool progress = true;         // print the progress line (progress.h)
   std::FILE* progress_stream = stderr;
+  // Also stores the progress here (progress.h), for a host to read; null: not.
+  ProgressSink* progress_sink = nullptr;
   // Keeps each finished index and resumes those it holds (journal.h), for a
   // RunIndexed given a codec; null: nothing is kept.
   Journal* journal = nullptr;

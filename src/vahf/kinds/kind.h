@@ -8,6 +8,7 @@
 // own files.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -96,6 +97,12 @@ std::string KindIndexMarkdown();
 // Reads an experiment file: the common fields, the scene, then its kind's
 // keys; errors name whichever file holds the fault.
 scene::ExperimentFile LoadExperiment(const std::string& path);
+// The same, then the parameter-override file `overrides` (vahf-overrides/1)
+// applied to every scene it runs; empty: none (`vahf run --overrides`).
+scene::ExperimentFile LoadExperiment(const std::string& path,
+                                     const std::string& overrides);
+// Where `vahf run` writes a run without --out: runs/NAME-seedSEED.
+std::string DefaultRunDirectory(const scene::ExperimentFile& file, std::uint64_t seed);
 scene::ExperimentFile ParseExperiment(const nlohmann::json& document,
                                       const std::string& path);
 

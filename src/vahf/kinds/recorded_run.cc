@@ -9,7 +9,6 @@
 #include "vahf/core/error.h"
 #include "vahf/core/whole_file.h"
 #include "vahf/kinds/kind.h"
-#include "vahf/scene/overrides.h"
 
 namespace vahf::kinds {
 
@@ -39,10 +38,7 @@ report::RecordedRun ReadRecordedRun(const std::string& run_dir) {
 }
 
 scene::ExperimentFile LoadRecordedExperiment(const report::RecordedRun& run) {
-  scene::ExperimentFile file = LoadExperiment(run.invocation.experiment);
-  if (!run.invocation.overrides.empty())
-    scene::ApplyOverrides(scene::LoadOverrides(run.invocation.overrides), &file);
-  return file;
+  return LoadExperiment(run.invocation.experiment, run.invocation.overrides);
 }
 
 std::optional<std::string> ReadResultFile(const std::string& run_dir,

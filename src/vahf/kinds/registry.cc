@@ -14,6 +14,7 @@
 #include "vahf/report/manifest.h"
 #include "vahf/report/run_output.h"
 #include "vahf/scene/json_reader.h"
+#include "vahf/scene/overrides.h"
 
 namespace vahf::kinds {
 
@@ -61,6 +62,17 @@ std::string KindsReading(const std::string& key) {
 
 scene::ExperimentFile LoadExperiment(const std::string& path) {
   return ParseExperiment(scene::ReadJsonFile(path), path);
+}
+
+scene::ExperimentFile LoadExperiment(const std::string& path,
+                                     const std::string& overrides) {
+  scene::ExperimentFile file = LoadExperiment(path);
+  if (!overrides.empty()) scene::ApplyOverrides(scene::LoadOverrides(overrides), &file);
+  return file;
+}
+
+std::string DefaultRunDirectory(const scene::ExperimentFile& file, std::uint64_t seed) {
+  return "runs/" + file.name + "-seed" + std::to_string(seed);
 }
 
 scene::ExperimentFile ParseExperiment(const nlohmann::json& document,

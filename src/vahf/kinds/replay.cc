@@ -119,6 +119,12 @@ std::string CycleTrace(const experiment::CycleResult& cycle) {
 }  // namespace
 
 int Replay(const ReplayOptions& options) {
+  if (options.sample != 0 && !(options.sample > 0))
+    throw InputError(options.sample_option, "", fmt::format("{}", options.sample),
+                     "must be > 0 s");
+  if (options.sample > 0 && options.trace.empty())
+    throw InputError(options.sample_option, "", fmt::format("{}", options.sample),
+                     options.trace_needed);
   const report::RecordedRun run = ReadRecordedRun(options.run_dir);
   const CycleRow found = FindRow(run, options.run_dir, options.cycle);
   const data::CsvTable table(

@@ -14,6 +14,10 @@ struct ReplayOptions {
   std::string cycle;  // TABLE:ROW, ROW the 1-based data row (the header is row 0)
   std::string trace;  // write the cycle's trace here (CSV; empty: none)
   double sample = 0;  // with `trace`: also a row every DT s of simulated time
+  // How errors name sample and trace: the command's options, or the Python
+  // module's arguments.
+  const char* sample_option = "--sample";
+  const char* trace_needed = "needs --trace FILE to write the rows to";
 };
 
 // Reads and checks the run (recorded_run.h), finds the row's experiment (a
@@ -21,9 +25,10 @@ struct ReplayOptions {
 // its recorded stream, work and repetition, prints its rows and compares
 // them with the table's rows of that cycle. Returns 0 when they are
 // identical, 1 when one differs (the first difference named, result_diff.h).
-// A bad --cycle, a table that is no cycles table of the run, a row past its
-// end, a kind whose cycles cannot be replayed, and the input errors of
-// ReadRecordedRun are InputErrors.
+// A sample that is not > 0 or comes without a trace, a bad --cycle, a
+// table that is no cycles table of the run, a row past its end, a kind
+// whose cycles cannot be replayed, and the input errors of ReadRecordedRun
+// are InputErrors.
 int Replay(const ReplayOptions& options);
 
 }  // namespace vahf::kinds

@@ -11,9 +11,7 @@
 #include "vahf/scene/stepper_catalogue.h"
 
 namespace vahf::scene {
-namespace {
 
-// "in [lo, hi]", "in (lo, hi]", "integer in [lo, hi]" or the names.
 std::string RuleText(const ParamSpec& s) {
   const std::string lo = NumberText(s.lo), hi = NumberText(s.hi);  // json_reader.h
   switch (s.rule) {
@@ -32,6 +30,8 @@ std::string RuleText(const ParamSpec& s) {
   }
   return "";
 }
+
+namespace {
 
 // "name: description; ..." of a registry's entries, for the meaning of its choice.
 template <class Entries>

@@ -49,6 +49,10 @@ const ParamSpec* FindParam(const std::string& name);
 // reader of parameter values).
 void ReadParamValue(const ParamSpec& spec, const JsonNode& value, Parameters* p);
 
+// Its rule as `vahf params` states it: "in [lo, hi]", "in (lo, hi]",
+// "integer in [lo, hi]" or the names of its choices.
+std::string RuleText(const ParamSpec& spec);
+
 // The value of a parameter in `p`, as text.
 std::string ParamValueText(const ParamSpec& spec, const Parameters& p);
 
