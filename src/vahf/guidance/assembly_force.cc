@@ -87,6 +87,10 @@ double FrictionPushSlope(double friction, double max_push) {
   return 1.0 / (c * c * c * c);  // (1 + u^3)^(-4/3)
 }
 
+double ForceDamping(const GuidanceParams& params, double psi, double mass) {
+  return 2.0 * params.damping_ratio * std::sqrt(params.kappa * psi * mass);
+}
+
 Eigen::Vector3d WithdrawalTarget(const Eigen::Vector3d& position,
                                  const Eigen::Vector3d& target, double distance) {
   const Eigen::Vector3d away = position - target;
@@ -100,7 +104,7 @@ Eigen::Vector3d WithdrawalForce(const GuidanceParams& params, double psi, double
                                 const Eigen::Vector3d& withdrawal_target,
                                 const Eigen::Vector3d& velocity, double friction,
                                 const Eigen::Vector3d& weight, double fade_length) {
-  const double b = 2.0 * params.damping_ratio * std::sqrt(params.kappa * psi * mass);
+  const double b = ForceDamping(params, psi, mass);
   const Eigen::Vector3d d = withdrawal_target - position;
   return params.kappa * psi * d - params.weight_support * weight +
          FrictionPush(friction, params.max_push) * d /
@@ -119,7 +123,7 @@ Eigen::Vector3d ImpedanceForce(const GuidanceParams& params, double psi, double 
                                const Eigen::Vector3d& velocity,
                                const FeltContact& contact, double blend_force,
                                const Eigen::Vector3d& weight, double fade_length) {
-  const double b = 2.0 * params.damping_ratio * std::sqrt(params.kappa * psi * mass);
+  const double b = ForceDamping(params, psi, mass);
   const Eigen::Vector3d to_target = estimated_target - position;
   const double fn = contact.normal_force.norm();
   const double w = ContactBlend(fn, blend_force);

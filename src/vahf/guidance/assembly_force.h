@@ -91,13 +91,13 @@ struct GuidanceParams {
   // When the part stops (docs/physics.md, "When the part stops"): a part in
   // contact that has rested (sim/rest_watch.h) for stall_time is withdrawn:
   // the operator pulls it towards the point withdraw_distance back along the
-  // line from its target, as in free motion (Eq. 7, the contact not pushed
-  // along), holding the target's orientation exactly (the paper's "adjusting
-  // the attitude", Sec. 4, Fig. 9I (b)-(c)), until at a decision it is out of
-  // contact and within completion_angle_deg of that orientation, and then
-  // guides it in again. stall_time is a simple reaction, perceive-decide-act, 240 ms in
-  // the Model Human Processor (Card, Moran and Newell, The Psychology of
-  // Human-Computer Interaction, 1983, ch. 2: 100 + 70 + 70 ms, range
+  // line from its target, with Eq. 7's impedance and Eq. 8's push against
+  // the friction (WithdrawalForce; the contact not pushed along), holding the target's
+  // orientation exactly (the paper's "adjusting the attitude", Sec. 4, Fig. 9I (b)-(c)),
+  // until at a decision it is out of contact and within completion_angle_deg of that
+  // orientation, and then guides it in again. stall_time is a simple reaction,
+  // perceive-decide-act, 240 ms in the Model Human Processor (Card, Moran and Newell, The
+  // Psychology of Human-Computer Interaction, 1983, ch. 2: 100 + 70 + 70 ms, range
   // 105-470 ms); the response comes at the first decision at or after it.
   // withdraw_distance is a named assumption, calibratable: 5 mm, the depth of
   // a chamfer and a few millimetres of a mouth. stall_time 0, the default
@@ -186,6 +186,9 @@ Eigen::Vector3d WithdrawalForce(const GuidanceParams& params, double psi, double
                                 const Eigen::Vector3d& withdrawal_target,
                                 const Eigen::Vector3d& velocity, double friction,
                                 const Eigen::Vector3d& weight, double fade_length);
+
+// b of the force's impedance: 2 zeta sqrt(kappa Psi m), zeta = damping_ratio.
+double ForceDamping(const GuidanceParams& params, double psi, double mass);
 
 // How far Eq. 8 has taken over from Eq. 7, in [0, 1]: the C1 smoothstep
 // 3 s^2 - 2 s^3 of s = |normal force| / blend_force, clamped to [0, 1]. 0 out

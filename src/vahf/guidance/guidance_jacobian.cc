@@ -31,7 +31,7 @@ ImpedancePartials ImpedanceForceJacobian(const GuidanceParams& params, double ps
   const double kp = params.kappa * psi;
   ImpedancePartials out;
   out.position = -kp * I;
-  out.velocity = -2.0 * params.damping_ratio * std::sqrt(kp * mass) * I;
+  out.velocity = -ForceDamping(params, psi, mass) * I;
   const double fn = contact.normal_force.norm();
   const double w = ContactBlend(fn, blend_force);
   if (!(w > 0)) return out;  // fn = 0: w and its slope vanish
@@ -69,7 +69,7 @@ ImpedancePartials WithdrawalForceJacobian(const GuidanceParams& params, double p
   ImpedancePartials out;
   // dd = -dT; d(d / g) / dd = I / g - d d^T / g^3.
   out.position = -kp * I - push * (I / g - d * d.transpose() / (g * g * g));
-  out.velocity = -2.0 * params.damping_ratio * std::sqrt(kp * mass) * I;
+  out.velocity = -ForceDamping(params, psi, mass) * I;
   out.friction = FrictionPushSlope(friction, params.max_push) * d / g;
   return out;
 }

@@ -38,7 +38,8 @@ struct Decision {
   // the force and torque laws take Psi G(n) where Eq. 5 takes Psi.
   double practice_gain = 1.0;
   // The operator withdraws a stopped part (GuidanceParams::stall_time): the
-  // force is Eq. 7's towards estimated_target, the contact not felt.
+  // force is guidance::WithdrawalForce towards estimated_target, which feels
+  // the contact's friction but not its normal.
   bool withdraw = false;
   // Psi as the operator's force and torque laws take it.
   double Vigour() const { return psi * practice_gain; }
